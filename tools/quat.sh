@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# The README's two commands.
+#   bash tools/quat.sh bench   build the release preset and print the benchmark comparison table
+#   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does)
+# Both first make sure the Debian packages quat needs are installed: as root they are installed
+# with apt-get; otherwise the script stops and prints the apt-get line to run.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$repo"
+
+packages=(g++ cmake clang libglm-dev catch2 libbenchmark-dev libeigen3-dev doxygen
+          libclang-rt-14-dev valgrind clang-format clang-tidy python3 pkg-config)
+matrix=(ci-gcc-cxx17-asan ci-clang-cxx20-asan ci-gcc-cxx20-release ci-clang-cxx17-release)
+jobs="${QUAT_JOBS:-2}"
+
+usage() {
+    echo "usage: bash tools/quat.sh bench|test" >&2
+    exit 2
+}
+
+ensure_packages() {
+    local missing=() p
+    for p in "${packages[@]}"; do
+        if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+            missing+=("$p")
+        fi
+    done
+    [[ ${#missing[@]} -eq 0 ]] && return 0
+    local line="apt-get update && apt-get install -y ${missing[*]}"
+    if [[ $(id -u) -ne 0 ]]; then
+        echo "quat.sh: missing Debian packages: ${missing[*]}" >&2
+        echo "quat.sh: install them as root, then run this command again:" >&2
+        echo "    sudo sh -c '$line'" >&2
+        exit 1
+    fi
+    echo "quat.sh: installing missing Debian packages: ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update
+    apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+run_bench() {
+    cmake --preset release
+    if ! cmake --build --preset release --target quat_bench; then
+        echo "quat.sh: could not build the quat_bench target (is bench/ present?)" >&2
+        exit 1
+    fi
+    local exe
+    exe="$(find build/release -type f -name quat_bench -perm -u+x | head -n 1)"
+    [[ -n "$exe" ]] || { echo "quat.sh: quat_bench executable not found" >&2; exit 1; }
+    "$exe" --table
+}
+
+run_tests() {
+    local preset log status=0 summaries=() passed=0 total=0
+    local logdir="build/logs"
+    mkdir -p "$logdir"
+    for preset in "${matrix[@]}"; do
+        log="$logdir/$preset.log"
+        echo "==== $preset: configure, build, test"
+        if ! cmake --preset "$preset" >"$log" 2>&1 ||
+           ! cmake --build --preset "$preset" -j "$jobs" >>"$log" 2>&1; then
+            tail -n 60 "$log"
+            echo "quat.sh: $preset failed to configure or build (full log: $log)" >&2
+            summaries+=("$preset: configure or build failed (counted as 1 failed test)")
+            total=$((total + 1))
+            status=1
+            continue
+        fi
+        ctest --preset "$preset" 2>&1 | tee -a "$log" || status=1
+        local line
+        line="$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)"
+        summaries+=("$preset: ${line:-no CTest summary}")
+        if [[ $line =~ ([0-9]+)\ tests?\ failed\ out\ of\ ([0-9]+) ]]; then
+            total=$((total + BASH_REMATCH[2]))
+            passed=$((passed + BASH_REMATCH[2] - BASH_REMATCH[1]))
+        fi
+    done
+    echo "==== summary over ${#matrix[@]} configurations"
+    printf '%s\n' "${summaries[@]}"
+    # Close with CTest's summary line, summed over the matrix.
+    local pct=0
+    ((total > 0)) && pct=$((passed * 100 / total))
+    echo "$pct% tests passed, $((total - passed)) tests failed out of $total"
+    return "$status"
+}
+
+[[ $# -eq 1 ]] || usage
+case "$1" in
+    bench) ensure_packages; run_bench ;;
+    test) ensure_packages; run_tests ;;
+    *) usage ;;
+esac
