@@ -1,0 +1,16 @@
+// Rotations given as a unit axis and an angle.
+#pragma once
+
+#include "vec3.hpp"
+
+namespace quat {
+
+/// Rotation by `angle` radians, counter-clockwise about the unit vector `axis` seen from its tip.
+/// Conversions from it expect a unit axis; try_to_quaternion normalizes and checks untrusted input.
+template <class T>
+struct axis_angle {
+    vec3<T> axis;
+    T angle;
+};
+
+}  // namespace quat

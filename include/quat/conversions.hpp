@@ -1,0 +1,149 @@
+// Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
+// Euler-angle conversions live in euler.hpp.
+#pragma once
+
+#include <limits>
+#include <optional>
+
+#include "axis_angle.hpp"
+#include "detail/math.hpp"
+#include "quaternion.hpp"
+#include "rotation_matrix.hpp"
+#include "vec3.hpp"
+
+namespace quat {
+
+/// Rotation matrix of the unit quaternion q, so rotate(to_matrix(q), v) == rotate(q, v).
+/// Precondition: |q| = 1 (a non-unit q gives a matrix that is not a rotation).
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> to_matrix(const quaternion<T>& q) noexcept {
+    const T x2 = q.x + q.x, y2 = q.y + q.y, z2 = q.z + q.z;
+    const T xx = q.x * x2, yy = q.y * y2, zz = q.z * z2;
+    const T xy = q.x * y2, xz = q.x * z2, yz = q.y * z2;
+    const T wx = q.w * x2, wy = q.w * y2, wz = q.w * z2;
+    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
+             {xy + wz, T(1) - (xx + zz), yz - wx},
+             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+}
+
+/// Unit quaternion with w >= 0 of the rotation matrix m, exact for every rotation including 180°
+/// turns: Shepperd's method (J. Guidance and Control 1(3), 1978) takes the square root of the
+/// largest of 1 + trace and the diagonal, so it never divides by a small number.
+/// Precondition: m is a rotation; for other matrices use try_to_quaternion or nearest_rotation.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> to_quaternion(const rotation_matrix<T>& m) noexcept {
+    const T trace = m(0, 0) + m(1, 1) + m(2, 2);
+    quaternion<T> q{};
+    if (trace >= m(0, 0) && trace >= m(1, 1) && trace >= m(2, 2)) {
+        const T r = detail::sqrt(T(1) + trace), s = T(0.5) / r;
+        q = {r / T(2), (m(2, 1) - m(1, 2)) * s, (m(0, 2) - m(2, 0)) * s, (m(1, 0) - m(0, 1)) * s};
+    } else if (m(0, 0) >= m(1, 1) && m(0, 0) >= m(2, 2)) {
+        const T r = detail::sqrt(T(1) + m(0, 0) - m(1, 1) - m(2, 2)), s = T(0.5) / r;
+        q = {(m(2, 1) - m(1, 2)) * s, r / T(2), (m(0, 1) + m(1, 0)) * s, (m(0, 2) + m(2, 0)) * s};
+    } else if (m(1, 1) >= m(2, 2)) {
+        const T r = detail::sqrt(T(1) - m(0, 0) + m(1, 1) - m(2, 2)), s = T(0.5) / r;
+        q = {(m(0, 2) - m(2, 0)) * s, (m(0, 1) + m(1, 0)) * s, r / T(2), (m(1, 2) + m(2, 1)) * s};
+    } else {
+        const T r = detail::sqrt(T(1) - m(0, 0) - m(1, 1) + m(2, 2)), s = T(0.5) / r;
+        q = {(m(1, 0) - m(0, 1)) * s, (m(0, 2) + m(2, 0)) * s, (m(1, 2) + m(2, 1)) * s, r / T(2)};
+    }
+    return normalize(q.w < T(0) ? -q : q);
+}
+
+/// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for double.
+template <class T>
+[[nodiscard]] constexpr T default_orthogonality_tolerance() noexcept {
+    return detail::sqrt(std::numeric_limits<T>::epsilon());
+}
+
+/// to_quaternion(m), or std::nullopt when m has a non-finite element, det(m) <= 0 (a reflection),
+/// or orthogonality_error(m) > tolerance. Use nearest_rotation to repair a matrix first.
+template <class T>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(
+    const rotation_matrix<T>& m, T tolerance = default_orthogonality_tolerance<T>()) noexcept {
+    const T error = orthogonality_error(m);
+    if (!(error <= tolerance) || !(determinant(m) > T(0))) return std::nullopt;  // NaN fails too
+    return to_quaternion(m);
+}
+
+/// Quaternion (cos(angle/2), sin(angle/2) axis) — the half angle, which the thesis's (2.26) omits.
+/// Precondition: unit axis; try_to_quaternion(axis_angle) normalizes and checks untrusted input.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> to_quaternion(const axis_angle<T>& rotation) noexcept {
+    const T half = rotation.angle / T(2), s = detail::sin(half);
+    return {detail::cos(half), rotation.axis.x * s, rotation.axis.y * s, rotation.axis.z * s};
+}
+
+/// to_quaternion of the rotation about normalize(axis), or std::nullopt when the axis is zero or
+/// any input is non-finite.
+template <class T>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(const axis_angle<T>& rotation) noexcept {
+    const std::optional<vec3<T>> axis = try_normalize(rotation.axis);
+    if (!axis || !detail::is_finite(rotation.angle)) return std::nullopt;
+    return to_quaternion(axis_angle<T>{*axis, rotation.angle});
+}
+
+/// Axis and angle in [0, pi] of the rotation q (q and -q give the same result). The identity gives
+/// axis (1, 0, 0) and angle 0. Any non-zero scale of q gives the same result.
+template <class T>
+[[nodiscard]] constexpr axis_angle<T> to_axis_angle(const quaternion<T>& q) noexcept {
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s = norm(u);
+    if (!(s > T(0))) return {{T(1), T(0), T(0)}, T(0)};
+    return {u / s, T(2) * detail::atan2(s, p.w)};
+}
+
+/// Axis and angle in [0, pi] of the rotation matrix m, exact at 180° (through the quaternion).
+template <class T>
+[[nodiscard]] constexpr axis_angle<T> to_axis_angle(const rotation_matrix<T>& m) noexcept {
+    return to_axis_angle(to_quaternion(m));
+}
+
+/// Rodrigues' formula R = cos(angle) I + sin(angle) [axis]x + (1 - cos(angle)) axis axis^T.
+/// Precondition: unit axis.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> to_matrix(const axis_angle<T>& rotation) noexcept {
+    const T c = detail::cos(rotation.angle), s = detail::sin(rotation.angle), k = T(1) - c;
+    const vec3<T>& a = rotation.axis;
+    const T xk = a.x * k, yk = a.y * k, zk = a.z * k;
+    const T xs = a.x * s, ys = a.y * s, zs = a.z * s;
+    const T xy = a.x * yk, xz = a.x * zk, yz = a.y * zk;
+    return {{{c + a.x * xk, xy - zs, xz + ys}, {xy + zs, c + a.y * yk, yz - xs}, {xz - ys, yz + xs, c + a.z * zk}}};
+}
+
+/// Exponential map: the unit quaternion of the rotation by |v| radians about v / |v|.
+/// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> from_rotation_vector(const vec3<T>& rotation_vector) noexcept {
+    const T angle = norm(rotation_vector);
+    const T angle2 = angle * angle;
+    T w{}, scale{};  // scale = sin(angle / 2) / angle
+    if (angle2 * angle2 < std::numeric_limits<T>::epsilon()) {
+        // Taylor series; the first omitted terms are below epsilon^1.5.
+        w = T(1) - angle2 / T(8) + angle2 * angle2 / T(384);
+        scale = T(0.5) - angle2 / T(48) + angle2 * angle2 / T(3840);
+    } else {
+        w = detail::cos(angle / T(2));
+        scale = detail::sin(angle / T(2)) / angle;
+    }
+    return {w, rotation_vector.x * scale, rotation_vector.y * scale, rotation_vector.z * scale};
+}
+
+/// Logarithm map: the rotation vector angle * axis of q, with angle in [0, pi] (q and -q agree).
+/// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same result.
+template <class T>
+[[nodiscard]] constexpr vec3<T> to_rotation_vector(const quaternion<T>& q) noexcept {
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s = norm(u);
+    const T ratio = s / p.w;  // tan(angle / 2) when p.w > 0
+    if (p.w > T(0) && ratio * ratio * ratio * ratio < std::numeric_limits<T>::epsilon()) {
+        // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
+        const T r2 = ratio * ratio;
+        return u * ((T(2) / p.w) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
+    }
+    return u * (T(2) * detail::atan2(s, p.w) / s);
+}
+
+}  // namespace quat

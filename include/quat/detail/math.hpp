@@ -1,0 +1,196 @@
+// Scalar functions that work at compile time and at run time, and for user-defined scalars.
+//
+// For float, double and long double: <cmath> at run time, and during constant evaluation our own
+// long double implementations (correct to a few ulp of double for the argument ranges rotations
+// use: |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the
+// user's sqrt, sin, cos, atan2 and abs.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace quat::detail {
+
+/// True while the caller is being constant-evaluated. The builtin exists in GCC >= 9, Clang >= 9
+/// and MSVC >= 19.25 in every language mode, which lets C++17 code use <cmath> at run time.
+[[nodiscard]] constexpr bool constant_evaluated() noexcept { return __builtin_is_constant_evaluated(); }
+
+namespace compile_time {
+
+using real = long double;
+inline constexpr real pi = 3.14159265358979323846264338327950288L;
+// pi/2 split in a 53-bit head (so k * head is exact for |k| < 2^11) and the remainder.
+inline constexpr real half_pi_head = static_cast<real>(static_cast<double>(pi / 2));
+inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
+
+[[nodiscard]] constexpr bool is_nan(real x) noexcept { return x != x; }
+[[nodiscard]] constexpr bool sign_bit(real x) noexcept { return __builtin_copysignl(1.0L, x) < 0; }
+
+[[nodiscard]] constexpr real sqrt(real x) noexcept {
+    if (is_nan(x) || x < 0) return std::numeric_limits<real>::quiet_NaN();
+    if (x == 0 || x == std::numeric_limits<real>::infinity()) return x;
+    // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
+    real scale = 1;
+    constexpr real big = 18446744073709551616.0L;  // 2^64
+    while (x >= big) { x /= big; scale *= 4294967296.0L; }
+    while (x < 1 / big) { x *= big; scale /= 4294967296.0L; }
+    while (x >= 4) { x /= 4; scale *= 2; }
+    while (x < 1) { x *= 4; scale /= 2; }
+    real y = (x + 1) / 2;
+    for (int i = 0; i < 64; ++i) {
+        const real next = (y + x / y) / 2;
+        if (!(next < y)) break;
+        y = next;
+    }
+    return y * scale;
+}
+
+// Taylor series of sin and cos on |r| <= pi/4, summed until the terms no longer change the result.
+[[nodiscard]] constexpr real sin_kernel(real r) noexcept {
+    real term = r, sum = r;
+    for (int n = 1; n < 30; ++n) {
+        term *= -r * r / static_cast<real>((2 * n) * (2 * n + 1));
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    return sum;
+}
+[[nodiscard]] constexpr real cos_kernel(real r) noexcept {
+    real term = 1, sum = 1;
+    for (int n = 1; n < 30; ++n) {
+        term *= -r * r / static_cast<real>((2 * n - 1) * (2 * n));
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    return sum;
+}
+
+struct sine_cosine {
+    real sin, cos;
+};
+[[nodiscard]] constexpr sine_cosine sin_cos(real x) noexcept {
+    if (is_nan(x) || x - x != 0) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    const real quotient = x / (pi / 2);
+    if (quotient > 9e15L || quotient < -9e15L) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    const long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
+    const real r = (x - static_cast<real>(k) * half_pi_head) - static_cast<real>(k) * half_pi_tail;
+    const real s = sin_kernel(r), c = cos_kernel(r);
+    switch (((k % 4) + 4) % 4) {
+        case 0: return {s, c};
+        case 1: return {c, -s};
+        case 2: return {-s, -c};
+        default: return {-c, s};
+    }
+}
+
+// atan on [0, 1]: shift by pi/4 above tan(pi/8), then the alternating series on |z| <= 0.4143.
+[[nodiscard]] constexpr real atan_unit(real z) noexcept {
+    real offset = 0;
+    if (z > 0.41421356237309504880L) {
+        offset = pi / 4;
+        z = (z - 1) / (z + 1);
+    }
+    real power = z, sum = z;
+    for (int n = 1; n < 80; ++n) {
+        power *= -z * z;
+        const real term = power / static_cast<real>(2 * n + 1);
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    return offset + sum;
+}
+
+[[nodiscard]] constexpr real atan2(real y, real x) noexcept {
+    if (is_nan(x) || is_nan(y)) return std::numeric_limits<real>::quiet_NaN();
+    constexpr real inf = std::numeric_limits<real>::infinity();
+    const real ax = x < 0 ? -x : x, ay = y < 0 ? -y : y;
+    real angle = 0;
+    if (ax == inf && ay == inf) angle = pi / 4;
+    else if (ay == 0 || ax == inf) angle = 0;
+    else if (ax == 0 || ay == inf) angle = pi / 2;
+    else if (ay <= ax) angle = atan_unit(ay / ax);
+    else angle = pi / 2 - atan_unit(ax / ay);
+    if (sign_bit(x)) angle = pi - angle;
+    return sign_bit(y) ? -angle : angle;
+}
+
+}  // namespace compile_time
+
+/// sqrt(x); NaN for negative x.
+template <class T>
+[[nodiscard]] constexpr T sqrt(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) return static_cast<T>(compile_time::sqrt(x));
+        return std::sqrt(x);
+    } else {
+        using std::sqrt;
+        return sqrt(x);
+    }
+}
+
+/// sin(x) in radians.
+template <class T>
+[[nodiscard]] constexpr T sin(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) return static_cast<T>(compile_time::sin_cos(x).sin);
+        return std::sin(x);
+    } else {
+        using std::sin;
+        return sin(x);
+    }
+}
+
+/// cos(x) in radians.
+template <class T>
+[[nodiscard]] constexpr T cos(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) return static_cast<T>(compile_time::sin_cos(x).cos);
+        return std::cos(x);
+    } else {
+        using std::cos;
+        return cos(x);
+    }
+}
+
+/// atan2(y, x) in [-pi, pi], with IEEE signed-zero and infinity rules.
+template <class T>
+[[nodiscard]] constexpr T atan2(T y, T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) return static_cast<T>(compile_time::atan2(y, x));
+        return std::atan2(y, x);
+    } else {
+        using std::atan2;
+        return atan2(y, x);
+    }
+}
+
+/// |x|.
+template <class T>
+[[nodiscard]] constexpr T abs(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) return x < 0 ? -x : (x == 0 ? T(0) : x);
+        return std::abs(x);
+    } else {
+        using std::abs;
+        return abs(x);
+    }
+}
+
+/// True unless x is NaN or infinite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite(T x) noexcept {
+    return x == x && abs(x) <= std::numeric_limits<T>::max();
+}
+
+/// pi in the scalar type T.
+template <class T>
+inline constexpr T pi = T(3.14159265358979323846264338327950288L);
+
+/// The larger of two values (NaN-propagation is not needed where it is used).
+template <class T>
+[[nodiscard]] constexpr T max(T a, T b) noexcept {
+    return a < b ? b : a;
+}
+
+}  // namespace quat::detail

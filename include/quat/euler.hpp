@@ -1,0 +1,201 @@
+// Euler angles: the 12 axis sequences, intrinsic or extrinsic, and conversions to and from them.
+#pragma once
+
+#include <cstddef>
+
+#include "axis_angle.hpp"
+#include "conversions.hpp"
+#include "detail/math.hpp"
+#include "quaternion.hpp"
+#include "rotation_matrix.hpp"
+
+namespace quat {
+
+/// Axis sequences: six Tait–Bryan (three different axes) and six proper Euler (first == third).
+enum class sequence { xyz, xzy, yxz, yzx, zxy, zyx, xyx, xzx, yxy, yzy, zxz, zyz };
+
+/// intrinsic: R = R_S0(a0) R_S1(a1) R_S2(a2), turns about the moving (body) axes in the order S0, S1, S2.
+/// extrinsic: R = R_S2(a2) R_S1(a1) R_S0(a0), turns about the fixed axes in the order S0, S1, S2.
+enum class frame { intrinsic, extrinsic };
+
+/// Three angles in radians for the axis sequence S in frame F. The default, euler<T>{yaw, pitch,
+/// roll}, is the thesis's R = Rz(yaw) Ry(pitch) Rx(roll). Conventions are part of the type, so
+/// angles of one convention never silently pass for another.
+template <class T, sequence S = sequence::zyx, frame F = frame::intrinsic>
+struct euler {
+    T angles[3];
+
+    /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
+    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return angles[i]; }
+    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return angles[i]; }
+};
+
+/// Result of extract_euler: the angles, and whether the rotation is at gimbal lock, where only the
+/// sum or difference of the first and third angles is determined and the third angle is set to 0.
+template <class T, sequence S, frame F>
+struct euler_extraction {
+    euler<T, S, F> angles;
+    bool gimbal_lock;
+};
+
+namespace detail {
+
+struct axis_triple {
+    int first, second, third;  // 0 = x, 1 = y, 2 = z
+};
+
+[[nodiscard]] constexpr axis_triple axes_of(sequence s) noexcept {
+    constexpr axis_triple table[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
+                                     {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
+    return table[static_cast<int>(s)];
+}
+
+// The order in which the three elementary rotations are multiplied, left to right:
+// intrinsic R_S0 R_S1 R_S2 as written, extrinsic reversed.
+template <sequence S, frame F>
+[[nodiscard]] constexpr axis_triple product_order() noexcept {
+    constexpr axis_triple a = axes_of(S);
+    if constexpr (F == frame::intrinsic) return a;
+    else return {a.third, a.second, a.first};
+}
+
+template <class T>
+[[nodiscard]] constexpr T wrap_angle(T angle) noexcept {  // into [-pi, pi]
+    if (angle > pi<T>) return angle - T(2) * pi<T>;
+    if (angle < -pi<T>) return angle + T(2) * pi<T>;
+    return angle;
+}
+
+}  // namespace detail
+
+/// Unit quaternion of the Euler angles e (the product of three axis rotations, in closed form).
+template <class T, sequence S, frame F>
+[[nodiscard]] constexpr quaternion<T> to_quaternion(const euler<T, S, F>& e) noexcept {
+    constexpr detail::axis_triple order = detail::product_order<S, F>();
+    const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1], last = F == frame::intrinsic ? e[2] : e[0];
+    const T c0 = detail::cos(first / T(2)), s0 = detail::sin(first / T(2));
+    const T c1 = detail::cos(middle / T(2)), s1 = detail::sin(middle / T(2));
+    const T c2 = detail::cos(last / T(2)), s2 = detail::sin(last / T(2));
+    // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b = ±e_rest.
+    const int a = order.first, b = order.second, rest = 3 - a - b;
+    const T parity = (b - a + 3) % 3 == 1 ? T(1) : T(-1);
+    T v[3]{};
+    v[a] = s0 * c1;
+    v[b] = c0 * s1;
+    v[rest] = parity * s0 * s1;
+    const T w = c0 * c1;
+    // (w, v) q_m(last) = (w c2 - s2 v_m, w s2 e_m + c2 v + s2 v x e_m); (v x e_m) = (0, v_m+2, -v_m+1)
+    // in the cyclic coordinates starting at m.
+    const int m = order.third, m1 = (m + 1) % 3, m2 = (m + 2) % 3;
+    T r[3]{};
+    r[m] = w * s2 + c2 * v[m];
+    r[m1] = c2 * v[m1] + s2 * v[m2];
+    r[m2] = c2 * v[m2] - s2 * v[m1];
+    return {w * c2 - s2 * v[m], r[0], r[1], r[2]};
+}
+
+/// Rotation matrix of the Euler angles e, multiplied out as sparse products of axis rotations.
+template <class T, sequence S, frame F>
+[[nodiscard]] constexpr rotation_matrix<T> to_matrix(const euler<T, S, F>& e) noexcept {
+    constexpr detail::axis_triple order = detail::product_order<S, F>();
+    const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1], F == frame::intrinsic ? e[2] : e[0]};
+    const int axis[3] = {order.first, order.second, order.third};
+    rotation_matrix<T> r = rotation_matrix<T>::identity();
+    for (int n = 0; n < 3; ++n) {
+        // R R_m(t): column m stays, columns m+1 and m+2 turn by t within their plane.
+        const int m1 = (axis[n] + 1) % 3, m2 = (axis[n] + 2) % 3;
+        const T c = detail::cos(angle[n]), s = detail::sin(angle[n]);
+        for (int i = 0; i < 3; ++i) {
+            const T p = r(i, m1), q = r(i, m2);
+            r(i, m1) = c * p + s * q;
+            r(i, m2) = c * q - s * p;
+        }
+    }
+    return r;
+}
+
+/// Euler angles of the unit quaternion q in the convention S, F, with the flag for gimbal lock.
+/// Method of Bernardes & Viollet (PLoS ONE 17(11), 2022): one atan2-based formula for all twelve
+/// sequences. First and third angles in [-pi, pi]; middle in [-pi/2, pi/2] (Tait–Bryan) or [0, pi]
+/// (proper). At gimbal lock (middle angle within about 2 epsilon of its limit, where q no longer
+/// determines the split) the third angle e[2] is 0. Any non-zero scale of q gives the same angles.
+template <sequence S, frame F = frame::intrinsic, class T>
+[[nodiscard]] constexpr euler_extraction<T, S, F> extract_euler(const quaternion<T>& q) noexcept {
+    // Solve the intrinsic product order i, j, k: R = R_i(alpha) R_j(beta) R_k(gamma). For the
+    // extrinsic frame that order is the sequence reversed and the angles come out reversed.
+    constexpr detail::axis_triple order = detail::product_order<S, F>();
+    const int i = order.first, j = order.second, k = 3 - i - j;
+    const bool proper = order.first == order.third;
+    const T parity = (j - i + 3) % 3 == 1 ? T(1) : T(-1);
+    const T v[3] = {q.x, q.y, q.z};
+    // Proper i-j-i: (w, v_i, v_j, parity v_k) = (cos(b/2) cos(s), cos(b/2) sin(s), sin(b/2) cos(d),
+    // sin(b/2) sin(d)), s = (alpha + gamma)/2, d = (alpha - gamma)/2. Tait–Bryan i-j-k reduces to
+    // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta + pi/2.
+    const T a = proper ? q.w : q.w - v[j];
+    const T b = proper ? v[i] : v[i] - parity * v[k];
+    const T c = proper ? v[j] : v[j] + q.w;
+    const T d = proper ? parity * v[k] : parity * v[k] + v[i];
+    const T cos_part = detail::sqrt(a * a + b * b), sin_part = detail::sqrt(c * c + d * d);
+    T beta = T(2) * detail::atan2(sin_part, cos_part);
+    const T half_sum = detail::atan2(b, a), half_difference = detail::atan2(d, c);
+    T alpha{}, gamma{};
+    const T epsilon = std::numeric_limits<T>::epsilon();
+    const bool at_zero = sin_part <= epsilon * cos_part, at_pi = cos_part <= epsilon * sin_part;
+    // At a lock only alpha + gamma (at zero) or alpha - gamma (at pi) is known: the angle that
+    // ends up in e[2] is set to 0 (gamma for intrinsic, alpha for extrinsic, which is reversed).
+    const bool zero_gamma = F == frame::intrinsic;
+    if (at_zero) {
+        alpha = zero_gamma ? T(2) * half_sum : T(0);
+        gamma = zero_gamma ? T(0) : T(2) * half_sum;
+    } else if (at_pi) {
+        alpha = zero_gamma ? T(2) * half_difference : T(0);
+        gamma = zero_gamma ? T(0) : T(-2) * half_difference;
+    } else {
+        alpha = half_sum + half_difference;
+        gamma = half_sum - half_difference;
+    }
+    if (!proper) {
+        beta -= detail::pi<T> / T(2);
+        gamma = -parity * gamma;
+    }
+    alpha = detail::wrap_angle(alpha);
+    gamma = detail::wrap_angle(gamma);
+    euler<T, S, F> angles{};
+    angles[0] = F == frame::intrinsic ? alpha : gamma;
+    angles[1] = beta;
+    angles[2] = F == frame::intrinsic ? gamma : alpha;
+    return {angles, at_zero || at_pi};
+}
+
+/// Euler angles of the unit quaternion q in the convention S, F (see extract_euler for ranges and
+/// gimbal lock).
+template <sequence S, frame F = frame::intrinsic, class T>
+[[nodiscard]] constexpr euler<T, S, F> to_euler(const quaternion<T>& q) noexcept {
+    return extract_euler<S, F>(q).angles;
+}
+
+/// Euler angles of the rotation matrix m (through its quaternion; see extract_euler).
+template <sequence S, frame F = frame::intrinsic, class T>
+[[nodiscard]] constexpr euler<T, S, F> to_euler(const rotation_matrix<T>& m) noexcept {
+    return to_euler<S, F>(to_quaternion(m));
+}
+
+/// Euler angles of an axis-angle rotation (unit axis).
+template <sequence S, frame F = frame::intrinsic, class T>
+[[nodiscard]] constexpr euler<T, S, F> to_euler(const axis_angle<T>& rotation) noexcept {
+    return to_euler<S, F>(to_quaternion(rotation));
+}
+
+/// The same rotation's angles in another convention.
+template <sequence S, frame F = frame::intrinsic, class T, sequence S0, frame F0>
+[[nodiscard]] constexpr euler<T, S, F> to_euler(const euler<T, S0, F0>& e) noexcept {
+    return to_euler<S, F>(to_quaternion(e));
+}
+
+/// Axis and angle in [0, pi] of the Euler angles e.
+template <class T, sequence S, frame F>
+[[nodiscard]] constexpr axis_angle<T> to_axis_angle(const euler<T, S, F>& e) noexcept {
+    return to_axis_angle(to_quaternion(e));
+}
+
+}  // namespace quat

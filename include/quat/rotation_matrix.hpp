@@ -1,0 +1,102 @@
+// 3x3 rotation matrices acting on column vectors.
+#pragma once
+
+#include "detail/math.hpp"
+#include "vec3.hpp"
+
+namespace quat {
+
+/// 3x3 matrix stored row-major, acting on column vectors: v' = M v. Used for rotations (orthogonal,
+/// determinant +1); nearest_rotation and try_to_quaternion also accept any 3x3 matrix in it.
+template <class T>
+struct rotation_matrix {
+    T elements[3][3];
+
+    /// Element at (row, col), both in [0, 3).
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept { return elements[row][col]; }
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept { return elements[row][col]; }
+
+    /// The rotation by zero angle.
+    [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
+        return {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
+    }
+    /// The matrix whose rows are r0, r1, r2.
+    [[nodiscard]] static constexpr rotation_matrix from_rows(const vec3<T>& r0, const vec3<T>& r1,
+                                                             const vec3<T>& r2) noexcept {
+        return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
+    }
+    /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
+    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0, const vec3<T>& c1,
+                                                                const vec3<T>& c2) noexcept {
+        return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
+    }
+};
+
+/// Row i (0, 1 or 2) of m.
+template <class T>
+[[nodiscard]] constexpr vec3<T> row(const rotation_matrix<T>& m, int i) noexcept {
+    return {m(i, 0), m(i, 1), m(i, 2)};
+}
+
+/// Column j (0, 1 or 2) of m: for a rotation, the image of axis j.
+template <class T>
+[[nodiscard]] constexpr vec3<T> column(const rotation_matrix<T>& m, int j) noexcept {
+    return {m(0, j), m(1, j), m(2, j)};
+}
+
+/// Matrix product: as rotations, a * b applies b first, then a.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+    rotation_matrix<T> product{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
+    return product;
+}
+
+/// Exact element-wise equality.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// M v: rotates v by the rotation matrix m.
+template <class T>
+[[nodiscard]] constexpr vec3<T> rotate(const rotation_matrix<T>& m, const vec3<T>& v) noexcept {
+    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
+            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
+            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+
+/// Transpose; for a rotation, its inverse.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> transpose(const rotation_matrix<T>& m) noexcept {
+    return rotation_matrix<T>::from_columns(row(m, 0), row(m, 1), row(m, 2));
+}
+
+/// Determinant: +1 for a rotation, -1 for a reflection.
+template <class T>
+[[nodiscard]] constexpr T determinant(const rotation_matrix<T>& m) noexcept {
+    return dot(row(m, 0), cross(row(m, 1), row(m, 2)));
+}
+
+/// Largest |(M^T M - I)(i, j)|: zero for an exact rotation or reflection, NaN propagates.
+template <class T>
+[[nodiscard]] constexpr T orthogonality_error(const rotation_matrix<T>& m) noexcept {
+    T worst = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+            const T deviation = detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
+            if (deviation != deviation) return deviation;  // NaN in, NaN out
+            if (worst < deviation) worst = deviation;
+        }
+    return worst;
+}
+
+}  // namespace quat

@@ -1,0 +1,95 @@
+// 3D vectors: the points and axes that rotations act on.
+#pragma once
+
+#include <optional>
+
+#include "detail/math.hpp"
+
+namespace quat {
+
+/// A 3D vector or point with public components.
+template <class T>
+struct vec3 {
+    T x, y, z;
+};
+
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& v) noexcept {
+    return {-v.x, -v.y, -v.z};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator+(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const vec3<T>& v, T s) noexcept {
+    return {v.x * s, v.y * s, v.z * s};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(T s, const vec3<T>& v) noexcept {
+    return v * s;
+}
+/// Component-wise division by s; s == 0 gives IEEE infinities or NaN.
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator/(const vec3<T>& v, T s) noexcept {
+    return {v.x / s, v.y / s, v.z / s};
+}
+/// Exact component-wise equality.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// Dot product.
+template <class T>
+[[nodiscard]] constexpr T dot(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// Cross product, right-handed: cross({1,0,0}, {0,1,0}) == {0,0,1}.
+template <class T>
+[[nodiscard]] constexpr vec3<T> cross(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// |v|^2; overflows for components beyond sqrt(max).
+template <class T>
+[[nodiscard]] constexpr T squared_norm(const vec3<T>& v) noexcept {
+    return dot(v, v);
+}
+
+/// Euclidean length |v|, without overflow or underflow for huge or tiny components.
+template <class T>
+[[nodiscard]] constexpr T norm(const vec3<T>& v) noexcept {
+    const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
+    const T s = squared_norm(v);
+    // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return detail::sqrt(s);
+    if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
+    return scale * detail::sqrt(squared_norm(v / scale));
+}
+
+/// v / |v|. Precondition: v is non-zero and finite (else the result holds NaN);
+/// try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr vec3<T> normalize(const vec3<T>& v) noexcept {
+    return v / norm(v);
+}
+
+/// v / |v|, or std::nullopt when v is zero or has a non-finite component.
+template <class T>
+[[nodiscard]] constexpr std::optional<vec3<T>> try_normalize(const vec3<T>& v) noexcept {
+    const T n = norm(v);
+    if (!(n > T(0)) || !detail::is_finite(n)) return std::nullopt;
+    return v / n;
+}
+
+}  // namespace quat
