@@ -1,0 +1,75 @@
+// Seeded random rotations and vectors for property tests: every run sees the same inputs.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include <quat/quat.hpp>
+
+namespace quat::test {
+
+/// The seed every test starts from, so failures reproduce.
+inline constexpr std::uint64_t seed = 20190501;
+
+/// Random rotations, uniform on the sphere of unit quaternions (normalized 4D Gaussians).
+class random_rotations {
+public:
+    explicit random_rotations(std::uint64_t s = seed) : engine_(s) {}
+
+    template <class T>
+    quaternion<T> unit_quaternion() {
+        for (;;) {
+            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_), z = gauss_(engine_);
+            const double n = std::sqrt(w * w + x * x + y * y + z * z);
+            if (n > 1e-3) return {T(w / n), T(x / n), T(y / n), T(z / n)};
+        }
+    }
+
+    template <class T>
+    vec3<T> unit_vector() {
+        for (;;) {
+            const double x = gauss_(engine_), y = gauss_(engine_), z = gauss_(engine_);
+            const double n = std::sqrt(x * x + y * y + z * z);
+            if (n > 1e-3) return {T(x / n), T(y / n), T(z / n)};
+        }
+    }
+
+    template <class T>
+    vec3<T> vector(double scale = 1.0) {
+        return {T(scale * gauss_(engine_)), T(scale * gauss_(engine_)), T(scale * gauss_(engine_))};
+    }
+
+    /// Uniform in [low, high).
+    template <class T>
+    T uniform(double low, double high) {
+        return T(std::uniform_real_distribution<double>(low, high)(engine_));
+    }
+
+private:
+    std::mt19937_64 engine_;
+    std::normal_distribution<double> gauss_;
+};
+
+/// Largest absolute element difference of two 3x3 matrices.
+template <class T>
+T max_difference(const rotation_matrix<T>& a, const rotation_matrix<T>& b) {
+    T worst = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(a(i, j) - b(i, j)));
+    return worst;
+}
+
+/// Largest absolute component difference of two vectors.
+template <class T>
+T max_difference(const vec3<T>& a, const vec3<T>& b) {
+    return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+}
+
+/// Largest absolute component difference of two quaternions (sign-sensitive).
+template <class T>
+T max_difference(const quaternion<T>& a, const quaternion<T>& b) {
+    return std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+}
+
+}  // namespace quat::test
