@@ -1,0 +1,216 @@
+// quat_accuracy: max and RMS error of quat, GLM and Eigen against a high-precision reference, in
+// float and double, on random inputs (fixed seed) and on edge-case families; prints a markdown
+// table. Exit status 1 when any of quat's targets (issue 7) is missed.
+//   quat_accuracy [--quick] [--worst] [--conventions]
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "measure_euler.hpp"
+
+namespace accuracy {
+namespace {
+
+struct options {
+    bool quick = false;        // few samples: the CTest run
+    bool worst = false;        // print the input behind each row's maximum
+    bool conventions = false;  // print the Euler maximum of each convention
+};
+
+// quat's targets from issue 7, in eps (double; float in the same ratio to its epsilon).
+constexpr double target_matrix_round_trip = 3;
+constexpr double target_euler = 4;
+constexpr double target_slerp_norm = 2;
+constexpr double target_slerp_angle = 4;
+constexpr double target_normalize = 1;
+constexpr double target_exp_log = 2;
+constexpr double target_rotate = 4;
+
+template <class T>
+const char* type_name() {
+    return sizeof(T) == sizeof(float) ? "float" : "double";
+}
+
+template <class T>
+struct runner {
+    options opt;
+    std::vector<row>& rows;
+    std::uint64_t seed;
+
+    int n(int full, int quick) const { return opt.quick ? quick : full; }
+    rng fresh(std::uint64_t salt) const { return rng{seed * 7919 + salt}; }
+
+    row make(const std::string& op, const std::string& inputs, const std::string& unit, double target) const {
+        return row{op, inputs, type_name<T>(), unit, target, std::nullopt, std::nullopt, std::nullopt};
+    }
+
+    // Runs measure(lib) for the three libraries; each measure returns optional<error_stats> or error_stats.
+    template <class Measure>
+    void add(row r, Measure measure) {
+        r.quat = measure(quat_library{});
+        r.glm = measure(glm_library{});
+        r.eigen = measure(eigen_library{});
+        rows.push_back(std::move(r));
+    }
+
+    void matrix_round_trip() {
+        rng g = fresh(1);
+        const auto random = random_rotations<T>(g, n(100000, 3000));
+        add(make("q → matrix → q", "random rotations", "eps (max component)", target_matrix_round_trip),
+            [&](auto lib) { return measure_matrix_round_trip<decltype(lib)>(random); });
+        const auto edge = near_identity_and_half_turns<T>(g, n(500, 30));
+        add(make("q → matrix → q", "angle 10^-k, π − 10^-k, 0, π (k = 0..15)", "eps (max component)",
+                 target_matrix_round_trip),
+            [&](auto lib) { return measure_matrix_round_trip<decltype(lib)>(edge); });
+    }
+
+    void euler() {
+        const char* unit = "eps (rotation angle, rad)";
+        for (bool gimbal : {false, true}) {
+            const char* inputs = gimbal ? "middle angle at lock and lock ± 10^-k (k = 1..15)" : "random angles";
+            const int count = gimbal ? n(40, 3) : n(10000, 300);
+            rng g = fresh(gimbal ? 3 : 2);
+            add(make("Euler → q → Euler, zyx intrinsic (GLM's convention)", inputs, unit, target_euler),
+                [&](auto lib) { return measure_euler_family<decltype(lib), T>(g, count, gimbal, true, nullptr); });
+            std::vector<std::pair<std::string, double>> per_convention;
+            row r = make("Euler → q → Euler, all 24 conventions", inputs, unit, target_euler);
+            r.quat = measure_euler_family<quat_library, T>(g, count, gimbal, false, &per_convention);
+            r.eigen = measure_euler_family<eigen_library, T>(g, count, gimbal, false, nullptr);
+            rows.push_back(r);
+            if (opt.conventions)
+                for (const auto& [name, max] : per_convention)
+                    std::fprintf(stderr, "  quat %s %s %s: max %s eps\n", type_name<T>(), inputs, name.c_str(),
+                                 format_number(max).c_str());
+        }
+    }
+
+    void slerp() {
+        struct family {
+            const char* name;
+            std::vector<std::pair<q4<T>, q4<T>>> pairs;
+            std::vector<T> ts;
+        };
+        rng g = fresh(4);
+        std::vector<family> families;
+        const int count = n(50000, 2000);
+        auto random_pairs = [&](int k) {
+            std::vector<std::pair<q4<T>, q4<T>>> p;
+            for (int i = 0; i < k; ++i) p.emplace_back(g.template unit_quaternion<T>(), g.template unit_quaternion<T>());
+            return p;
+        };
+        auto ts = [&](std::size_t k, double lo, double hi) {
+            std::vector<T> t;
+            for (std::size_t i = 0; i < k; ++i) t.push_back(T(g.uniform(lo, hi)));
+            return t;
+        };
+        families.push_back({"random pairs, t ∈ [0, 1]", random_pairs(count), {}});
+        families.push_back({"a ≈ b (angle 10^-k, k = 0..15, and 0), t ∈ [0, 1]", nearby_pairs<T>(g, n(3000, 100), false), {}});
+        families.push_back({"a ≈ −b (angle π − 10^-k), t ∈ [0, 1]", nearby_pairs<T>(g, n(3000, 100), true), {}});
+        families.push_back({"random pairs, t ∈ [−1, 2] (extrapolation)", random_pairs(count), {}});
+        for (std::size_t f = 0; f < families.size(); ++f)
+            families[f].ts = f == 3 ? ts(families[f].pairs.size(), -1, 2) : ts(families[f].pairs.size(), 0, 1);
+        for (const family& fam : families) {
+            row norm_row = make("slerp: \\|r\\| − 1", fam.name, "eps", target_slerp_norm);
+            row angle_row = make("slerp: angle to reference", fam.name, "eps (rotation angle, rad)", target_slerp_angle);
+            auto run = [&](auto lib, std::optional<error_stats>& norm_cell, std::optional<error_stats>& angle_cell) {
+                error_stats ne, ae;
+                measure_slerp<decltype(lib)>(fam.pairs, fam.ts, ne, ae);
+                norm_cell = ne;
+                angle_cell = ae;
+            };
+            run(quat_library{}, norm_row.quat, angle_row.quat);
+            run(glm_library{}, norm_row.glm, angle_row.glm);
+            run(eigen_library{}, norm_row.eigen, angle_row.eigen);
+            rows.push_back(norm_row);
+            rows.push_back(angle_row);
+        }
+    }
+
+    void normalize() {
+        rng g = fresh(5);
+        const int e = sizeof(T) == sizeof(float) ? 37 : 300;
+        const std::string range = "1e-" + std::to_string(e) + " … 1e" + std::to_string(e);
+        const auto same = scaled_quaternions<T>(g, n(100000, 3000), -e, e, true);
+        add(make("normalize", "|q| from " + range, "eps (max component)", target_normalize),
+            [&](auto lib) { return measure_normalize<decltype(lib)>(same); });
+        const auto mixed = scaled_quaternions<T>(g, n(100000, 3000), -e, e, false);
+        add(make("normalize", "each component from " + range, "eps (max component)", target_normalize),
+            [&](auto lib) { return measure_normalize<decltype(lib)>(mixed); });
+    }
+
+    void exp_log() {
+        rng g = fresh(6);
+        const auto vs = rotation_vectors<T>(g, n(100000, 3000));
+        add(make("exp: rotation vector → q", "angle 1e-10 … π", "eps (w abs., vector rel.)", target_exp_log),
+            [&](auto lib) { return measure_exp<decltype(lib)>(vs); });
+        add(make("log: q → rotation vector", "angle 1e-10 … π", "eps (relative)", target_exp_log),
+            [&](auto lib) { return measure_log<decltype(lib)>(vs); });
+    }
+
+    void rotate() {
+        add(make("rotate: \\|v\\| preserved", "random unit q (rounded once), \\|v\\| 1e-3 … 1e3", "eps (relative)", target_rotate),
+            [&](auto lib) {
+                rng g = fresh(7);
+                return measure_rotate<decltype(lib), T>(g, n(100000, 3000));
+            });
+    }
+};
+
+int run(const options& opt) {
+    std::vector<row> rows;
+    const std::uint64_t seed = 20240607;
+    runner<float> f{opt, rows, seed};
+    runner<double> d{opt, rows, seed};
+    f.matrix_round_trip();
+    d.matrix_round_trip();
+    f.euler();
+    d.euler();
+    f.slerp();
+    d.slerp();
+    f.normalize();
+    d.normalize();
+    f.exp_log();
+    d.exp_log();
+    f.rotate();
+    d.rotate();
+
+    print_table(rows);
+    std::printf("\nCells: max / RMS error in the unit of the row (eps = machine epsilon of the type). "
+                "Reference: %s. Seed %llu, %s sample counts.\n",
+                reference_name(), static_cast<unsigned long long>(seed), opt.quick ? "quick" : "full");
+    int missed = 0;
+    for (const row& r : rows) {
+        if (r.missed()) {
+            ++missed;
+            std::fprintf(stderr, "MISSED: %s [%s, %s]: max %s > %s; worst input %s\n", r.operation.c_str(),
+                         r.inputs.c_str(), r.scalar.c_str(), format_number(r.quat->max).c_str(),
+                         format_number(r.target).c_str(), r.quat->worst_case.c_str());
+        } else if (opt.worst) {
+            std::fprintf(stderr, "worst: %s [%s, %s]: %s at %s\n", r.operation.c_str(), r.inputs.c_str(),
+                         r.scalar.c_str(), format_number(r.quat->max).c_str(), r.quat->worst_case.c_str());
+        }
+    }
+    if (missed > 0) std::fprintf(stderr, "%d of quat's accuracy targets missed\n", missed);
+    return missed > 0 ? 1 : 0;
+}
+
+}  // namespace
+}  // namespace accuracy
+
+int main(int argc, char** argv) {
+    accuracy::options opt;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) {
+            opt.quick = true;
+        } else if (std::strcmp(argv[i], "--worst") == 0) {
+            opt.worst = true;
+        } else if (std::strcmp(argv[i], "--conventions") == 0) {
+            opt.conventions = true;
+        } else {
+            std::fprintf(stderr, "usage: %s [--quick] [--worst] [--conventions]\n", argv[0]);
+            return 2;
+        }
+    }
+    return accuracy::run(opt);
+}
