@@ -1,0 +1,96 @@
+# CI steps as CTest tests, so `ctest` is the whole of CI. Included from tests/CMakeLists.txt.
+# The cheap checks are on by default; the slow or once-per-matrix ones are switched on by the CI
+# presets in CMakePresets.json (each preset runs a different subset, see README "CI").
+option(QUAT_TEST_CONSUMERS "Test the installed package, add_subdirectory and the single header" ON)
+option(QUAT_TEST_SINGLE_INCLUDE "Compile the test suite against single_include/ only" OFF)
+option(QUAT_TEST_FORMAT "Check formatting with clang-format" OFF)
+option(QUAT_TEST_TIDY "Run clang-tidy over representative translation units" OFF)
+option(QUAT_TEST_VALGRIND "Run quat_tests under valgrind memcheck" OFF)
+
+find_package(Python3 COMPONENTS Interpreter)
+
+# The committed single header must equal a fresh generation from include/quat.
+if(Python3_Interpreter_FOUND)
+    add_test(NAME single_header_sync
+             COMMAND "${Python3_EXECUTABLE}" "${PROJECT_SOURCE_DIR}/tools/amalgamate.py" --check)
+    set_tests_properties(single_header_sync PROPERTIES LABELS "ci")
+endif()
+
+# The consumer projects are built with this configuration's compiler, standard and flags, so the
+# sanitizer and -Werror settings of the preset apply to them too.
+set(_quat_consumer_options
+    "-DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}"
+    "-DCMAKE_CXX_FLAGS=${CMAKE_CXX_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${CMAKE_EXE_LINKER_FLAGS}"
+    "-DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}")
+if(CMAKE_CXX_STANDARD)
+    list(APPEND _quat_consumer_options "-DCMAKE_CXX_STANDARD=${CMAKE_CXX_STANDARD}")
+endif()
+
+function(quat_add_consumer_test name source_dir)
+    add_test(NAME ${name}
+             COMMAND "${CMAKE_CTEST_COMMAND}"
+                     --build-and-test "${source_dir}" "${CMAKE_CURRENT_BINARY_DIR}/${name}"
+                     --build-generator "${CMAKE_GENERATOR}"
+                     --build-makeprogram "${CMAKE_MAKE_PROGRAM}"
+                     --build-options ${_quat_consumer_options} ${ARGN}
+                     --test-command "${CMAKE_CTEST_COMMAND}" --output-on-failure)
+    set_tests_properties(${name} PROPERTIES LABELS "ci;consumer")
+endfunction()
+
+if(QUAT_TEST_CONSUMERS)
+    set(_quat_prefix "${CMAKE_CURRENT_BINARY_DIR}/package-prefix")
+    add_test(NAME package_install
+             COMMAND "${CMAKE_COMMAND}" "-DBUILD_DIR=${PROJECT_BINARY_DIR}" "-DPREFIX=${_quat_prefix}"
+                     -P "${PROJECT_SOURCE_DIR}/cmake/test-install.cmake")
+    set_tests_properties(package_install PROPERTIES LABELS "ci;consumer" FIXTURES_SETUP quat_installed)
+
+    quat_add_consumer_test(package_consumer "${PROJECT_SOURCE_DIR}/tests/package"
+                           "-DCMAKE_PREFIX_PATH=${_quat_prefix}"
+                           "-DQUAT_EXPECTED_VERSION=${PROJECT_VERSION}")
+    set_tests_properties(package_consumer PROPERTIES FIXTURES_REQUIRED quat_installed)
+
+    quat_add_consumer_test(add_subdirectory_consumer "${PROJECT_SOURCE_DIR}/tests/add_subdirectory"
+                           "-DQUAT_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+endif()
+
+if(QUAT_TEST_SINGLE_INCLUDE)
+    quat_add_consumer_test(single_include_consumer "${PROJECT_SOURCE_DIR}/tests/single_include"
+                           "-DQUAT_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+endif()
+
+if(QUAT_TEST_FORMAT)
+    find_program(QUAT_CLANG_FORMAT NAMES clang-format clang-format-14 REQUIRED)
+    add_test(NAME format_check
+             COMMAND "${CMAKE_COMMAND}" "-DCLANG_FORMAT=${QUAT_CLANG_FORMAT}"
+                     "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                     -P "${PROJECT_SOURCE_DIR}/cmake/format-check.cmake")
+    set_tests_properties(format_check PROPERTIES LABELS "ci;lint")
+endif()
+
+if(QUAT_TEST_TIDY)
+    find_program(QUAT_CLANG_TIDY NAMES clang-tidy clang-tidy-14 REQUIRED)
+    if(NOT CMAKE_EXPORT_COMPILE_COMMANDS)
+        message(FATAL_ERROR "QUAT_TEST_TIDY needs CMAKE_EXPORT_COMPILE_COMMANDS=ON")
+    endif()
+    # A few translation units that instantiate most of the library; clang-tidy takes ~30 s each.
+    set(_quat_tidy_sources "")
+    foreach(_tu tests/test_quaternion.cpp tests/test_euler.cpp tests/test_conversions.cpp
+                tests/test_nearest_rotation.cpp tests/test_interpolation.cpp)
+        if(EXISTS "${PROJECT_SOURCE_DIR}/${_tu}")
+            list(APPEND _quat_tidy_sources "${PROJECT_SOURCE_DIR}/${_tu}")
+        endif()
+    endforeach()
+    add_test(NAME tidy_check
+             COMMAND "${QUAT_CLANG_TIDY}" -p "${PROJECT_BINARY_DIR}" --quiet
+                     "--warnings-as-errors=*" ${_quat_tidy_sources})
+    set_tests_properties(tidy_check PROPERTIES LABELS "ci;lint" TIMEOUT 600)
+endif()
+
+if(QUAT_TEST_VALGRIND)
+    find_program(QUAT_VALGRIND valgrind REQUIRED)
+    add_test(NAME memcheck
+             COMMAND "${QUAT_VALGRIND}" --error-exitcode=1 --leak-check=full
+                     --errors-for-leak-kinds=definite,indirect --quiet $<TARGET_FILE:quat_tests>)
+    set_tests_properties(memcheck PROPERTIES LABELS "ci;valgrind" TIMEOUT 1800)
+endif()
