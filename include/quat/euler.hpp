@@ -25,6 +25,9 @@ template <class T, sequence S = sequence::zyx, frame F = frame::intrinsic>
 struct euler {
     T angles[3];
 
+    static constexpr quat::sequence axis_sequence = S;  ///< for generic code
+    static constexpr quat::frame rotation_frame = F;    ///< for generic code
+
     /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
     [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return angles[i]; }
     [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return angles[i]; }

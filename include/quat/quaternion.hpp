@@ -145,11 +145,11 @@ template <class T>
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
-/// Uses 2 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
+/// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
 template <class T>
 [[nodiscard]] constexpr T angle_between(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    return T(2) * detail::atan2(norm(a - near), norm(a + near));
+    return T(4) * detail::atan2(norm(a - near), norm(a + near));
 }
 
 }  // namespace quat

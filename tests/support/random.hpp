@@ -1,6 +1,7 @@
 // Seeded random rotations and vectors for property tests: every run sees the same inputs.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>

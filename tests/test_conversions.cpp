@@ -1,0 +1,129 @@
+// Specification of conversions.hpp: quaternion <-> matrix <-> axis-angle <-> rotation vector.
+#include <cmath>
+#include <limits>
+
+#include <quat/conversions.hpp>
+
+#include "support/catch.hpp"
+#include "support/random.hpp"
+#include "support/tolerance.hpp"
+
+using quat::axis_angle;
+using quat::quaternion;
+using quat::rotation_matrix;
+using quat::vec3;
+using quat::test::max_difference;
+using quat::test::tolerance;
+
+static_assert(quat::to_matrix(quat::quatd::identity()) == rotation_matrix<double>::identity());
+static_assert(quat::to_matrix(quat::quatd{0, 0, 0, 1}) ==
+                  rotation_matrix<double>::from_rows({-1, 0, 0}, {0, -1, 0}, {0, 0, 1}),
+              "180 degrees about z");
+
+TEMPLATE_TEST_CASE("to_matrix is a homomorphism that agrees with rotate", "[conversions]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 2000; ++n) {
+        const auto a = random.unit_quaternion<T>(), b = random.unit_quaternion<T>();
+        const vec3<T> v = random.unit_vector<T>();
+        CHECK(max_difference(quat::to_matrix(a * b), quat::to_matrix(a) * quat::to_matrix(b)) <= tolerance<T>::conversion);
+        CHECK(max_difference(quat::rotate(quat::to_matrix(a), v), quat::rotate(a, v)) <= tolerance<T>::rotate);
+        CHECK(quat::to_matrix(-a) == quat::to_matrix(a));
+        CHECK(quat::orthogonality_error(quat::to_matrix(a)) <= tolerance<T>::conversion);
+    }
+}
+
+TEMPLATE_TEST_CASE("matrix -> quaternion inverts to_matrix, 180-degree turns included", "[conversions]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    std::vector<quaternion<T>> inputs;
+    for (int n = 0; n < 2000; ++n) inputs.push_back(random.unit_quaternion<T>());
+    for (int n = 0; n < 200; ++n) {  // half turns: w = 0, about random and coordinate axes
+        const vec3<T> a = random.unit_vector<T>();
+        inputs.push_back({0, a.x, a.y, a.z});
+    }
+    inputs.push_back({0, 1, 0, 0});
+    inputs.push_back({0, 0, 1, 0});
+    inputs.push_back({0, 0, 0, 1});
+    inputs.push_back({1, 0, 0, 0});
+    for (const auto& q : inputs) {
+        const quaternion<T> back = quat::to_quaternion(quat::to_matrix(q));
+        CAPTURE(q.w, q.x, q.y, q.z);
+        CHECK(back.w >= 0);
+        CHECK(std::abs(quat::norm(back) - 1) <= tolerance<T>::unit_norm);
+        CHECK(quat::angle_between(back, q) <= tolerance<T>::round_trip);
+    }
+}
+
+TEMPLATE_TEST_CASE("try_to_quaternion rejects non-rotations", "[conversions]", float, double) {
+    using T = TestType;
+    auto m = rotation_matrix<T>::identity();
+    CHECK(quat::try_to_quaternion(m).has_value());
+    m(0, 1) = T(0.01);
+    CHECK_FALSE(quat::try_to_quaternion(m).has_value());
+    CHECK(quat::try_to_quaternion(m, T(0.1)).has_value());
+    auto mirror = rotation_matrix<T>::identity();
+    mirror(1, 1) = -1;
+    CHECK_FALSE(quat::try_to_quaternion(mirror).has_value());
+    auto broken = rotation_matrix<T>::identity();
+    broken(2, 0) = std::numeric_limits<T>::quiet_NaN();
+    CHECK_FALSE(quat::try_to_quaternion(broken).has_value());
+    broken(2, 0) = std::numeric_limits<T>::infinity();
+    CHECK_FALSE(quat::try_to_quaternion(broken).has_value());
+}
+
+TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[conversions]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 2000; ++n) {
+        const axis_angle<T> r{random.unit_vector<T>(), random.uniform<T>(1e-3, 3.14)};
+        const quaternion<T> q = quat::to_quaternion(r);
+        CHECK(max_difference(quat::to_matrix(r), quat::to_matrix(q)) <= tolerance<T>::conversion);
+        const axis_angle<T> back = quat::to_axis_angle(q);
+        CHECK(back.angle == Approx(r.angle).epsilon(64 * std::numeric_limits<T>::epsilon() / r.angle).margin(0));
+        CHECK(max_difference(back.axis, r.axis) <= tolerance<T>::round_trip / r.angle);
+        const axis_angle<T> from_matrix = quat::to_axis_angle(quat::to_matrix(r));
+        CHECK(quat::angle_between(quat::to_quaternion(from_matrix), q) <= tolerance<T>::round_trip);
+    }
+    const axis_angle<T> none = quat::to_axis_angle(quaternion<T>::identity());
+    CHECK(none.angle == 0);
+    CHECK(none.axis == vec3<T>{1, 0, 0});
+    // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
+    const quaternion<T> quarter = quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::detail::pi<T> / 2});
+    CHECK(quarter.w == Approx(std::sqrt(0.5)));
+    CHECK(quarter.z == Approx(std::sqrt(0.5)));
+}
+
+TEMPLATE_TEST_CASE("try_to_quaternion(axis_angle) normalizes the axis and rejects bad input", "[conversions]", float, double) {
+    using T = TestType;
+    const auto q = quat::try_to_quaternion(axis_angle<T>{{0, 0, 7}, T(1)});
+    REQUIRE(q.has_value());
+    CHECK(std::abs(quat::norm(*q) - 1) <= tolerance<T>::unit_norm);
+    CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{0, 0, 0}, T(1)}).has_value());
+    CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{0, 0, 1}, std::numeric_limits<T>::infinity()}).has_value());
+    CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{std::numeric_limits<T>::quiet_NaN(), 0, 1}, T(1)}).has_value());
+}
+
+TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles to pi", "[conversions]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int decade = -30; decade <= 0; ++decade) {
+        for (int n = 0; n < 20; ++n) {
+            const T angle = std::min(T(3.14159), T(std::pow(10.0, decade)) * random.uniform<T>(1, 9.99));
+            const vec3<T> v = random.unit_vector<T>() * angle;
+            const quaternion<T> q = quat::from_rotation_vector(v);
+            CAPTURE(angle);
+            CHECK(std::abs(quat::norm(q) - 1) <= tolerance<T>::unit_norm);
+            const vec3<T> back = quat::to_rotation_vector(q);
+            CHECK(max_difference(back, v) <= tolerance<T>::conversion * angle);
+            // Independent reference: the axis-angle formula, in long double.
+            const long double h = static_cast<long double>(angle) / 2, s = std::sin(h) / angle;
+            CHECK(std::abs(static_cast<long double>(q.w) - std::cos(h)) <= tolerance<T>::conversion);
+            CHECK(std::abs(static_cast<long double>(q.x) - s * v.x) <= tolerance<T>::conversion * std::abs(s * v.x) + std::numeric_limits<T>::denorm_min());
+        }
+    }
+    CHECK(quat::from_rotation_vector(vec3<T>{0, 0, 0}) == quaternion<T>::identity());
+    CHECK(quat::to_rotation_vector(quaternion<T>::identity()) == vec3<T>{0, 0, 0});
+    const vec3<T> half_turn = quat::to_rotation_vector(quaternion<T>{0, 0, 1, 0});
+    CHECK(half_turn.y == Approx(quat::detail::pi<T>));
+}

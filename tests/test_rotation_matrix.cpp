@@ -1,0 +1,45 @@
+// Specification of rotation_matrix.hpp: 3x3 matrices acting on column vectors.
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include <quat/rotation_matrix.hpp>
+
+#include "support/catch.hpp"
+
+using matrix = quat::rotation_matrix<double>;
+using quat::vec3;
+
+namespace {
+constexpr matrix quarter_turn_z = matrix::from_columns({0, 1, 0}, {-1, 0, 0}, {0, 0, 1});  // x -> y
+constexpr matrix quarter_turn_x = matrix::from_rows({1, 0, 0}, {0, 0, -1}, {0, 1, 0});     // y -> z
+}  // namespace
+
+static_assert(std::is_aggregate_v<matrix>);
+static_assert(std::is_trivially_copyable_v<matrix>);
+static_assert(quarter_turn_z(1, 0) == 1 && quarter_turn_z(0, 1) == -1, "m(row, col)");
+static_assert(quat::rotate(quarter_turn_z, vec3<double>{1, 0, 0}) == vec3<double>{0, 1, 0}, "v' = M v");
+static_assert(quat::rotate(quarter_turn_x, vec3<double>{0, 1, 0}) == vec3<double>{0, 0, 1});
+static_assert(quat::transpose(quarter_turn_z) * quarter_turn_z == matrix::identity());
+static_assert(quat::determinant(quarter_turn_x) == 1);
+static_assert(quat::column(quarter_turn_z, 0) == vec3<double>{0, 1, 0});
+static_assert(quat::row(quarter_turn_x, 1) == vec3<double>{0, 0, -1});
+
+TEST_CASE("a * b applies b first", "[rotation_matrix]") {
+    const vec3<double> v{1, 2, 3};
+    CHECK(quat::rotate(quarter_turn_z * quarter_turn_x, v) == quat::rotate(quarter_turn_z, quat::rotate(quarter_turn_x, v)));
+    CHECK(quarter_turn_z * quarter_turn_x != quarter_turn_x * quarter_turn_z);
+}
+
+TEST_CASE("orthogonality_error measures distance from orthogonal and passes NaN through", "[rotation_matrix]") {
+    CHECK(quat::orthogonality_error(quarter_turn_z) == 0);
+    matrix skewed = quarter_turn_z;
+    skewed(0, 0) = 0.1;
+    CHECK(quat::orthogonality_error(skewed) == Approx(0.1));
+    skewed(2, 2) = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(quat::orthogonality_error(skewed)));
+    matrix mirror = matrix::identity();
+    mirror(2, 2) = -1;
+    CHECK(quat::orthogonality_error(mirror) == 0);
+    CHECK(quat::determinant(mirror) == -1);
+}
