@@ -1,0 +1,138 @@
+// The templates work with a user-defined scalar. This is the exact list of what quat asks of T:
+// - construction from an integer or floating literal, explicit: T(2), T(0.5), T(3.14...L);
+//   value initialization T{} and copying;
+// - unary -, binary + - * / and the comparisons < <= > >= == != (returning bool);
+// - std::numeric_limits<T>: epsilon(), min(), max(), infinity(), quiet_NaN();
+// - sqrt, sin, cos, atan2 and abs, found by argument-dependent lookup (or std:: for built-ins).
+// Operations must not throw (quat's functions are noexcept). The counting scalar of quat_bench is
+// one such type.
+#include <cmath>
+#include <limits>
+
+#include <quat/quat.hpp>
+
+#include "support/catch.hpp"
+
+namespace user {
+
+/// A scalar that only offers what the list above promises: no implicit conversions at all.
+struct real {
+    double value;
+
+    constexpr real() noexcept : value(0) {}
+    constexpr explicit real(int v) noexcept : value(v) {}
+    constexpr explicit real(double v) noexcept : value(v) {}
+    constexpr explicit real(long double v) noexcept : value(static_cast<double>(v)) {}
+};
+
+constexpr real operator-(real a) noexcept { return real(-a.value); }
+constexpr real operator+(real a, real b) noexcept { return real(a.value + b.value); }
+constexpr real operator-(real a, real b) noexcept { return real(a.value - b.value); }
+constexpr real operator*(real a, real b) noexcept { return real(a.value * b.value); }
+constexpr real operator/(real a, real b) noexcept { return real(a.value / b.value); }
+constexpr real& operator+=(real& a, real b) noexcept { return a = a + b; }
+constexpr real& operator-=(real& a, real b) noexcept { return a = a - b; }
+constexpr real& operator*=(real& a, real b) noexcept { return a = a * b; }
+constexpr bool operator<(real a, real b) noexcept { return a.value < b.value; }
+constexpr bool operator<=(real a, real b) noexcept { return a.value <= b.value; }
+constexpr bool operator>(real a, real b) noexcept { return a.value > b.value; }
+constexpr bool operator>=(real a, real b) noexcept { return a.value >= b.value; }
+constexpr bool operator==(real a, real b) noexcept { return a.value == b.value; }
+constexpr bool operator!=(real a, real b) noexcept { return a.value != b.value; }
+inline real sqrt(real a) noexcept { return real(std::sqrt(a.value)); }
+inline real sin(real a) noexcept { return real(std::sin(a.value)); }
+inline real cos(real a) noexcept { return real(std::cos(a.value)); }
+inline real atan2(real y, real x) noexcept { return real(std::atan2(y.value, x.value)); }
+inline real abs(real a) noexcept { return real(std::abs(a.value)); }
+
+}  // namespace user
+
+template <>
+struct std::numeric_limits<user::real> {
+    static constexpr bool is_specialized = true;
+    static constexpr user::real epsilon() noexcept { return user::real(std::numeric_limits<double>::epsilon()); }
+    static constexpr user::real min() noexcept { return user::real(std::numeric_limits<double>::min()); }
+    static constexpr user::real max() noexcept { return user::real(std::numeric_limits<double>::max()); }
+    static constexpr user::real infinity() noexcept { return user::real(std::numeric_limits<double>::infinity()); }
+    static constexpr user::real quiet_NaN() noexcept { return user::real(std::numeric_limits<double>::quiet_NaN()); }
+};
+
+namespace {
+
+using R = user::real;
+
+R r(double v) { return R(v); }
+
+// The same computation in double and in user::real must agree to the last bit, because user::real
+// performs exactly the double operations.
+template <class Q, class D>
+void check_same(const Q& got, const D& expected) {
+    CHECK(got.w.value == expected.w);
+    CHECK(got.x.value == expected.x);
+    CHECK(got.y.value == expected.y);
+    CHECK(got.z.value == expected.z);
+}
+
+}  // namespace
+
+TEST_CASE("every operation instantiates with a user-defined scalar and matches double", "[generic]") {
+    using namespace quat;
+    const quaternion<R> a = normalize(quaternion<R>{r(0.3), r(-0.2), r(0.9), r(0.1)});
+    const quaternion<R> b{r(0.5), r(0.5), r(-0.5), r(0.5)};
+    const quatd ad = normalize(quatd{0.3, -0.2, 0.9, 0.1}), bd{0.5, 0.5, -0.5, 0.5};
+    check_same(a, ad);
+    check_same(a * b, ad * bd);
+    check_same(a + b - a * r(2.0) / r(3.0), ad + bd - ad * 2.0 / 3.0);
+    check_same(conjugate(a), conjugate(ad));
+    check_same(inverse(a), inverse(ad));
+    check_same(*try_inverse(a), *try_inverse(ad));
+    check_same(*try_normalize(b), *try_normalize(bd));
+    CHECK(norm(a).value == norm(ad));
+    CHECK(dot(a, b).value == dot(ad, bd));
+    CHECK(angle_between(a, b).value == angle_between(ad, bd));
+    CHECK(a == a);
+    CHECK(a != b);
+
+    const vec3<R> v{r(1), r(2), r(3)};
+    const vec3<double> vd{1, 2, 3};
+    CHECK(rotate(a, v).y.value == rotate(ad, vd).y);
+    CHECK(normalize(v).z.value == normalize(vd).z);
+    CHECK(try_normalize(v).has_value());
+    CHECK(cross(v, v * r(2)).x.value == 0);
+
+    const rotation_matrix<R> m = to_matrix(a);
+    const rotation_matrix<double> md = to_matrix(ad);
+    CHECK(m(1, 2).value == md(1, 2));
+    CHECK(rotate(m * transpose(m), v).x.value == rotate(md * transpose(md), vd).x);
+    CHECK(determinant(m).value == determinant(md));
+    CHECK(orthogonality_error(m).value == orthogonality_error(md));
+    check_same(to_quaternion(m), to_quaternion(md));
+    check_same(*try_to_quaternion(m), *try_to_quaternion(md));
+    CHECK(nearest_rotation(m)(0, 1).value == nearest_rotation(md)(0, 1));
+    CHECK(try_nearest_rotation(m).has_value());
+
+    const axis_angle<R> aa = to_axis_angle(a);
+    const axis_angle<double> aad = to_axis_angle(ad);
+    CHECK(aa.angle.value == aad.angle);
+    check_same(to_quaternion(aa), to_quaternion(aad));
+    check_same(*try_to_quaternion(aa), *try_to_quaternion(aad));
+    CHECK(to_matrix(aa)(2, 0).value == to_matrix(aad)(2, 0));
+    CHECK(to_axis_angle(m).angle.value == to_axis_angle(md).angle);
+
+    check_same(from_rotation_vector(v), from_rotation_vector(vd));
+    CHECK(to_rotation_vector(a).x.value == to_rotation_vector(ad).x);
+
+    const euler<R, sequence::xzx, frame::extrinsic> e{{r(0.1), r(0.2), r(0.3)}};
+    const euler<double, sequence::xzx, frame::extrinsic> ed{{0.1, 0.2, 0.3}};
+    check_same(to_quaternion(e), to_quaternion(ed));
+    CHECK(to_matrix(e)(0, 2).value == to_matrix(ed)(0, 2));
+    CHECK(to_axis_angle(e).angle.value == to_axis_angle(ed).angle);
+    CHECK(to_euler<sequence::zyx>(a)[1].value == to_euler<sequence::zyx>(ad)[1]);
+    CHECK(to_euler<sequence::zyx>(m)[0].value == to_euler<sequence::zyx>(md)[0]);
+    CHECK(to_euler<sequence::yzy>(aa)[2].value == to_euler<sequence::yzy>(aad)[2]);
+    CHECK(to_euler<sequence::zyx>(e)[2].value == to_euler<sequence::zyx>(ed)[2]);
+    CHECK(extract_euler<sequence::xyz>(a).gimbal_lock == extract_euler<sequence::xyz>(ad).gimbal_lock);
+
+    check_same(slerp(a, b, r(0.3)), slerp(ad, bd, 0.3));
+    check_same(nlerp(a, b, r(0.3)), nlerp(ad, bd, 0.3));
+}
