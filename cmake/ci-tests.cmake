@@ -81,8 +81,14 @@ if(QUAT_TEST_TIDY)
             list(APPEND _quat_tidy_sources "${PROJECT_SOURCE_DIR}/${_tu}")
         endif()
     endforeach()
+    # Without CMAKE_CXX_STANDARD the compile commands may carry no -std (g++ defaults to C++17,
+    # clang-tidy 14 to C++14), so state it.
+    set(_quat_tidy_std "")
+    if(NOT CMAKE_CXX_STANDARD)
+        set(_quat_tidy_std "--extra-arg=-std=c++17")
+    endif()
     add_test(NAME tidy_check
-             COMMAND "${QUAT_CLANG_TIDY}" -p "${PROJECT_BINARY_DIR}" --quiet
+             COMMAND "${QUAT_CLANG_TIDY}" -p "${PROJECT_BINARY_DIR}" --quiet ${_quat_tidy_std}
                      "--warnings-as-errors=*" ${_quat_tidy_sources})
     set_tests_properties(tidy_check PROPERTIES LABELS "ci;lint" TIMEOUT 600)
 endif()

@@ -15,7 +15,8 @@ int main() {
     const auto by_matrix = quat::rotate(quat::to_matrix(q), x);
     const auto back = quat::to_euler<quat::sequence::zyx, quat::frame::intrinsic>(q);
 
-    const bool ok = std::abs(by_quaternion.y - 1.0) < 1e-12 && std::abs(by_matrix.y - 1.0) < 1e-12 &&
+    const bool ok = std::abs(by_quaternion.y - 1.0) < 1e-12 &&
+                    std::abs(by_matrix.y - 1.0) < 1e-12 &&
                     std::abs(back[0] - quarter_turn) < 1e-12 &&
                     std::abs(quat::to_axis_angle(q).angle - quarter_turn) < 1e-12;
     std::printf("quat %d.%d.%d: %s\n", QUAT_VERSION_MAJOR, QUAT_VERSION_MINOR, QUAT_VERSION_PATCH,
