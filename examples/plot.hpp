@@ -25,6 +25,7 @@ struct chart {
     double x_min, x_max, y_min, y_max;
     bool log_y = false;
     bool legend_top_left = true;
+    double legend_down = 0.0;  // legend's top edge, as a fraction of the height below the top
 };
 
 inline std::string format_tick(double v) {
@@ -74,18 +75,20 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
     }
     doc.polygon({{c.left, c.top}, {c.left + c.width, c.top}, {c.left + c.width, c.top + c.height}, {c.left, c.top + c.height}},
                 frame);
-    doc.text({c.left + c.width / 2, c.top - 10}, c.title, 14, "middle", "#222", true);
+    doc.text({c.left + c.width / 2, c.top - 30}, c.title, 14, "middle", "#222", true);
     doc.text({c.left + c.width / 2, c.top + c.height + 34}, c.x_label, 12, "middle");
-    doc.text({c.left - 8, c.top - 10}, c.y_label, 12, "start");
+    doc.text({c.left - 8, c.top - 9}, c.y_label, 12, "start");
     for (const series& s : curves) {
         std::vector<svg::point> points;
         for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) points.push_back(map(s.x[i], s.y[i]));
         doc.polyline(points, s.look);
     }
     // Legend in a corner box.
-    const double row = 17, legend_width = 210;
+    std::size_t longest = 0;
+    for (const series& s : curves) longest = std::max(longest, s.label.size());
+    const double row = 17, legend_width = 52 + 6.3 * static_cast<double>(longest);
     const double lx = c.legend_top_left ? c.left + 10 : c.left + c.width - legend_width - 10;
-    double ly = c.top + 10;
+    double ly = c.top + 10 + c.legend_down * c.height;
     doc.polygon({{lx, ly}, {lx + legend_width, ly}, {lx + legend_width, ly + row * curves.size() + 6},
                  {lx, ly + row * curves.size() + 6}},
                 {"#ccc", 1.0, "white", 0.9});
