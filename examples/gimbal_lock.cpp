@@ -26,7 +26,8 @@ using ypr = euler<double>;  // sequence::zyx, frame::intrinsic: {yaw, pitch, rol
 v3 turn_axis(const ypr& e, int which) {
     ypr moved = e;
     moved[static_cast<std::size_t>(which)] += 1e-6;
-    const axis_angle<double> step = to_axis_angle(to_quaternion(moved) * conjugate(to_quaternion(e)));
+    const axis_angle<double> step =
+        to_axis_angle(to_quaternion(moved) * conjugate(to_quaternion(e)));
     return step.axis * (step.angle / 1e-6);
 }
 
@@ -48,16 +49,20 @@ void panel(svg::document& doc, double x0, double pitch, const char* title) {
                 const v3 axis = body_axis == 1 ? v3{0, 1, 0} : v3{0, 0, 1};
                 tip.push_back(rotate(to_quaternion(e), axis));
             }
-            view3d::draw_sphere_path(doc, cam, tip, {sweep.colour, sweep.width, "none", 1.0, sweep.dash});
+            view3d::draw_sphere_path(doc, cam, tip,
+                                     {sweep.colour, sweep.width, "none", 1.0, sweep.dash});
         }
     }
-    view3d::draw_box(doc, cam, to_quaternion(ypr{{0.0, pitch, 0.0}}), {0.45, 0.3, 0.08}, {0, 0, 0}, 1.0);
+    view3d::draw_box(doc, cam, to_quaternion(ypr{{0.0, pitch, 0.0}}), {0.45, 0.3, 0.08}, {0, 0, 0},
+                     1.0);
     doc.text({x0 + 220, 60}, title, 15, "middle", "#222", true);
     const v3 a = turn_axis(ypr{{0.0, pitch, 0.0}}, 0), c = turn_axis(ypr{{0.0, pitch, 0.0}}, 2);
     char line[120];
-    std::snprintf(line, sizeof line, "increasing yaw turns about (%+.2f, %+.2f, %+.2f)", a.x, a.y, a.z);
+    std::snprintf(line, sizeof line, "increasing yaw turns about (%+.2f, %+.2f, %+.2f)", a.x, a.y,
+                  a.z);
     doc.text({x0 + 220, 428}, line, 12, "middle");
-    std::snprintf(line, sizeof line, "increasing roll turns about (%+.2f, %+.2f, %+.2f)", c.x, c.y, c.z);
+    std::snprintf(line, sizeof line, "increasing roll turns about (%+.2f, %+.2f, %+.2f)", c.x, c.y,
+                  c.z);
     doc.text({x0 + 220, 446}, line, 12, "middle");
 }
 
@@ -65,7 +70,8 @@ void panel(svg::document& doc, double x0, double pitch, const char* title) {
 
 int main(int argc, char** argv) {
     using example::expect;
-    const std::string out = (argc > 1 ? std::string(argv[1]) : std::string(".")) + "/gimbal_lock.svg";
+    const std::string out =
+        (argc > 1 ? std::string(argv[1]) : std::string(".")) + "/gimbal_lock.svg";
     std::printf("gimbal_lock: yaw-pitch-roll (intrinsic z-y-x) at pitch = 90 deg\n");
 
     // At pitch pi/2, Ry(pi/2) Rx(roll) = Rz(-roll) Ry(pi/2): only yaw - roll matters.
@@ -78,26 +84,34 @@ int main(int argc, char** argv) {
         }
     expect(only_difference_matters, "(yaw, 90 deg, roll) is the rotation (yaw - roll, 90 deg, 0)");
 
-    const v3 yaw_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 0), roll_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 2);
-    std::printf("  d/dyaw turns about (%+.3f, %+.3f, %+.3f); d/droll about (%+.3f, %+.3f, %+.3f)\n", yaw_axis.x,
-                yaw_axis.y, yaw_axis.z, roll_axis.x, roll_axis.y, roll_axis.z);
-    expect(norm(cross(yaw_axis, roll_axis)) < 1e-6, "at pitch 90 deg yaw and roll turn about one axis (world z)");
-    const v3 free_yaw = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 0), free_roll = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 2);
-    expect(norm(cross(free_yaw, free_roll)) > 0.5, "at pitch 45 deg they turn about different axes");
+    const v3 yaw_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 0),
+             roll_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 2);
+    std::printf("  d/dyaw turns about (%+.3f, %+.3f, %+.3f); d/droll about (%+.3f, %+.3f, %+.3f)\n",
+                yaw_axis.x, yaw_axis.y, yaw_axis.z, roll_axis.x, roll_axis.y, roll_axis.z);
+    expect(norm(cross(yaw_axis, roll_axis)) < 1e-6,
+           "at pitch 90 deg yaw and roll turn about one axis (world z)");
+    const v3 free_yaw = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 0),
+             free_roll = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 2);
+    expect(norm(cross(free_yaw, free_roll)) > 0.5,
+           "at pitch 45 deg they turn about different axes");
 
     // The library reports the singularity and puts the whole turn into the first angle.
-    const auto locked = extract_euler<sequence::zyx>(to_quaternion(ypr{{40 * degree, pi / 2, 25 * degree}}));
+    const auto locked =
+        extract_euler<sequence::zyx>(to_quaternion(ypr{{40 * degree, pi / 2, 25 * degree}}));
     std::printf("  extract_euler of (40, 90, 25) deg: (%.4f, %.4f, %.4f) deg, gimbal_lock = %s\n",
                 locked.angles[0] / degree, locked.angles[1] / degree, locked.angles[2] / degree,
                 locked.gimbal_lock ? "true" : "false");
     expect(locked.gimbal_lock, "extract_euler flags pitch = 90 deg as gimbal lock");
     expect(locked.angles[2] == 0.0 && std::abs(locked.angles[0] - 15 * degree) < 1e-9,
            "at the lock the third angle is 0 and the first carries yaw - roll = 15 deg");
-    const auto free = extract_euler<sequence::zyx>(to_quaternion(ypr{{40 * degree, 60 * degree, 25 * degree}}));
-    expect(!free.gimbal_lock && std::abs(free.angles[2] - 25 * degree) < 1e-12, "pitch 60 deg: no lock, angles recovered");
+    const auto free =
+        extract_euler<sequence::zyx>(to_quaternion(ypr{{40 * degree, 60 * degree, 25 * degree}}));
+    expect(!free.gimbal_lock && std::abs(free.angles[2] - 25 * degree) < 1e-12,
+           "pitch 60 deg: no lock, angles recovered");
 
     svg::document doc(880, 500);
-    doc.text({440, 28}, "Gimbal lock: yaw-pitch-roll, R = Rz(yaw) Ry(pitch) Rx(roll)", 17, "middle", "#222", true);
+    doc.text({440, 28}, "Gimbal lock: yaw-pitch-roll, R = Rz(yaw) Ry(pitch) Rx(roll)", 17, "middle",
+             "#222", true);
     panel(doc, 0, pi / 2, "pitch = 90 deg: yaw and roll paths coincide");
     panel(doc, 440, pi / 4, "pitch = 45 deg: two independent turns");
     doc.line({30, 478}, {60, 478}, {"#ff7f0e", 5.0});

@@ -27,9 +27,12 @@ constexpr double pi = detail::pi<double>;
 constexpr double degree = pi / 180;
 using ypr = euler<double>;  // intrinsic z-y-x {yaw, pitch, roll}
 
-double rotation_angle(const quatd& from, const quatd& to) { return to_axis_angle(conjugate(from) * to).angle; }
+double rotation_angle(const quatd& from, const quatd& to) {
+    return to_axis_angle(conjugate(from) * to).angle;
+}
 
-rotation_matrix<double> lerp(const rotation_matrix<double>& a, const rotation_matrix<double>& b, double t) {
+rotation_matrix<double> lerp(const rotation_matrix<double>& a, const rotation_matrix<double>& b,
+                             double t) {
     rotation_matrix<double> m{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) m(i, j) = (1 - t) * a(i, j) + t * b(i, j);
@@ -46,14 +49,17 @@ struct method {
 
 int main(int argc, char** argv) {
     using example::expect;
-    const std::string out = (argc > 1 ? std::string(argv[1]) : std::string(".")) + "/interpolation.svg";
+    const std::string out =
+        (argc > 1 ? std::string(argv[1]) : std::string(".")) + "/interpolation.svg";
 
-    const ypr from_angles{{-70 * degree, 10 * degree, 20 * degree}}, to_angles{{70 * degree, -25 * degree, 60 * degree}};
+    const ypr from_angles{{-70 * degree, 10 * degree, 20 * degree}},
+        to_angles{{70 * degree, -25 * degree, 60 * degree}};
     const quatd a = to_quaternion(from_angles), b = to_quaternion(to_angles);
     const rotation_matrix<double> ma = to_matrix(a), mb = to_matrix(b);
     const double total = rotation_angle(a, b);
-    std::printf("interpolation: from yaw-pitch-roll (-70, 10, 20) to (70, -25, 60) deg, %.2f deg apart\n",
-                total / degree);
+    std::printf(
+        "interpolation: from yaw-pitch-roll (-70, 10, 20) to (70, -25, 60) deg, %.2f deg apart\n",
+        total / degree);
 
     const std::vector<method> methods = {
         {"slerp", [&](double t) { return slerp(a, b, t); }, {"#1f77b4", 4.0}},
@@ -81,7 +87,8 @@ int main(int argc, char** argv) {
             const double rate = rotation_angle(m.at(t0), m.at(t1)) / (t1 - t0) / total;
             s.x.push_back((t0 + t1) / 2);
             s.y.push_back(rate);
-            if (std::string(m.name) == "slerp") slerp_deviation = std::max(slerp_deviation, std::abs(rate - 1));
+            if (std::string(m.name) == "slerp")
+                slerp_deviation = std::max(slerp_deviation, std::abs(rate - 1));
             if (std::string(m.name) == "nlerp") {
                 nlerp_fastest = std::max(nlerp_fastest, rate);
                 nlerp_slowest = std::min(nlerp_slowest, rate);
@@ -95,26 +102,31 @@ int main(int argc, char** argv) {
         expect(miss < 1e-9, "starts at a and ends at b");
     }
     std::printf("  slerp rate deviates from constant by at most %.2e\n", slerp_deviation);
-    std::printf("  nlerp rate ranges %.3f .. %.3f of the slerp rate\n", nlerp_slowest, nlerp_fastest);
-    std::printf("  lerp of yaw-pitch-roll strays up to %.1f deg from the slerp rotation at the same t\n",
-                euler_off_arc / degree);
+    std::printf("  nlerp rate ranges %.3f .. %.3f of the slerp rate\n", nlerp_slowest,
+                nlerp_fastest);
+    std::printf(
+        "  lerp of yaw-pitch-roll strays up to %.1f deg from the slerp rotation at the same t\n",
+        euler_off_arc / degree);
     expect(slerp_deviation < 1e-6, "slerp turns at constant angular velocity");
-    expect(nlerp_fastest / nlerp_slowest > 1.2, "nlerp turns faster in the middle than at the ends");
+    expect(nlerp_fastest / nlerp_slowest > 1.2,
+           "nlerp turns faster in the middle than at the ends");
     expect(euler_off_arc > 10 * degree, "lerp of Euler angles leaves the shortest path");
     const rotation_matrix<double> halfway = lerp(ma, mb, 0.5);
-    std::printf("  halfway lerped matrix: orthogonality error %.3f, determinant %.3f\n", orthogonality_error(halfway),
-                determinant(halfway));
+    std::printf("  halfway lerped matrix: orthogonality error %.3f, determinant %.3f\n",
+                orthogonality_error(halfway), determinant(halfway));
     expect(orthogonality_error(halfway) > 0.1, "a lerped matrix is not a rotation");
     expect(orthogonality_error(nearest_rotation(halfway)) < 1e-12, "nearest_rotation repairs it");
 
     svg::document doc(1000, 500);
     char title[120];
-    std::snprintf(title, sizeof title, "Interpolating between two rotations %.0f deg apart", total / degree);
+    std::snprintf(title, sizeof title, "Interpolating between two rotations %.0f deg apart",
+                  total / degree);
     doc.text({500, 28}, title, 17, "middle", "#222", true);
     // Look at the sphere from above the middle of the slerp path.
     const v3 middle = rotate(slerp(a, b, 0.5), v3{1, 0, 0});
-    const auto cam = view3d::camera::looking_from(std::atan2(middle.y, middle.x) - 0.35,
-                                                  std::asin(std::clamp(middle.z, -1.0, 1.0)) * 0.5 + 0.35, {230, 275}, 170);
+    const auto cam = view3d::camera::looking_from(
+        std::atan2(middle.y, middle.x) - 0.35,
+        std::asin(std::clamp(middle.z, -1.0, 1.0)) * 0.5 + 0.35, {230, 275}, 170);
     view3d::draw_sphere(doc, cam, 1.0);
     view3d::draw_world_axes(doc, cam, 1.25);
     for (const method& m : methods) {
@@ -124,10 +136,12 @@ int main(int argc, char** argv) {
         // Dots at t = 0, 0.1, ..., 1 show the speed along the path.
         for (int k = 0; k <= 10; ++k) {
             const v3 p = rotate(m.at(k / 10.0), v3{1, 0, 0});
-            doc.circle(cam.project(p), 3.2, {m.look.stroke, 1.0, cam.depth(p) >= 0 ? m.look.stroke : "white"});
+            doc.circle(cam.project(p), 3.2,
+                       {m.look.stroke, 1.0, cam.depth(p) >= 0 ? m.look.stroke : "white"});
         }
     }
-    const svg::point start = cam.project(rotate(a, v3{1, 0, 0})), end = cam.project(rotate(b, v3{1, 0, 0}));
+    const svg::point start = cam.project(rotate(a, v3{1, 0, 0})),
+                     end = cam.project(rotate(b, v3{1, 0, 0}));
     doc.text({start.x + 8, start.y + 16}, "a", 15, "start", "#222", true);
     doc.text({end.x + 8, end.y - 8}, "b", 15, "start", "#222", true);
     doc.text({230, 480}, "path of the body x axis's tip; dots every 0.1 in t", 12, "middle");
@@ -135,8 +149,17 @@ int main(int argc, char** argv) {
     double fastest_rate = 2.0;
     for (const plot::series& s : speed)
         for (double rate : s.y) fastest_rate = std::max(fastest_rate, std::ceil(rate * 2) / 2);
-    plot::chart chart{520, 70, 440, 340, "Angular velocity over t", "t", "angular velocity / (total angle per unit t)",
-                      0, 1, 0, fastest_rate};
+    plot::chart chart{520,
+                      70,
+                      440,
+                      340,
+                      "Angular velocity over t",
+                      "t",
+                      "angular velocity / (total angle per unit t)",
+                      0,
+                      1,
+                      0,
+                      fastest_rate};
     chart.legend_top_left = true;
     plot::draw(doc, chart, speed);
     expect(doc.save(out), "interpolation.svg written");

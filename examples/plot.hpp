@@ -47,13 +47,15 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
     const double y0 = y_value(c.y_min), y1 = y_value(c.y_max);
     const auto map = [&](double x, double y) {
         const double fy = (std::clamp(y_value(y), y0, y1) - y0) / (y1 - y0);
-        return svg::point{c.left + (x - c.x_min) / (c.x_max - c.x_min) * c.width, c.top + c.height * (1 - fy)};
+        return svg::point{c.left + (x - c.x_min) / (c.x_max - c.x_min) * c.width,
+                          c.top + c.height * (1 - fy)};
     };
     const svg::style grid{"#e3e3e3", 1.0};
     const svg::style frame{"#444", 1.0};
     // Vertical grid and x ticks.
     const double x_step = nice_step(c.x_max - c.x_min, 5);
-    for (double x = std::ceil(c.x_min / x_step) * x_step; x <= c.x_max + 1e-9 * x_step; x += x_step) {
+    for (double x = std::ceil(c.x_min / x_step) * x_step; x <= c.x_max + 1e-9 * x_step;
+         x += x_step) {
         const svg::point p = map(x, c.y_min);
         doc.line({p.x, c.top}, {p.x, c.top + c.height}, grid);
         doc.text({p.x, c.top + c.height + 16}, format_tick(x), 11, "middle", "#444");
@@ -67,20 +69,25 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
         }
     } else {
         const double y_step = nice_step(c.y_max - c.y_min, 5);
-        for (double y = std::ceil(c.y_min / y_step) * y_step; y <= c.y_max + 1e-9 * y_step; y += y_step) {
+        for (double y = std::ceil(c.y_min / y_step) * y_step; y <= c.y_max + 1e-9 * y_step;
+             y += y_step) {
             const svg::point p = map(c.x_min, y);
             doc.line({c.left, p.y}, {c.left + c.width, p.y}, grid);
             doc.text({c.left - 6, p.y + 4}, format_tick(y), 11, "end", "#444");
         }
     }
-    doc.polygon({{c.left, c.top}, {c.left + c.width, c.top}, {c.left + c.width, c.top + c.height}, {c.left, c.top + c.height}},
+    doc.polygon({{c.left, c.top},
+                 {c.left + c.width, c.top},
+                 {c.left + c.width, c.top + c.height},
+                 {c.left, c.top + c.height}},
                 frame);
     doc.text({c.left + c.width / 2, c.top - 30}, c.title, 14, "middle", "#222", true);
     doc.text({c.left + c.width / 2, c.top + c.height + 34}, c.x_label, 12, "middle");
     doc.text({c.left - 8, c.top - 9}, c.y_label, 12, "start");
     for (const series& s : curves) {
         std::vector<svg::point> points;
-        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) points.push_back(map(s.x[i], s.y[i]));
+        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+            points.push_back(map(s.x[i], s.y[i]));
         doc.polyline(points, s.look);
     }
     // Legend in a corner box.
@@ -89,7 +96,9 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
     const double row = 17, legend_width = 52 + 6.3 * static_cast<double>(longest);
     const double lx = c.legend_top_left ? c.left + 10 : c.left + c.width - legend_width - 10;
     double ly = c.top + 10 + c.legend_down * c.height;
-    doc.polygon({{lx, ly}, {lx + legend_width, ly}, {lx + legend_width, ly + row * curves.size() + 6},
+    doc.polygon({{lx, ly},
+                 {lx + legend_width, ly},
+                 {lx + legend_width, ly + row * curves.size() + 6},
                  {lx, ly + row * curves.size() + 6}},
                 {"#ccc", 1.0, "white", 0.9});
     for (const series& s : curves) {

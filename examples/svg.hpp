@@ -26,9 +26,12 @@ struct style {
     std::string dash;  // e.g. "6 4"; empty for a solid line
 
     // A constructor rather than an aggregate, so callers may give only the leading attributes.
-    style(std::string stroke_colour = "#222", double stroke_width = 1.5, std::string fill_colour = "none",
-          double alpha = 1.0, std::string dash_pattern = "")
-        : stroke(std::move(stroke_colour)), width(stroke_width), fill(std::move(fill_colour)), opacity(alpha),
+    style(std::string stroke_colour = "#222", double stroke_width = 1.5,
+          std::string fill_colour = "none", double alpha = 1.0, std::string dash_pattern = "")
+        : stroke(std::move(stroke_colour)),
+          width(stroke_width),
+          fill(std::move(fill_colour)),
+          opacity(alpha),
           dash(std::move(dash_pattern)) {}
 };
 
@@ -41,8 +44,8 @@ public:
     }
 
     void line(point a, point b, const style& s = {}) {
-        body_ << "<line x1=\"" << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(b.x) << "\" y2=\""
-              << num(b.y) << "\"" << attributes(s) << "/>\n";
+        body_ << "<line x1=\"" << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(b.x)
+              << "\" y2=\"" << num(b.y) << "\"" << attributes(s) << "/>\n";
     }
 
     void polyline(const std::vector<point>& points, const style& s = {}) {
@@ -54,8 +57,8 @@ public:
     }
 
     void circle(point centre, double radius, const style& s = {}) {
-        body_ << "<circle cx=\"" << num(centre.x) << "\" cy=\"" << num(centre.y) << "\" r=\"" << num(radius)
-              << "\"" << attributes(s) << "/>\n";
+        body_ << "<circle cx=\"" << num(centre.x) << "\" cy=\"" << num(centre.y) << "\" r=\""
+              << num(radius) << "\"" << attributes(s) << "/>\n";
     }
 
     /// A line from a to b with a filled arrow head at b.
@@ -68,23 +71,28 @@ public:
         style head_style = s;
         head_style.fill = s.stroke;
         head_style.dash.clear();
-        polygon({b, {base.x - uy * head * 0.4, base.y + ux * head * 0.4}, {base.x + uy * head * 0.4, base.y - ux * head * 0.4}},
+        polygon({b,
+                 {base.x - uy * head * 0.4, base.y + ux * head * 0.4},
+                 {base.x + uy * head * 0.4, base.y - ux * head * 0.4}},
                 head_style);
     }
 
     /// Text at p; anchor is "start", "middle" or "end".
-    void text(point p, const std::string& content, double size = 14, const std::string& anchor = "start",
-              const std::string& colour = "#222", bool bold = false) {
-        body_ << "<text x=\"" << num(p.x) << "\" y=\"" << num(p.y) << "\" font-family=\"DejaVu Sans, Arial, sans-serif\""
-              << " font-size=\"" << num(size) << "\" text-anchor=\"" << anchor << "\" fill=\"" << colour << "\""
-              << (bold ? " font-weight=\"bold\"" : "") << ">" << escape(content) << "</text>\n";
+    void text(point p, const std::string& content, double size = 14,
+              const std::string& anchor = "start", const std::string& colour = "#222",
+              bool bold = false) {
+        body_ << "<text x=\"" << num(p.x) << "\" y=\"" << num(p.y)
+              << "\" font-family=\"DejaVu Sans, Arial, sans-serif\""
+              << " font-size=\"" << num(size) << "\" text-anchor=\"" << anchor << "\" fill=\""
+              << colour << "\"" << (bold ? " font-weight=\"bold\"" : "") << ">" << escape(content)
+              << "</text>\n";
     }
 
     [[nodiscard]] std::string str() const {
         std::ostringstream out;
         out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-            << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width_) << "\" height=\"" << num(height_)
-            << "\" viewBox=\"0 0 " << num(width_) << " " << num(height_) << "\">\n"
+            << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width_) << "\" height=\""
+            << num(height_) << "\" viewBox=\"0 0 " << num(width_) << " " << num(height_) << "\">\n"
             << body_.str() << "</svg>\n";
         return out.str();
     }
@@ -114,7 +122,8 @@ private:
     }
 
     static std::string attributes(const style& s) {
-        std::string out = " stroke=\"" + s.stroke + "\" stroke-width=\"" + num(s.width) + "\" fill=\"" + s.fill + "\"";
+        std::string out = " stroke=\"" + s.stroke + "\" stroke-width=\"" + num(s.width) +
+                          "\" fill=\"" + s.fill + "\"";
         if (s.opacity < 1.0) out += " opacity=\"" + num(s.opacity) + "\"";
         if (!s.dash.empty()) out += " stroke-dasharray=\"" + s.dash + "\"";
         out += " stroke-linejoin=\"round\" stroke-linecap=\"round\"";

@@ -16,7 +16,8 @@ namespace view3d {
 
 using v3 = quat::vec3<double>;
 
-inline const std::string axis_colour[3] = {"#d62728", "#2ca02c", "#1f77b4"};  // x red, y green, z blue
+inline const std::string axis_colour[3] = {"#d62728", "#2ca02c",
+                                           "#1f77b4"};  // x red, y green, z blue
 inline const char* const axis_name[3] = {"x", "y", "z"};
 
 /// Looks at the origin from direction `toward_viewer`; distance 0 means orthographic projection.
@@ -29,7 +30,8 @@ struct camera {
     /// Camera on the ray of the given azimuth (from +x toward +y) and elevation (radians) above the xy-plane.
     static camera looking_from(double azimuth, double elevation, svg::point centre, double scale,
                                double distance = 0.0) {
-        const v3 d{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+        const v3 d{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                   std::sin(elevation)};
         const v3 r = quat::normalize(quat::cross(v3{0, 0, 1}, d));
         return {d, r, quat::cross(d, r), distance, centre, scale};
     }
@@ -39,7 +41,8 @@ struct camera {
 
     [[nodiscard]] svg::point project(const v3& p) const {
         const double f = distance > 0 ? distance / (distance - depth(p)) : 1.0;
-        return {centre.x + scale * f * quat::dot(p, right), centre.y - scale * f * quat::dot(p, up)};
+        return {centre.x + scale * f * quat::dot(p, right),
+                centre.y - scale * f * quat::dot(p, up)};
     }
 
     /// Unit vector from p toward the eye (constant for orthographic projection).
@@ -74,8 +77,8 @@ inline void draw_world_axes(svg::document& doc, const camera& cam, double length
 
 /// A box with half sizes `half` turned by the unit quaternion q and moved to `at`, faces tinted by
 /// the body axis they face (x red, y green, z blue), with its body axes drawn as arrows of `axis_length`.
-inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q, const v3& half, const v3& at,
-                     double axis_length) {
+inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q, const v3& half,
+                     const v3& at, double axis_length) {
     const double h[3] = {half.x, half.y, half.z};
     v3 axis[3];
     for (int a = 0; a < 3; ++a) {
@@ -94,7 +97,8 @@ inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q
     for (int a = 0; a < 3; ++a) {
         doc.line(cam.project(at), cam.project(at + axis[a] * h[a]), {axis_colour[a], 2.0});
         const bool front = quat::dot(axis[a], cam.to_eye(at + axis[a] * h[a])) > 0;
-        outer.push_back({cam.project(at + axis[a] * h[a]), cam.project(at + axis[a] * axis_length), a, front});
+        outer.push_back(
+            {cam.project(at + axis[a] * h[a]), cam.project(at + axis[a] * axis_length), a, front});
     }
     for (const arrow_part& part : outer)
         if (!part.front) doc.arrow(part.from, part.to, {axis_colour[part.axis], 2.0});
@@ -107,7 +111,8 @@ inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q
             if (quat::dot(normal, cam.to_eye(face_centre)) <= 0) continue;
             std::vector<svg::point> corners;
             for (auto [u, v] : {std::pair{1, 1}, {1, -1}, {-1, -1}, {-1, 1}})
-                corners.push_back(cam.project(face_centre + axis[b] * (u * h[b]) + axis[c] * (v * h[c])));
+                corners.push_back(
+                    cam.project(face_centre + axis[b] * (u * h[b]) + axis[c] * (v * h[c])));
             const double lit = std::max(0.0, quat::dot(normal, light));
             doc.polygon(corners, {"#333", 1.0, shade(a, sign > 0 ? 0.45 : 0.75, lit), 0.92});
         }
@@ -123,7 +128,8 @@ inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q
 }
 
 /// Points p0..p1 split into runs on the near (front) and far side of the origin's depth plane.
-inline void draw_sphere_path(svg::document& doc, const camera& cam, const std::vector<v3>& path, const svg::style& front) {
+inline void draw_sphere_path(svg::document& doc, const camera& cam, const std::vector<v3>& path,
+                             const svg::style& front) {
     std::vector<svg::point> run;
     bool run_front = true;
     auto flush = [&] {
@@ -160,7 +166,8 @@ inline void draw_sphere(svg::document& doc, const camera& cam, double r) {
         const double phi = latitude * pi / 180;
         for (int k = 0; k <= 120; ++k) {
             const double t = 2 * pi * k / 120;
-            ring.push_back(v3{std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)} * r);
+            ring.push_back(
+                v3{std::cos(phi) * std::cos(t), std::cos(phi) * std::sin(t), std::sin(phi)} * r);
         }
         draw_sphere_path(doc, cam, ring, grid);
     }
@@ -169,7 +176,9 @@ inline void draw_sphere(svg::document& doc, const camera& cam, double r) {
         const double lambda = longitude * pi / 180;
         for (int k = 0; k <= 120; ++k) {
             const double t = 2 * pi * k / 120;
-            ring.push_back(v3{std::cos(t) * std::cos(lambda), std::cos(t) * std::sin(lambda), std::sin(t)} * r);
+            ring.push_back(
+                v3{std::cos(t) * std::cos(lambda), std::cos(t) * std::sin(lambda), std::sin(t)} *
+                r);
         }
         draw_sphere_path(doc, cam, ring, grid);
     }
