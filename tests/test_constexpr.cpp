@@ -13,7 +13,8 @@ using namespace quat;
 // Algebra, exactly (these hold under C++17 with any compiler).
 static_assert(quatd{1, 2, 3, 4} * quatd{5, 6, 7, 8} == quatd{-60, 12, 30, 24});
 static_assert(rotate(quatd{0, 0, 0, 1}, vec3<double>{1, 0, 0}) == vec3<double>{-1, 0, 0});
-static_assert(to_matrix(quatd{0, 1, 0, 0}) == rotation_matrix<double>::from_rows({1, 0, 0}, {0, -1, 0}, {0, 0, -1}));
+static_assert(to_matrix(quatd{0, 1, 0, 0}) ==
+              rotation_matrix<double>::from_rows({1, 0, 0}, {0, -1, 0}, {0, 0, -1}));
 // The compile-time elementary functions.
 static_assert(detail::sqrt(4.0) == 2.0 && detail::sqrt(2.0) == 1.4142135623730951);
 static_assert(detail::sqrt(1e-300) == 1e-150 && detail::sqrt(0.0) == 0.0);
@@ -29,7 +30,8 @@ template <class T>
 struct compile_time_results {
     static constexpr quaternion<T> a = normalize(quaternion<T>{T(0.3), T(-0.2), T(0.9), T(0.1)});
     static constexpr quaternion<T> b = to_quaternion(axis_angle<T>{{T(0), T(0.6), T(0.8)}, T(2.5)});
-    static constexpr quaternion<T> from_euler = to_quaternion(euler<T, sequence::zxz>{{T(0.4), T(1.3), T(-2.2)}});
+    static constexpr quaternion<T> from_euler =
+        to_quaternion(euler<T, sequence::zxz>{{T(0.4), T(1.3), T(-2.2)}});
     static constexpr euler<T, sequence::yxz> angles = to_euler<sequence::yxz>(a);
     static constexpr quaternion<T> interpolated = slerp(a, b, T(0.3));
     static constexpr quaternion<T> exponential = from_rotation_vector(vec3<T>{T(0.5), T(-1), T(2)});
@@ -47,25 +49,29 @@ T run_time(T x) {  // hides x from the optimizer, so what follows runs at run ti
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("compile-time results equal run-time results within 8 epsilon", "[constexpr]", float, double, long double) {
+TEMPLATE_TEST_CASE("compile-time results equal run-time results within 8 epsilon", "[constexpr]",
+                   float, double, long double) {
     using T = TestType;
     using C = compile_time_results<T>;
     const T tol = test::tolerance<T>::constexpr_vs_runtime;
     const quaternion<T> a = normalize(quaternion<T>{run_time(T(0.3)), T(-0.2), T(0.9), T(0.1)});
     const quaternion<T> b = to_quaternion(axis_angle<T>{{T(0), T(0.6), T(0.8)}, run_time(T(2.5))});
     auto near = [tol](const quaternion<T>& x, const quaternion<T>& y) {
-        return std::abs(x.w - y.w) <= tol && std::abs(x.x - y.x) <= tol && std::abs(x.y - y.y) <= tol && std::abs(x.z - y.z) <= tol;
+        return std::abs(x.w - y.w) <= tol && std::abs(x.x - y.x) <= tol &&
+               std::abs(x.y - y.y) <= tol && std::abs(x.z - y.z) <= tol;
     };
     CHECK(near(C::a, a));
     CHECK(near(C::b, b));
-    CHECK(near(C::from_euler, to_quaternion(euler<T, sequence::zxz>{{run_time(T(0.4)), T(1.3), T(-2.2)}})));
+    CHECK(near(C::from_euler,
+               to_quaternion(euler<T, sequence::zxz>{{run_time(T(0.4)), T(1.3), T(-2.2)}})));
     const auto angles = to_euler<sequence::yxz>(a);
     for (int i = 0; i < 3; ++i) CHECK(std::abs(C::angles[i] - angles[i]) <= tol);
     CHECK(near(C::interpolated, slerp(a, b, run_time(T(0.3)))));
     CHECK(near(C::exponential, from_rotation_vector(vec3<T>{run_time(T(0.5)), T(-1), T(2)})));
     const vec3<T> logarithm = to_rotation_vector(b);
     CHECK(std::abs(C::logarithm.x - logarithm.x) + std::abs(C::logarithm.y - logarithm.y) +
-              std::abs(C::logarithm.z - logarithm.z) <= tol);
+              std::abs(C::logarithm.z - logarithm.z) <=
+          tol);
     CHECK(near(C::from_matrix, to_quaternion(to_matrix(b))));
     const auto repaired = nearest_rotation(rotation_matrix<T>::from_rows(
         {run_time(T(1.01)), T(0.02), T(0)}, {T(0), T(0.98), T(0.03)}, {T(0.01), T(0), T(1)}));
@@ -78,12 +84,16 @@ TEST_CASE("compile-time sin, cos and atan2 track <cmath> over rotation angles", 
     for (int n = -2000; n <= 2000; ++n) {
         const long double x = n * 0.01;  // a double, so both sides see the same argument
         const auto sc = detail::compile_time::sin_cos(x);
-        CHECK(std::abs(static_cast<double>(sc.sin) - std::sin(static_cast<double>(x))) <= 2 * test::eps<double>);
-        CHECK(std::abs(static_cast<double>(sc.cos) - std::cos(static_cast<double>(x))) <= 2 * test::eps<double>);
+        CHECK(std::abs(static_cast<double>(sc.sin) - std::sin(static_cast<double>(x))) <=
+              2 * test::eps<double>);
+        CHECK(std::abs(static_cast<double>(sc.cos) - std::cos(static_cast<double>(x))) <=
+              2 * test::eps<double>);
         const long double y = std::sin(static_cast<double>(n));  // exact double too
-        CHECK(std::abs(static_cast<double>(detail::compile_time::atan2(y, x)) - std::atan2(static_cast<double>(y), static_cast<double>(x))) <=
+        CHECK(std::abs(static_cast<double>(detail::compile_time::atan2(y, x)) -
+                       std::atan2(static_cast<double>(y), static_cast<double>(x))) <=
               4 * test::eps<double>);
         const long double r = std::abs(x) * 1e3L + 1e-300L;
-        CHECK(static_cast<double>(detail::compile_time::sqrt(r)) == Approx(std::sqrt(static_cast<double>(r))).epsilon(2 * test::eps<double>));
+        CHECK(static_cast<double>(detail::compile_time::sqrt(r)) ==
+              Approx(std::sqrt(static_cast<double>(r))).epsilon(2 * test::eps<double>));
     }
 }

@@ -20,20 +20,24 @@ static_assert(quat::to_matrix(quat::quatd{0, 0, 0, 1}) ==
                   rotation_matrix<double>::from_rows({-1, 0, 0}, {0, -1, 0}, {0, 0, 1}),
               "180 degrees about z");
 
-TEMPLATE_TEST_CASE("to_matrix is a homomorphism that agrees with rotate", "[conversions]", float, double) {
+TEMPLATE_TEST_CASE("to_matrix is a homomorphism that agrees with rotate", "[conversions]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 2000; ++n) {
         const auto a = random.unit_quaternion<T>(), b = random.unit_quaternion<T>();
         const vec3<T> v = random.unit_vector<T>();
-        CHECK(max_difference(quat::to_matrix(a * b), quat::to_matrix(a) * quat::to_matrix(b)) <= tolerance<T>::conversion);
-        CHECK(max_difference(quat::rotate(quat::to_matrix(a), v), quat::rotate(a, v)) <= tolerance<T>::rotate);
+        CHECK(max_difference(quat::to_matrix(a * b), quat::to_matrix(a) * quat::to_matrix(b)) <=
+              tolerance<T>::conversion);
+        CHECK(max_difference(quat::rotate(quat::to_matrix(a), v), quat::rotate(a, v)) <=
+              tolerance<T>::rotate);
         CHECK(quat::to_matrix(-a) == quat::to_matrix(a));
         CHECK(quat::orthogonality_error(quat::to_matrix(a)) <= tolerance<T>::conversion);
     }
 }
 
-TEMPLATE_TEST_CASE("matrix -> quaternion inverts to_matrix, 180-degree turns included", "[conversions]", float, double) {
+TEMPLATE_TEST_CASE("matrix -> quaternion inverts to_matrix, 180-degree turns included",
+                   "[conversions]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     std::vector<quaternion<T>> inputs;
@@ -72,7 +76,8 @@ TEMPLATE_TEST_CASE("try_to_quaternion rejects non-rotations", "[conversions]", f
     CHECK_FALSE(quat::try_to_quaternion(broken).has_value());
 }
 
-TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[conversions]", float, double) {
+TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[conversions]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 2000; ++n) {
@@ -80,7 +85,8 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
         const quaternion<T> q = quat::to_quaternion(r);
         CHECK(max_difference(quat::to_matrix(r), quat::to_matrix(q)) <= tolerance<T>::conversion);
         const axis_angle<T> back = quat::to_axis_angle(q);
-        CHECK(back.angle == Approx(r.angle).epsilon(64 * std::numeric_limits<T>::epsilon() / r.angle).margin(0));
+        CHECK(back.angle ==
+              Approx(r.angle).epsilon(64 * std::numeric_limits<T>::epsilon() / r.angle).margin(0));
         CHECK(max_difference(back.axis, r.axis) <= tolerance<T>::round_trip / r.angle);
         const axis_angle<T> from_matrix = quat::to_axis_angle(quat::to_matrix(r));
         CHECK(quat::angle_between(quat::to_quaternion(from_matrix), q) <= tolerance<T>::round_trip);
@@ -89,27 +95,35 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
     CHECK(none.angle == 0);
     CHECK(none.axis == vec3<T>{1, 0, 0});
     // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
-    const quaternion<T> quarter = quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::detail::pi<T> / 2});
+    const quaternion<T> quarter =
+        quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::detail::pi<T> / 2});
     CHECK(quarter.w == Approx(std::sqrt(0.5)));
     CHECK(quarter.z == Approx(std::sqrt(0.5)));
 }
 
-TEMPLATE_TEST_CASE("try_to_quaternion(axis_angle) normalizes the axis and rejects bad input", "[conversions]", float, double) {
+TEMPLATE_TEST_CASE("try_to_quaternion(axis_angle) normalizes the axis and rejects bad input",
+                   "[conversions]", float, double) {
     using T = TestType;
     const auto q = quat::try_to_quaternion(axis_angle<T>{{0, 0, 7}, T(1)});
     REQUIRE(q.has_value());
     CHECK(std::abs(quat::norm(*q) - 1) <= tolerance<T>::unit_norm);
     CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{0, 0, 0}, T(1)}).has_value());
-    CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{0, 0, 1}, std::numeric_limits<T>::infinity()}).has_value());
-    CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{{std::numeric_limits<T>::quiet_NaN(), 0, 1}, T(1)}).has_value());
+    CHECK_FALSE(
+        quat::try_to_quaternion(axis_angle<T>{{0, 0, 1}, std::numeric_limits<T>::infinity()})
+            .has_value());
+    CHECK_FALSE(
+        quat::try_to_quaternion(axis_angle<T>{{std::numeric_limits<T>::quiet_NaN(), 0, 1}, T(1)})
+            .has_value());
 }
 
-TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles to pi", "[conversions]", float, double) {
+TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles to pi",
+                   "[conversions]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int decade = -30; decade <= 0; ++decade) {
         for (int n = 0; n < 20; ++n) {
-            const T angle = std::min(T(3.14159), T(std::pow(10.0, decade)) * random.uniform<T>(1, 9.99));
+            const T angle =
+                std::min(T(3.14159), T(std::pow(10.0, decade)) * random.uniform<T>(1, 9.99));
             const vec3<T> v = random.unit_vector<T>() * angle;
             const quaternion<T> q = quat::from_rotation_vector(v);
             CAPTURE(angle);
@@ -118,8 +132,11 @@ TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles t
             CHECK(max_difference(back, v) <= tolerance<T>::conversion * angle);
             // Independent reference: the axis-angle formula, in long double.
             const long double h = static_cast<long double>(angle) / 2, s = std::sin(h) / angle;
-            CHECK(std::abs(static_cast<long double>(q.w) - std::cos(h)) <= tolerance<T>::conversion);
-            CHECK(std::abs(static_cast<long double>(q.x) - s * v.x) <= tolerance<T>::conversion * std::abs(s * v.x) + std::numeric_limits<T>::denorm_min());
+            CHECK(std::abs(static_cast<long double>(q.w) - std::cos(h)) <=
+                  tolerance<T>::conversion);
+            CHECK(std::abs(static_cast<long double>(q.x) - s * v.x) <=
+                  tolerance<T>::conversion * std::abs(s * v.x) +
+                      std::numeric_limits<T>::denorm_min());
         }
     }
     CHECK(quat::from_rotation_vector(vec3<T>{0, 0, 0}) == quaternion<T>::identity());

@@ -50,9 +50,12 @@ vec3<T> unit_axis(int axis) {
 template <class T, sequence S, frame F>
 quaternion<T> by_definition(const euler<T, S, F>& e) {
     constexpr auto axes = quat::detail::axes_of(S);
-    const quaternion<T> q0 = quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.first), e[0]});
-    const quaternion<T> q1 = quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.second), e[1]});
-    const quaternion<T> q2 = quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.third), e[2]});
+    const quaternion<T> q0 =
+        quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.first), e[0]});
+    const quaternion<T> q1 =
+        quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.second), e[1]});
+    const quaternion<T> q2 =
+        quat::to_quaternion(quat::axis_angle<T>{unit_axis<T>(axes.third), e[2]});
     return F == frame::intrinsic ? q0 * q1 * q2 : q2 * q1 * q0;
 }
 
@@ -61,21 +64,26 @@ constexpr bool is_proper = quat::detail::axes_of(S).first == quat::detail::axes_
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("Euler angles to quaternion and matrix follow the definition", "[euler]", float, double) {
+TEMPLATE_TEST_CASE("Euler angles to quaternion and matrix follow the definition", "[euler]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for_each_convention<T>([&](auto convention) {
         using E = decltype(convention);
         for (int n = 0; n < 300; ++n) {
-            const E e{{random.uniform<T>(-3.14, 3.14), random.uniform<T>(-3.14, 3.14), random.uniform<T>(-3.14, 3.14)}};
+            const E e{{random.uniform<T>(-3.14, 3.14), random.uniform<T>(-3.14, 3.14),
+                       random.uniform<T>(-3.14, 3.14)}};
             const quaternion<T> reference = by_definition(e);
-            CHECK(quat::angle_between(quat::to_quaternion(e), reference) <= tolerance<T>::round_trip);
-            CHECK(quat::test::max_difference(quat::to_matrix(e), quat::to_matrix(reference)) <= tolerance<T>::conversion);
+            CHECK(quat::angle_between(quat::to_quaternion(e), reference) <=
+                  tolerance<T>::round_trip);
+            CHECK(quat::test::max_difference(quat::to_matrix(e), quat::to_matrix(reference)) <=
+                  tolerance<T>::conversion);
         }
     });
 }
 
-TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in canonical ranges", "[euler]", float, double) {
+TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in canonical ranges",
+                   "[euler]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for_each_convention<T>([&](auto convention) {
@@ -95,7 +103,8 @@ TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in
                 CHECK(std::abs(e[1]) <= pi / 2);
             }
             const E from_matrix = quat::to_euler<S, F>(quat::to_matrix(q));
-            CHECK(quat::angle_between(quat::to_quaternion(from_matrix), q) <= tolerance<T>::euler_round_trip);
+            CHECK(quat::angle_between(quat::to_quaternion(from_matrix), q) <=
+                  tolerance<T>::euler_round_trip);
         }
     });
 }
@@ -113,7 +122,8 @@ TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e
             for (int k = 1; k <= 16; ++k) {
                 const double offset = k == 16 ? 0.0 : std::pow(10.0, -k);
                 for (const double side : {-1.0, 1.0}) {
-                    const E e{{random.uniform<double>(-3, 3), lock + side * offset, random.uniform<double>(-3, 3)}};
+                    const E e{{random.uniform<double>(-3, 3), lock + side * offset,
+                               random.uniform<double>(-3, 3)}};
                     const quaternion<double> q = quat::to_quaternion(e);
                     const auto extraction = quat::extract_euler<S, F>(q);
                     CAPTURE(static_cast<int>(S), static_cast<int>(F), lock, side * offset);
@@ -129,7 +139,8 @@ TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e
     });
 }
 
-TEST_CASE("gimbal lock: two different Euler triples give one rotation, and extract_euler says so", "[euler]") {
+TEST_CASE("gimbal lock: two different Euler triples give one rotation, and extract_euler says so",
+          "[euler]") {
     using E = euler<double>;  // R = Rz(yaw) Ry(pitch) Rx(roll)
     const double pitch = quat::detail::pi<double> / 2;
     // With pitch = 90°, yaw and roll turn about the same world axis: only yaw - roll matters.
@@ -140,7 +151,8 @@ TEST_CASE("gimbal lock: two different Euler triples give one rotation, and extra
     CHECK(extraction.angles[0] == Approx(0.5));
     CHECK(extraction.angles[1] == Approx(pitch));
     CHECK(extraction.angles[2] == 0);
-    CHECK_FALSE(quat::extract_euler<quat::sequence::zyx>(quat::to_quaternion(E{{0.7, 1.2, 0.2}})).gimbal_lock);
+    CHECK_FALSE(quat::extract_euler<quat::sequence::zyx>(quat::to_quaternion(E{{0.7, 1.2, 0.2}}))
+                    .gimbal_lock);
 }
 
 TEST_CASE("the default convention is the thesis's yaw-pitch-roll, R = Rz Ry Rx", "[euler]") {

@@ -50,11 +50,21 @@ inline real abs(real a) noexcept { return real(std::abs(a.value)); }
 template <>
 struct std::numeric_limits<user::real> {
     static constexpr bool is_specialized = true;
-    static constexpr user::real epsilon() noexcept { return user::real(std::numeric_limits<double>::epsilon()); }
-    static constexpr user::real min() noexcept { return user::real(std::numeric_limits<double>::min()); }
-    static constexpr user::real max() noexcept { return user::real(std::numeric_limits<double>::max()); }
-    static constexpr user::real infinity() noexcept { return user::real(std::numeric_limits<double>::infinity()); }
-    static constexpr user::real quiet_NaN() noexcept { return user::real(std::numeric_limits<double>::quiet_NaN()); }
+    static constexpr user::real epsilon() noexcept {
+        return user::real(std::numeric_limits<double>::epsilon());
+    }
+    static constexpr user::real min() noexcept {
+        return user::real(std::numeric_limits<double>::min());
+    }
+    static constexpr user::real max() noexcept {
+        return user::real(std::numeric_limits<double>::max());
+    }
+    static constexpr user::real infinity() noexcept {
+        return user::real(std::numeric_limits<double>::infinity());
+    }
+    static constexpr user::real quiet_NaN() noexcept {
+        return user::real(std::numeric_limits<double>::quiet_NaN());
+    }
 };
 
 namespace {
@@ -75,7 +85,8 @@ void check_same(const Q& got, const D& expected) {
 
 }  // namespace
 
-TEST_CASE("every operation instantiates with a user-defined scalar and matches double", "[generic]") {
+TEST_CASE("every operation instantiates with a user-defined scalar and matches double",
+          "[generic]") {
     using namespace quat;
     const quaternion<R> a = normalize(quaternion<R>{r(0.3), r(-0.2), r(0.9), r(0.1)});
     const quaternion<R> b{r(0.5), r(0.5), r(-0.5), r(0.5)};
@@ -131,7 +142,8 @@ TEST_CASE("every operation instantiates with a user-defined scalar and matches d
     CHECK(to_euler<sequence::zyx>(m)[0].value == to_euler<sequence::zyx>(md)[0]);
     CHECK(to_euler<sequence::yzy>(aa)[2].value == to_euler<sequence::yzy>(aad)[2]);
     CHECK(to_euler<sequence::zyx>(e)[2].value == to_euler<sequence::zyx>(ed)[2]);
-    CHECK(extract_euler<sequence::xyz>(a).gimbal_lock == extract_euler<sequence::xyz>(ad).gimbal_lock);
+    CHECK(extract_euler<sequence::xyz>(a).gimbal_lock ==
+          extract_euler<sequence::xyz>(ad).gimbal_lock);
 
     check_same(slerp(a, b, r(0.3)), slerp(ad, bd, 0.3));
     check_same(nlerp(a, b, r(0.3)), nlerp(ad, bd, 0.3));

@@ -52,11 +52,13 @@ TEMPLATE_TEST_CASE("product, rotate and conjugate agree with GLM", "[glm]", floa
         CHECK(difference(a * b, to_glm(a) * to_glm(b)) <= tolerance<T>::glm);
         CHECK(difference(quat::conjugate(a), glm::conjugate(to_glm(a))) == 0);
         const glm::vec<3, T> g = to_glm(a) * glm::vec<3, T>(v.x, v.y, v.z);
-        CHECK(quat::test::max_difference(quat::rotate(a, v), vec3<T>{g.x, g.y, g.z}) <= tolerance<T>::glm * quat::norm(v));
+        CHECK(quat::test::max_difference(quat::rotate(a, v), vec3<T>{g.x, g.y, g.z}) <=
+              tolerance<T>::glm * quat::norm(v));
     }
 }
 
-TEMPLATE_TEST_CASE("to_matrix and to_quaternion agree with mat3_cast and quat_cast", "[glm]", float, double) {
+TEMPLATE_TEST_CASE("to_matrix and to_quaternion agree with mat3_cast and quat_cast", "[glm]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 5000; ++n) {
@@ -64,9 +66,11 @@ TEMPLATE_TEST_CASE("to_matrix and to_quaternion agree with mat3_cast and quat_ca
         const auto m = quat::to_matrix(q);
         const glm::mat<3, 3, T> g = glm::mat3_cast(to_glm(q));
         for (int row = 0; row < 3; ++row)
-            for (int col = 0; col < 3; ++col) CHECK(std::abs(m(row, col) - g[col][row]) <= tolerance<T>::glm);
+            for (int col = 0; col < 3; ++col)
+                CHECK(std::abs(m(row, col) - g[col][row]) <= tolerance<T>::glm);
         // quat_cast may return -q; both are the same rotation.
-        CHECK(quat::angle_between(quat::to_quaternion(m), from_glm(glm::quat_cast(g))) <= tolerance<T>::glm);
+        CHECK(quat::angle_between(quat::to_quaternion(m), from_glm(glm::quat_cast(g))) <=
+              tolerance<T>::glm);
     }
 }
 
@@ -77,14 +81,17 @@ TEMPLATE_TEST_CASE("axis-angle agrees with angleAxis, angle and axis", "[glm]", 
         const vec3<T> axis = random.unit_vector<T>();
         const T angle = random.uniform<T>(-6, 6);
         const auto q = quat::to_quaternion(quat::axis_angle<T>{axis, angle});
-        CHECK(difference(q, glm::angleAxis(angle, glm::vec<3, T>(axis.x, axis.y, axis.z))) <= tolerance<T>::glm);
+        CHECK(difference(q, glm::angleAxis(angle, glm::vec<3, T>(axis.x, axis.y, axis.z))) <=
+              tolerance<T>::glm);
         const auto back = quat::to_axis_angle(q);
         const glm::qua<T> canonical = to_glm(q.w < 0 ? -q : q);
-        CHECK(std::abs(back.angle - glm::angle(canonical)) <= tolerance<T>::glm * 1000);  // GLM uses acos(w)
+        CHECK(std::abs(back.angle - glm::angle(canonical)) <=
+              tolerance<T>::glm * 1000);  // GLM uses acos(w)
     }
 }
 
-TEMPLATE_TEST_CASE("to_euler<zyx> agrees with eulerAngles away from gimbal lock", "[glm]", float, double) {
+TEMPLATE_TEST_CASE("to_euler<zyx> agrees with eulerAngles away from gimbal lock", "[glm]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     int compared = 0;
@@ -104,18 +111,23 @@ TEMPLATE_TEST_CASE("to_euler<zyx> agrees with eulerAngles away from gimbal lock"
     CHECK(compared > 4000);
 }
 
-TEMPLATE_TEST_CASE("slerp agrees with glm::slerp; exp and log with glm::exp and glm::log", "[glm]", float, double) {
+TEMPLATE_TEST_CASE("slerp agrees with glm::slerp; exp and log with glm::exp and glm::log", "[glm]",
+                   float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 5000; ++n) {
         const auto a = random.unit_quaternion<T>(), b = random.unit_quaternion<T>();
         const T t = random.uniform<T>(0, 1);
-        CHECK(quat::angle_between(quat::slerp(a, b, t), from_glm(glm::slerp(to_glm(a), to_glm(b), t))) <= tolerance<T>::glm * 10);
+        CHECK(quat::angle_between(quat::slerp(a, b, t),
+                                  from_glm(glm::slerp(to_glm(a), to_glm(b), t))) <=
+              tolerance<T>::glm * 10);
         const auto canonical = a.w < 0 ? -a : a;
         const glm::qua<T> log = glm::log(to_glm(canonical));
         const vec3<T> v = quat::to_rotation_vector(a);
-        CHECK(quat::test::max_difference(v, vec3<T>{2 * log.x, 2 * log.y, 2 * log.z}) <= tolerance<T>::glm);
+        CHECK(quat::test::max_difference(v, vec3<T>{2 * log.x, 2 * log.y, 2 * log.z}) <=
+              tolerance<T>::glm);
         const glm::qua<T> exp = glm::exp(glm::qua<T>(T(0), v.x / 2, v.y / 2, v.z / 2));
-        CHECK(quat::angle_between(quat::from_rotation_vector(v), from_glm(exp)) <= tolerance<T>::glm);
+        CHECK(quat::angle_between(quat::from_rotation_vector(v), from_glm(exp)) <=
+              tolerance<T>::glm);
     }
 }

@@ -15,15 +15,18 @@ namespace {
 // Independent reference in long double: rotate a by t times the relative rotation along the
 // shorter arc, q(t) = a exp(t log(a* b)), from the axis-angle form of a* b.
 template <class T>
-quaternion<long double> reference_slerp(const quaternion<T>& a, const quaternion<T>& b, long double t) {
+quaternion<long double> reference_slerp(const quaternion<T>& a, const quaternion<T>& b,
+                                        long double t) {
     const quaternion<long double> al{a.w, a.x, a.y, a.z}, bl{b.w, b.x, b.y, b.z};
     quaternion<long double> relative = quat::conjugate(al) * bl;
     if (relative.w < 0) relative = -relative;
-    const long double s = std::sqrt(relative.x * relative.x + relative.y * relative.y + relative.z * relative.z);
+    const long double s =
+        std::sqrt(relative.x * relative.x + relative.y * relative.y + relative.z * relative.z);
     const long double half = std::atan2(s, relative.w);
     if (s == 0) return al;
     const long double k = std::sin(t * half) / s;
-    return al * quaternion<long double>{std::cos(t * half), relative.x * k, relative.y * k, relative.z * k};
+    return al * quaternion<long double>{std::cos(t * half), relative.x * k, relative.y * k,
+                                        relative.z * k};
 }
 
 template <class T>
@@ -34,7 +37,8 @@ long double distance(const quaternion<T>& q, const quaternion<long double>& r) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("slerp is exact at the ends and takes the shorter arc", "[interpolation]", float, double) {
+TEMPLATE_TEST_CASE("slerp is exact at the ends and takes the shorter arc", "[interpolation]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
@@ -46,7 +50,8 @@ TEMPLATE_TEST_CASE("slerp is exact at the ends and takes the shorter arc", "[int
     }
 }
 
-TEMPLATE_TEST_CASE("slerp moves at constant angular velocity and stays unit", "[interpolation]", float, double) {
+TEMPLATE_TEST_CASE("slerp moves at constant angular velocity and stays unit", "[interpolation]",
+                   float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
@@ -63,15 +68,16 @@ TEMPLATE_TEST_CASE("slerp moves at constant angular velocity and stays unit", "[
     }
 }
 
-TEMPLATE_TEST_CASE("slerp is stable for nearly equal and nearly opposite rotations", "[interpolation]", float, double) {
+TEMPLATE_TEST_CASE("slerp is stable for nearly equal and nearly opposite rotations",
+                   "[interpolation]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int k = 1; k <= 30; ++k) {
         const auto a = random.unit_quaternion<T>();
         const auto axis = random.unit_vector<T>();
         const T small = T(std::pow(10.0, -k / 2.0));
-        const quaternion<T> turn{std::cos(small / 2), axis.x * std::sin(small / 2), axis.y * std::sin(small / 2),
-                                 axis.z * std::sin(small / 2)};
+        const quaternion<T> turn{std::cos(small / 2), axis.x * std::sin(small / 2),
+                                 axis.y * std::sin(small / 2), axis.z * std::sin(small / 2)};
         const quaternion<T> near = a * turn;
         for (const quaternion<T>& b : {near, -near, a, -a}) {
             const quaternion<T> q = quat::slerp(a, b, T(0.3));

@@ -44,7 +44,9 @@ TEST_CASE("perturbed and scaled matrices map to the SVD's nearest rotation", "[n
         matrix m = quat::to_matrix(random.unit_quaternion<double>());
         const double size = n < 1000 ? 0.1 : 1.0;  // small noise, then arbitrary matrices
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) m(i, j) = random.uniform<double>(0.5, 2) * m(i, j) + size * random.uniform<double>(-1, 1);
+            for (int j = 0; j < 3; ++j)
+                m(i, j) =
+                    random.uniform<double>(0.5, 2) * m(i, j) + size * random.uniform<double>(-1, 1);
         const matrix r = quat::nearest_rotation(m);
         CAPTURE(n);
         CHECK(quat::orthogonality_error(r) <= 16 * quat::test::eps<double>);
@@ -53,14 +55,17 @@ TEST_CASE("perturbed and scaled matrices map to the SVD's nearest rotation", "[n
     }
 }
 
-TEST_CASE("det <= 0: still the nearest proper rotation; ties and bad input are reported", "[nearest_rotation]") {
+TEST_CASE("det <= 0: still the nearest proper rotation; ties and bad input are reported",
+          "[nearest_rotation]") {
     matrix mirror = matrix::from_rows({1, 0, 0}, {0, 2, 0}, {0, 0, -3});
     const matrix r = quat::nearest_rotation(mirror);
     CHECK(quat::determinant(r) == Approx(1));
     CHECK(max_difference(r, reference(mirror)) <= 1e-12);
     const matrix minus_identity = matrix::from_rows({-1, 0, 0}, {0, -1, 0}, {0, 0, -1});
-    CHECK_FALSE(quat::try_nearest_rotation(minus_identity).has_value());  // every half turn is nearest
-    CHECK(quat::orthogonality_error(quat::nearest_rotation(minus_identity)) <= 8 * quat::test::eps<double>);
+    CHECK_FALSE(
+        quat::try_nearest_rotation(minus_identity).has_value());  // every half turn is nearest
+    CHECK(quat::orthogonality_error(quat::nearest_rotation(minus_identity)) <=
+          8 * quat::test::eps<double>);
     matrix broken = matrix::identity();
     broken(1, 2) = std::numeric_limits<double>::quiet_NaN();
     CHECK_FALSE(quat::try_nearest_rotation(broken).has_value());

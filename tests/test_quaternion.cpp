@@ -29,13 +29,17 @@ static_assert(quat::conjugate(quatd{1, 2, 3, 4}) == quatd{1, -2, -3, -4});
 static_assert(quat::squared_norm(quatd{1, 2, 3, 4}) == 30);
 static_assert(quat::inverse(quatd{0, 0, 2, 0}) == quatd{0, 0, -0.5, 0}, "q* / |q|^2, not q* / |q|");
 
-TEMPLATE_TEST_CASE("the product is associative and distributive but not commutative", "[quaternion]", float, double) {
+TEMPLATE_TEST_CASE("the product is associative and distributive but not commutative",
+                   "[quaternion]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
-        const auto a = random.unit_quaternion<T>(), b = random.unit_quaternion<T>(), c = random.unit_quaternion<T>();
-        CHECK(quat::test::max_difference((a * b) * c, a * (b * c)) <= quat::test::tolerance<T>::product);
-        CHECK(quat::test::max_difference(a * (b + c), a * b + a * c) <= quat::test::tolerance<T>::product);
+        const auto a = random.unit_quaternion<T>(), b = random.unit_quaternion<T>(),
+                   c = random.unit_quaternion<T>();
+        CHECK(quat::test::max_difference((a * b) * c, a * (b * c)) <=
+              quat::test::tolerance<T>::product);
+        CHECK(quat::test::max_difference(a * (b + c), a * b + a * c) <=
+              quat::test::tolerance<T>::product);
     }
     CHECK(i * j != j * i);
 }
@@ -45,17 +49,21 @@ TEMPLATE_TEST_CASE("inverse and conjugate", "[quaternion]", float, double) {
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
         const quaternion<T> q = random.unit_quaternion<T>() * random.uniform<T>(0.1, 10);
-        CHECK(quat::test::max_difference(q * quat::inverse(q), quaternion<T>::identity()) <= quat::test::tolerance<T>::product);
-        CHECK(quat::test::max_difference(quat::inverse(q) * q, quaternion<T>::identity()) <= quat::test::tolerance<T>::product);
+        CHECK(quat::test::max_difference(q * quat::inverse(q), quaternion<T>::identity()) <=
+              quat::test::tolerance<T>::product);
+        CHECK(quat::test::max_difference(quat::inverse(q) * q, quaternion<T>::identity()) <=
+              quat::test::tolerance<T>::product);
         const quaternion<T> u = quat::normalize(q);
-        CHECK(quat::test::max_difference(quat::inverse(u), quat::conjugate(u)) <= quat::test::tolerance<T>::product);
+        CHECK(quat::test::max_difference(quat::inverse(u), quat::conjugate(u)) <=
+              quat::test::tolerance<T>::product);
     }
 }
 
-TEMPLATE_TEST_CASE("normalize works from subnormal to huge components", "[quaternion]", float, double) {
+TEMPLATE_TEST_CASE("normalize works from subnormal to huge components", "[quaternion]", float,
+                   double) {
     using T = TestType;
-    for (const T scale : {std::numeric_limits<T>::denorm_min() * 8, std::numeric_limits<T>::min(), T(1e-20), T(1),
-                          T(1e20), std::numeric_limits<T>::max() / 2}) {
+    for (const T scale : {std::numeric_limits<T>::denorm_min() * 8, std::numeric_limits<T>::min(),
+                          T(1e-20), T(1), T(1e20), std::numeric_limits<T>::max() / 2}) {
         const quaternion<T> q = quat::normalize(quaternion<T>{scale, scale, scale, scale});
         CAPTURE(scale);
         CHECK(std::abs(quat::norm(q) - 1) <= quat::test::tolerance<T>::unit_norm);
@@ -63,7 +71,8 @@ TEMPLATE_TEST_CASE("normalize works from subnormal to huge components", "[quater
     }
 }
 
-TEMPLATE_TEST_CASE("checked normalize and inverse reject what they cannot handle", "[quaternion]", float, double) {
+TEMPLATE_TEST_CASE("checked normalize and inverse reject what they cannot handle", "[quaternion]",
+                   float, double) {
     using T = TestType;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
     CHECK_FALSE(quat::try_normalize(quaternion<T>{0, 0, 0, 0}).has_value());
@@ -75,7 +84,8 @@ TEMPLATE_TEST_CASE("checked normalize and inverse reject what they cannot handle
     CHECK(quat::try_inverse(quaternion<T>{2, 0, 0, 0}) == quaternion<T>{T(0.5), 0, 0, 0});
 }
 
-TEMPLATE_TEST_CASE("rotate(q, v) is q (0, v) q* and a * b applies b first", "[quaternion]", float, double) {
+TEMPLATE_TEST_CASE("rotate(q, v) is q (0, v) q* and a * b applies b first", "[quaternion]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
@@ -83,11 +93,15 @@ TEMPLATE_TEST_CASE("rotate(q, v) is q (0, v) q* and a * b applies b first", "[qu
         const vec3<T> v = random.vector<T>();
         const quaternion<T> p = a * quaternion<T>{0, v.x, v.y, v.z} * quat::conjugate(a);
         const vec3<T> r = quat::rotate(a, v);
-        CHECK(quat::test::max_difference(r, vec3<T>{p.x, p.y, p.z}) <= quat::test::tolerance<T>::rotate * 4);
-        CHECK(std::abs(quat::norm(r) - quat::norm(v)) <= quat::test::tolerance<T>::rotate * quat::norm(v));
-        CHECK(quat::test::max_difference(quat::rotate(a * b, v), quat::rotate(a, quat::rotate(b, v))) <=
+        CHECK(quat::test::max_difference(r, vec3<T>{p.x, p.y, p.z}) <=
               quat::test::tolerance<T>::rotate * 4);
-        CHECK(quat::test::max_difference(quat::rotate(-a, v), r) <= quat::test::tolerance<T>::rotate * 4);
+        CHECK(std::abs(quat::norm(r) - quat::norm(v)) <=
+              quat::test::tolerance<T>::rotate * quat::norm(v));
+        CHECK(quat::test::max_difference(quat::rotate(a * b, v),
+                                         quat::rotate(a, quat::rotate(b, v))) <=
+              quat::test::tolerance<T>::rotate * 4);
+        CHECK(quat::test::max_difference(quat::rotate(-a, v), r) <=
+              quat::test::tolerance<T>::rotate * 4);
     }
 }
 
@@ -99,7 +113,8 @@ TEST_CASE("a positive angle turns counter-clockwise seen from the axis tip", "[q
     CHECK(r.y == Approx(1));
 }
 
-TEMPLATE_TEST_CASE("angle_between ignores sign and is accurate for nearby rotations", "[quaternion]", float, double) {
+TEMPLATE_TEST_CASE("angle_between ignores sign and is accurate for nearby rotations",
+                   "[quaternion]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     const auto q = random.unit_quaternion<T>();

@@ -18,7 +18,8 @@ constexpr matrix quarter_turn_x = matrix::from_rows({1, 0, 0}, {0, 0, -1}, {0, 1
 static_assert(std::is_aggregate_v<matrix>);
 static_assert(std::is_trivially_copyable_v<matrix>);
 static_assert(quarter_turn_z(1, 0) == 1 && quarter_turn_z(0, 1) == -1, "m(row, col)");
-static_assert(quat::rotate(quarter_turn_z, vec3<double>{1, 0, 0}) == vec3<double>{0, 1, 0}, "v' = M v");
+static_assert(quat::rotate(quarter_turn_z, vec3<double>{1, 0, 0}) == vec3<double>{0, 1, 0},
+              "v' = M v");
 static_assert(quat::rotate(quarter_turn_x, vec3<double>{0, 1, 0}) == vec3<double>{0, 0, 1});
 static_assert(quat::transpose(quarter_turn_z) * quarter_turn_z == matrix::identity());
 static_assert(quat::determinant(quarter_turn_x) == 1);
@@ -27,11 +28,13 @@ static_assert(quat::row(quarter_turn_x, 1) == vec3<double>{0, 0, -1});
 
 TEST_CASE("a * b applies b first", "[rotation_matrix]") {
     const vec3<double> v{1, 2, 3};
-    CHECK(quat::rotate(quarter_turn_z * quarter_turn_x, v) == quat::rotate(quarter_turn_z, quat::rotate(quarter_turn_x, v)));
+    CHECK(quat::rotate(quarter_turn_z * quarter_turn_x, v) ==
+          quat::rotate(quarter_turn_z, quat::rotate(quarter_turn_x, v)));
     CHECK(quarter_turn_z * quarter_turn_x != quarter_turn_x * quarter_turn_z);
 }
 
-TEST_CASE("orthogonality_error measures distance from orthogonal and passes NaN through", "[rotation_matrix]") {
+TEST_CASE("orthogonality_error measures distance from orthogonal and passes NaN through",
+          "[rotation_matrix]") {
     CHECK(quat::orthogonality_error(quarter_turn_z) == 0);
     matrix skewed = quarter_turn_z;
     skewed(0, 0) = 0.1;

@@ -20,17 +20,20 @@ static_assert(quat::norm(vec3<double>{3, 4, 12}) == 13, "norm is usable in const
 
 TEMPLATE_TEST_CASE("norm neither overflows nor underflows", "[vec3]", float, double) {
     using T = TestType;
-    const T huge = std::numeric_limits<T>::max() / 4, tiny = std::numeric_limits<T>::denorm_min() * 4;
+    const T huge = std::numeric_limits<T>::max() / 4,
+            tiny = std::numeric_limits<T>::denorm_min() * 4;
     CHECK(quat::norm(vec3<T>{huge, huge, T(0)}) == Approx(huge * std::sqrt(T(2))));
     CHECK(quat::norm(vec3<T>{tiny, T(0), T(0)}) == tiny);
     const vec3<T> n = quat::normalize(vec3<T>{T(0), huge, huge});
     CHECK(n.y == Approx(std::sqrt(T(0.5))));
 }
 
-TEMPLATE_TEST_CASE("try_normalize rejects the zero vector and non-finite input", "[vec3]", float, double) {
+TEMPLATE_TEST_CASE("try_normalize rejects the zero vector and non-finite input", "[vec3]", float,
+                   double) {
     using T = TestType;
     CHECK_FALSE(quat::try_normalize(vec3<T>{0, 0, 0}).has_value());
-    CHECK_FALSE(quat::try_normalize(vec3<T>{std::numeric_limits<T>::quiet_NaN(), 1, 0}).has_value());
+    CHECK_FALSE(
+        quat::try_normalize(vec3<T>{std::numeric_limits<T>::quiet_NaN(), 1, 0}).has_value());
     CHECK_FALSE(quat::try_normalize(vec3<T>{std::numeric_limits<T>::infinity(), 1, 0}).has_value());
     const auto unit = quat::try_normalize(vec3<T>{0, 0, 5});
     REQUIRE(unit.has_value());

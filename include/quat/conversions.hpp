@@ -77,7 +77,8 @@ template <class T>
 /// to_quaternion of the rotation about normalize(axis), or std::nullopt when the axis is zero or
 /// any input is non-finite.
 template <class T>
-[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(const axis_angle<T>& rotation) noexcept {
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(
+    const axis_angle<T>& rotation) noexcept {
     const std::optional<vec3<T>> axis = try_normalize(rotation.axis);
     if (!axis || !detail::is_finite(rotation.angle)) return std::nullopt;
     return to_quaternion(axis_angle<T>{*axis, rotation.angle});
@@ -109,13 +110,16 @@ template <class T>
     const T xk = a.x * k, yk = a.y * k, zk = a.z * k;
     const T xs = a.x * s, ys = a.y * s, zs = a.z * s;
     const T xy = a.x * yk, xz = a.x * zk, yz = a.y * zk;
-    return {{{c + a.x * xk, xy - zs, xz + ys}, {xy + zs, c + a.y * yk, yz - xs}, {xz - ys, yz + xs, c + a.z * zk}}};
+    return {{{c + a.x * xk, xy - zs, xz + ys},
+             {xy + zs, c + a.y * yk, yz - xs},
+             {xz - ys, yz + xs, c + a.z * zk}}};
 }
 
 /// Exponential map: the unit quaternion of the rotation by |v| radians about v / |v|.
 /// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> from_rotation_vector(const vec3<T>& rotation_vector) noexcept {
+[[nodiscard]] constexpr quaternion<T> from_rotation_vector(
+    const vec3<T>& rotation_vector) noexcept {
     const T angle = norm(rotation_vector);
     const T angle2 = angle * angle;
     T w{}, scale{};  // scale = sin(angle / 2) / angle
@@ -141,9 +145,10 @@ template <class T>
     if (p.w > T(0) && ratio * ratio * ratio * ratio < std::numeric_limits<T>::epsilon()) {
         // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
         const T r2 = ratio * ratio;
-        return u * ((T(2) / p.w) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
+        return (u / p.w) * (T(2) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
     }
-    return u * (T(2) * detail::atan2(s, p.w) / s);
+    // Dividing u first keeps 1/s from overflowing for a subnormal-scaled q.
+    return (u / s) * (T(2) * detail::atan2(s, p.w));
 }
 
 }  // namespace quat

@@ -48,8 +48,9 @@ struct axis_triple {
 };
 
 [[nodiscard]] constexpr axis_triple axes_of(sequence s) noexcept {
-    constexpr axis_triple table[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
-                                     {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
+    constexpr axis_triple table[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0},
+                                     {2, 0, 1}, {2, 1, 0}, {0, 1, 0}, {0, 2, 0},
+                                     {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
     return table[static_cast<int>(s)];
 }
 
@@ -75,7 +76,8 @@ template <class T>
 template <class T, sequence S, frame F>
 [[nodiscard]] constexpr quaternion<T> to_quaternion(const euler<T, S, F>& e) noexcept {
     constexpr detail::axis_triple order = detail::product_order<S, F>();
-    const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1], last = F == frame::intrinsic ? e[2] : e[0];
+    const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1],
+            last = F == frame::intrinsic ? e[2] : e[0];
     const T c0 = detail::cos(first / T(2)), s0 = detail::sin(first / T(2));
     const T c1 = detail::cos(middle / T(2)), s1 = detail::sin(middle / T(2));
     const T c2 = detail::cos(last / T(2)), s2 = detail::sin(last / T(2));
@@ -101,7 +103,8 @@ template <class T, sequence S, frame F>
 template <class T, sequence S, frame F>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const euler<T, S, F>& e) noexcept {
     constexpr detail::axis_triple order = detail::product_order<S, F>();
-    const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1], F == frame::intrinsic ? e[2] : e[0]};
+    const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1],
+                        F == frame::intrinsic ? e[2] : e[0]};
     const int axis[3] = {order.first, order.second, order.third};
     rotation_matrix<T> r = rotation_matrix<T>::identity();
     for (int n = 0; n < 3; ++n) {
@@ -138,7 +141,7 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const T b = proper ? v[i] : v[i] - parity * v[k];
     const T c = proper ? v[j] : v[j] + q.w;
     const T d = proper ? parity * v[k] : parity * v[k] + v[i];
-    const T cos_part = detail::sqrt(a * a + b * b), sin_part = detail::sqrt(c * c + d * d);
+    const T cos_part = detail::hypot(a, b), sin_part = detail::hypot(c, d);
     T beta = T(2) * detail::atan2(sin_part, cos_part);
     const T half_sum = detail::atan2(b, a), half_difference = detail::atan2(d, c);
     T alpha{}, gamma{};

@@ -18,7 +18,8 @@ template <class T>
     if (a2 * a2 < std::numeric_limits<T>::epsilon()) {
         // sin(tx)/sin(x) = t (1 - (t^2 - 1) x^2 / 6 + ...), next term below epsilon^1.5
         const T t2 = t * t;
-        return t * (T(1) - (t2 - T(1)) * a2 / T(6) + (T(3) * t2 * t2 - T(10) * t2 + T(7)) * a2 * a2 / T(360));
+        return t * (T(1) - (t2 - T(1)) * a2 / T(6) +
+                    (T(3) * t2 * t2 - T(10) * t2 + T(7)) * a2 * a2 / T(360));
     }
     return sin(t * angle) / sin_angle;
 }
@@ -30,7 +31,8 @@ template <class T>
 /// -b is nearer a, at t = 1, exactly. The angle comes from 2 atan2(|a - b|, |a + b|), accurate for
 /// nearly equal and nearly opposite inputs. Precondition: unit a and b.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b, T t) noexcept {
+[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            T t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     if (t == T(0)) return a;
     if (t == T(1)) return near;
@@ -38,13 +40,15 @@ template <class T>
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
     const T angle = T(2) * detail::atan2(chord, sum);      // between a and near, in [0, pi/2]
     const T sin_angle = chord * sum / T(2);
-    return a * detail::sine_ratio(T(1) - t, angle, sin_angle) + near * detail::sine_ratio(t, angle, sin_angle);
+    return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
+           near * detail::sine_ratio(t, angle, sin_angle);
 }
 
 /// Normalized linear interpolation along the shorter arc: the slerp path at non-uniform speed,
 /// cheaper. Precondition: unit a and b; the sign flip keeps the sum non-zero for t in [0, 1].
 template <class T>
-[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b, T t) noexcept {
+[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            T t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     return normalize(a + (near - a) * t);
 }

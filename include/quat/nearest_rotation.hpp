@@ -26,6 +26,10 @@ struct horn_solution {
 // unconditionally convergent, quadratically at the end, a handful of sweeps for a 4x4.
 template <class T>
 [[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& input) noexcept {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (!detail::is_finite(input(i, j))) return {{nan, nan, nan, nan}, nan};
     T scale = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(input(i, j)));
@@ -34,22 +38,28 @@ template <class T>
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) m(i, j) = input(i, j) / scale;
 
-    T k[4][4] = {{m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
-                 {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
-                 {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
-                 {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
-    T v[4][4] = {{T(1), T(0), T(0), T(0)}, {T(0), T(1), T(0), T(0)}, {T(0), T(0), T(1), T(0)}, {T(0), T(0), T(0), T(1)}};
+    T k[4][4] = {
+        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
+        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
+        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
+        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
+    T v[4][4] = {{T(1), T(0), T(0), T(0)},
+                 {T(0), T(1), T(0), T(0)},
+                 {T(0), T(0), T(1), T(0)},
+                 {T(0), T(0), T(0), T(1)}};
     for (int sweep = 0; sweep < 32; ++sweep) {
         T off = T(0), total = T(0);
         for (int p = 0; p < 4; ++p)
             for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
-        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total)) break;
+        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total))
+            break;
         for (int p = 0; p < 3; ++p)
             for (int q = p + 1; q < 4; ++q) {
                 if (k[p][q] == T(0)) continue;
                 // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
                 const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
-                const T t = (theta < T(0) ? T(-1) : T(1)) / (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
+                const T t = (theta < T(0) ? T(-1) : T(1)) /
+                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
                 const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
                 for (int r = 0; r < 4; ++r) {  // k <- k J
                     const T kp = k[r][p], kq = k[r][q];
@@ -93,12 +103,11 @@ template <class T>
 /// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
 /// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
 template <class T>
-[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(const rotation_matrix<T>& m) noexcept {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (!detail::is_finite(m(i, j))) return std::nullopt;
+[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
+    const rotation_matrix<T>& m) noexcept {
     const detail::horn_solution<T> result = detail::solve_horn(m);
-    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon()))) return std::nullopt;
+    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
+        return std::nullopt;
     return to_matrix(result.rotation);
 }
 

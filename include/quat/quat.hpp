@@ -16,12 +16,12 @@
 //   and return an empty std::optional instead of NaN.
 #pragma once
 
-#include "config.hpp"
-#include "vec3.hpp"
-#include "quaternion.hpp"
-#include "rotation_matrix.hpp"
 #include "axis_angle.hpp"
+#include "config.hpp"
 #include "conversions.hpp"
 #include "euler.hpp"
 #include "interpolation.hpp"
 #include "nearest_rotation.hpp"
+#include "quaternion.hpp"
+#include "rotation_matrix.hpp"
+#include "vec3.hpp"

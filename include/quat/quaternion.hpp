@@ -16,7 +16,9 @@ struct quaternion {
     T w, x, y, z;
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
-    [[nodiscard]] static constexpr quaternion identity() noexcept { return {T(1), T(0), T(0), T(0)}; }
+    [[nodiscard]] static constexpr quaternion identity() noexcept {
+        return {T(1), T(0), T(0), T(0)};
+    }
 };
 
 using quatf = quaternion<float>;
@@ -27,17 +29,20 @@ template <class T>
     return {-q.w, -q.x, -q.y, -q.z};
 }
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
 /// Hamilton product: as rotations, a * b applies b first, then a.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
             a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
@@ -90,7 +95,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T norm(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return detail::sqrt(s);
     const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
                                 detail::max(detail::abs(q.y), detail::abs(q.z)));
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
@@ -102,7 +108,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> normalize(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return q / detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return q / detail::sqrt(s);
     const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
                                 detail::max(detail::abs(q.y), detail::abs(q.z)));
     if (!(scale > T(0)) || !detail::is_finite(scale)) return q / detail::sqrt(s);  // NaN out
@@ -112,8 +119,10 @@ template <class T>
 
 /// q / |q|, or std::nullopt when q is zero or has a non-finite component.
 template <class T>
-[[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(const quaternion<T>& q) noexcept {
-    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) || !detail::is_finite(q.z))
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(
+    const quaternion<T>& q) noexcept {
+    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
+        !detail::is_finite(q.z))
         return std::nullopt;
     if (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)) return std::nullopt;
     return normalize(q);
@@ -130,7 +139,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_inverse(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (!(s >= std::numeric_limits<T>::min()) || !(s <= std::numeric_limits<T>::max())) return std::nullopt;
+    if (!(s >= std::numeric_limits<T>::min()) || !(s <= std::numeric_limits<T>::max()))
+        return std::nullopt;
     return conjugate(q) / s;
 }
 

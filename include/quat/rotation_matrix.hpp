@@ -14,7 +14,9 @@ struct rotation_matrix {
 
     /// Element at (row, col), both in [0, 3).
     [[nodiscard]] constexpr T& operator()(int row, int col) noexcept { return elements[row][col]; }
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept { return elements[row][col]; }
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        return elements[row][col];
+    }
 
     /// The rotation by zero angle.
     [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
@@ -26,7 +28,8 @@ struct rotation_matrix {
         return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
     }
     /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
-    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0, const vec3<T>& c1,
+    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0,
+                                                                const vec3<T>& c1,
                                                                 const vec3<T>& c2) noexcept {
         return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
     }
@@ -46,23 +49,27 @@ template <class T>
 
 /// Matrix product: as rotations, a * b applies b first, then a.
 template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a,
+                                                     const rotation_matrix<T>& b) noexcept {
     rotation_matrix<T> product{};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
+        for (int j = 0; j < 3; ++j)
+            product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
     return product;
 }
 
 /// Exact element-wise equality.
 template <class T>
-[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (!(a(i, j) == b(i, j))) return false;
     return true;
 }
 template <class T>
-[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
     return !(a == b);
 }
 
@@ -92,7 +99,8 @@ template <class T>
     T worst = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = i; j < 3; ++j) {
-            const T deviation = detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
+            const T deviation =
+                detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
             if (deviation != deviation) return deviation;  // NaN in, NaN out
             if (worst < deviation) worst = deviation;
         }

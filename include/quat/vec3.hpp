@@ -72,7 +72,8 @@ template <class T>
     const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
     const T s = squared_norm(v);
     // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return detail::sqrt(s);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(v / scale));
 }

@@ -21,7 +21,8 @@ public:
     template <class T>
     quaternion<T> unit_quaternion() {
         for (;;) {
-            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_), z = gauss_(engine_);
+            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_),
+                         z = gauss_(engine_);
             const double n = std::sqrt(w * w + x * x + y * y + z * z);
             if (n > 1e-3) return {T(w / n), T(x / n), T(y / n), T(z / n)};
         }
@@ -70,7 +71,8 @@ T max_difference(const vec3<T>& a, const vec3<T>& b) {
 /// Largest absolute component difference of two quaternions (sign-sensitive).
 template <class T>
 T max_difference(const quaternion<T>& a, const quaternion<T>& b) {
-    return std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+    return std::max(
+        {std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
 
 }  // namespace quat::test

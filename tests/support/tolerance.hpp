@@ -16,9 +16,9 @@ struct tolerance {
     static constexpr T conversion = 8 * eps<T>;         // one conversion between representations
     static constexpr T round_trip = 16 * eps<T>;        // two conversions, as rotation angle (rad)
     static constexpr T euler_round_trip = 32 * eps<T>;  // Euler -> quaternion -> Euler -> rotation
-    static constexpr T slerp_angle = 16 * eps<T>;       // angle of slerp(a, b, t) vs t * angle(a, b)
-    static constexpr T unit_norm = 4 * eps<T>;          // |q| - 1 of a normalized result
-    static constexpr T glm = 64 * eps<T>;               // against GLM, which rounds differently
+    static constexpr T slerp_angle = 16 * eps<T>;  // angle of slerp(a, b, t) vs t * angle(a, b)
+    static constexpr T unit_norm = 4 * eps<T>;     // |q| - 1 of a normalized result
+    static constexpr T glm = 64 * eps<T>;          // against GLM, which rounds differently
     static constexpr T constexpr_vs_runtime = 8 * eps<T>;  // compile-time math against <cmath>
 };
 

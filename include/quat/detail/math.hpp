@@ -14,7 +14,9 @@ namespace quat::detail {
 
 /// True while the caller is being constant-evaluated. The builtin exists in GCC >= 9, Clang >= 9
 /// and MSVC >= 19.25 in every language mode, which lets C++17 code use <cmath> at run time.
-[[nodiscard]] constexpr bool constant_evaluated() noexcept { return __builtin_is_constant_evaluated(); }
+[[nodiscard]] constexpr bool constant_evaluated() noexcept {
+    return __builtin_is_constant_evaluated();
+}
 
 namespace compile_time {
 
@@ -33,10 +35,22 @@ inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
     // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
     real scale = 1;
     constexpr real big = 18446744073709551616.0L;  // 2^64
-    while (x >= big) { x /= big; scale *= 4294967296.0L; }
-    while (x < 1 / big) { x *= big; scale /= 4294967296.0L; }
-    while (x >= 4) { x /= 4; scale *= 2; }
-    while (x < 1) { x *= 4; scale /= 2; }
+    while (x >= big) {
+        x /= big;
+        scale *= 4294967296.0L;
+    }
+    while (x < 1 / big) {
+        x *= big;
+        scale /= 4294967296.0L;
+    }
+    while (x >= 4) {
+        x /= 4;
+        scale *= 2;
+    }
+    while (x < 1) {
+        x *= 4;
+        scale /= 2;
+    }
     real y = (x + 1) / 2;
     for (int i = 0; i < 64; ++i) {
         const real next = (y + x / y) / 2;
@@ -70,17 +84,23 @@ struct sine_cosine {
     real sin, cos;
 };
 [[nodiscard]] constexpr sine_cosine sin_cos(real x) noexcept {
-    if (is_nan(x) || x - x != 0) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (is_nan(x) || x - x != 0)
+        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
     const real quotient = x / (pi / 2);
-    if (quotient > 9e15L || quotient < -9e15L) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (quotient > 9e15L || quotient < -9e15L)
+        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
     const long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
     const real r = (x - static_cast<real>(k) * half_pi_head) - static_cast<real>(k) * half_pi_tail;
     const real s = sin_kernel(r), c = cos_kernel(r);
     switch (((k % 4) + 4) % 4) {
-        case 0: return {s, c};
-        case 1: return {c, -s};
-        case 2: return {-s, -c};
-        default: return {-c, s};
+        case 0:
+            return {s, c};
+        case 1:
+            return {c, -s};
+        case 2:
+            return {-s, -c};
+        default:
+            return {-c, s};
     }
 }
 
@@ -181,6 +201,17 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept {
     return x == x && abs(x) <= std::numeric_limits<T>::max();
+}
+
+/// sqrt(a^2 + b^2) without overflow or underflow: one extra comparison on the common path.
+template <class T>
+[[nodiscard]] constexpr T hypot(T a, T b) noexcept {
+    const T s = a * a + b * b;
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return sqrt(s);
+    const T scale = abs(a) < abs(b) ? abs(b) : abs(a);
+    if (!(scale > T(0)) || !is_finite(scale)) return sqrt(s);  // 0, Inf or NaN
+    const T p = a / scale, q = b / scale;
+    return scale * sqrt(p * p + q * q);
 }
 
 /// pi in the scalar type T.

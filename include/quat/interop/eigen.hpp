@@ -1,0 +1,57 @@
+// Opt-in conversions between quat and Eigen (not included by quat.hpp; needs Eigen's headers).
+// Eigen::Quaternion is Hamilton with q v q* like quat, so values carry over unchanged; only the
+// layout differs (coeffs() is x, y, z, w; the constructor takes w, x, y, z).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "../quaternion.hpp"
+#include "../rotation_matrix.hpp"
+#include "../vec3.hpp"
+
+namespace quat {
+
+/// The same quaternion as Eigen::Quaternion (Eigen's constructor order is w, x, y, z).
+template <class T>
+[[nodiscard]] Eigen::Quaternion<T> to_eigen(const quaternion<T>& q) {
+    return Eigen::Quaternion<T>(q.w, q.x, q.y, q.z);
+}
+
+/// The same quaternion from an Eigen::Quaternion, read through w(), x(), y(), z().
+template <class T, int Options>
+[[nodiscard]] quaternion<T> from_eigen(const Eigen::Quaternion<T, Options>& q) {
+    return {q.w(), q.x(), q.y(), q.z()};
+}
+
+/// The same matrix as Eigen::Matrix3: element (row, col) to (row, col), whatever Eigen's storage order.
+template <class T>
+[[nodiscard]] Eigen::Matrix<T, 3, 3> to_eigen(const rotation_matrix<T>& m) {
+    Eigen::Matrix<T, 3, 3> out;
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same matrix from a 3x3 Eigen matrix (row- or column-major).
+template <class T, int Options, int MaxRows, int MaxCols>
+[[nodiscard]] rotation_matrix<T> from_eigen(const Eigen::Matrix<T, 3, 3, Options, MaxRows, MaxCols>& m) {
+    rotation_matrix<T> out{};
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same vector as Eigen::Vector3.
+template <class T>
+[[nodiscard]] Eigen::Matrix<T, 3, 1> to_eigen(const vec3<T>& v) {
+    return Eigen::Matrix<T, 3, 1>(v.x, v.y, v.z);
+}
+
+/// The same vector from an Eigen 3-vector.
+template <class T, int Options, int MaxRows, int MaxCols>
+[[nodiscard]] vec3<T> from_eigen(const Eigen::Matrix<T, 3, 1, Options, MaxRows, MaxCols>& v) {
+    return {v.x(), v.y(), v.z()};
+}
+
+}  // namespace quat
