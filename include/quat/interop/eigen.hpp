@@ -35,7 +35,8 @@ template <class T>
 
 /// The same matrix from a 3x3 Eigen matrix (row- or column-major).
 template <class T, int Options, int MaxRows, int MaxCols>
-[[nodiscard]] rotation_matrix<T> from_eigen(const Eigen::Matrix<T, 3, 3, Options, MaxRows, MaxCols>& m) {
+[[nodiscard]] rotation_matrix<T> from_eigen(
+    const Eigen::Matrix<T, 3, 3, Options, MaxRows, MaxCols>& m) {
     rotation_matrix<T> out{};
     for (int row = 0; row < 3; ++row)
         for (int col = 0; col < 3; ++col) out(row, col) = m(row, col);

@@ -1,0 +1,86 @@
+// quat/interop/glm.hpp and quat/interop/eigen.hpp: conversions keep every value, and the converted
+// objects rotate, multiply and convert to matrices exactly as quat's do.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <quat/interop/eigen.hpp>
+#include <quat/interop/glm.hpp>
+#include <quat/quat.hpp>
+
+#include "support/catch.hpp"
+#include "support/random.hpp"
+#include "support/tolerance.hpp"
+
+using quat::quaternion;
+using quat::rotation_matrix;
+using quat::vec3;
+using quat::test::max_difference;
+using quat::test::tolerance;
+
+TEMPLATE_TEST_CASE("GLM round trips are exact and keep the meaning of w, x, y, z", "[interop][glm]",
+                   float, double) {
+    quat::test::random_rotations random;
+    for (int n = 0; n < 1000; ++n) {
+        const quaternion<TestType> q = random.unit_quaternion<TestType>();
+        const vec3<TestType> v = random.vector<TestType>();
+        const rotation_matrix<TestType> m = quat::to_matrix(q);
+        CHECK(quat::from_glm(quat::to_glm(q)) == q);
+        CHECK(quat::from_glm(quat::to_glm(m)) == m);
+        CHECK(quat::from_glm(quat::to_glm(v)) == v);
+        const glm::qua<TestType> g = quat::to_glm(q);
+        CHECK(g.w == q.w);
+        CHECK(g.x == q.x);
+        // The converted objects act alike.
+        CHECK(max_difference(quat::from_glm(g * quat::to_glm(v)), quat::rotate(q, v)) <=
+              tolerance<TestType>::glm * (1 + quat::norm(v)));
+        CHECK(max_difference(quat::from_glm(quat::to_glm(m) * quat::to_glm(v)),
+                             quat::rotate(m, v)) <= tolerance<TestType>::glm * (1 + quat::norm(v)));
+        CHECK(max_difference(quat::from_glm(glm::mat3_cast(g)), m) <= tolerance<TestType>::glm);
+        const quaternion<TestType> p = random.unit_quaternion<TestType>();
+        CHECK(max_difference(quat::from_glm(g * quat::to_glm(p)), q * p) <=
+              tolerance<TestType>::glm);
+    }
+}
+
+TEMPLATE_TEST_CASE("Eigen round trips are exact and keep the meaning of w, x, y, z",
+                   "[interop][eigen]", float, double) {
+    quat::test::random_rotations random;
+    for (int n = 0; n < 1000; ++n) {
+        const quaternion<TestType> q = random.unit_quaternion<TestType>();
+        const vec3<TestType> v = random.vector<TestType>();
+        const rotation_matrix<TestType> m = quat::to_matrix(q);
+        CHECK(quat::from_eigen(quat::to_eigen(q)) == q);
+        CHECK(quat::from_eigen(quat::to_eigen(m)) == m);
+        CHECK(quat::from_eigen(quat::to_eigen(v)) == v);
+        const Eigen::Quaternion<TestType> e = quat::to_eigen(q);
+        CHECK(e.coeffs()(3) == q.w);  // Eigen stores w last
+        CHECK(e.coeffs()(0) == q.x);
+        CHECK(max_difference(quat::from_eigen(Eigen::Matrix<TestType, 3, 1>(e * quat::to_eigen(v))),
+                             quat::rotate(q, v)) <= tolerance<TestType>::glm * (1 + quat::norm(v)));
+        CHECK(max_difference(quat::from_eigen(Eigen::Matrix<TestType, 3, 1>(quat::to_eigen(m) *
+                                                                            quat::to_eigen(v))),
+                             quat::rotate(m, v)) <= tolerance<TestType>::glm * (1 + quat::norm(v)));
+        CHECK(max_difference(quat::from_eigen(Eigen::Matrix<TestType, 3, 3>(e.toRotationMatrix())),
+                             m) <= tolerance<TestType>::glm);
+        const quaternion<TestType> p = random.unit_quaternion<TestType>();
+        CHECK(max_difference(quat::from_eigen(Eigen::Quaternion<TestType>(e * quat::to_eigen(p))),
+                             q * p) <= tolerance<TestType>::glm);
+    }
+}
+
+TEST_CASE("from_eigen reads row-major Eigen matrices by element, not by memory",
+          "[interop][eigen]") {
+    Eigen::Matrix<double, 3, 3, Eigen::RowMajor> row_major;
+    row_major << 1, 2, 3, 4, 5, 6, 7, 8, 9;
+    const rotation_matrix<double> m = quat::from_eigen(row_major);
+    CHECK(m(0, 1) == 2);
+    CHECK(m(1, 0) == 4);
+    CHECK(m(2, 2) == 9);
+}
+
+TEST_CASE("to_glm puts element (row, col) into GLM's column-major m[col][row]", "[interop][glm]") {
+    const rotation_matrix<double> m{{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}}};
+    const glm::dmat3 g = quat::to_glm(m);
+    CHECK(g[0][1] == 4);  // column 0, row 1
+    CHECK(g[1][0] == 2);
+    CHECK(g[2][2] == 9);
+}
