@@ -16,7 +16,7 @@ TEST_CASE("the README example works as written", "[readme]") {
     quatd halfway = slerp(quatd::identity(), q, 0.5);   // 45° about z
 
     rotation_matrix<double> drifted = to_matrix(q);
-    drifted(0, 1) += 1e-3;                                  // no longer orthogonal
+    drifted(0, 1) += 1e-3;  // no longer orthogonal
     rotation_matrix<double> repaired = nearest_rotation(drifted);
     std::optional<quatd> checked = try_to_quaternion(drifted);  // empty: not a rotation
     // --- README end
