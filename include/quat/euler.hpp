@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "axis_angle.hpp"
+#include "config.hpp"
 #include "conversions.hpp"
 #include "detail/math.hpp"
 #include "quaternion.hpp"
@@ -29,8 +30,14 @@ struct euler {
     static constexpr quat::frame rotation_frame = F;    ///< for generic code
 
     /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
-    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return angles[i]; }
-    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return angles[i]; }
+    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept {
+        QUAT_ASSERT(i < 3, "Euler angle index out of range");
+        return angles[i];
+    }
+    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept {
+        QUAT_ASSERT(i < 3, "Euler angle index out of range");
+        return angles[i];
+    }
 };
 
 /// Result of extract_euler: the angles, and whether the rotation is at gimbal lock, where only the

@@ -1,6 +1,7 @@
 // 3x3 rotation matrices acting on column vectors.
 #pragma once
 
+#include "config.hpp"
 #include "detail/math.hpp"
 #include "vec3.hpp"
 
@@ -13,8 +14,12 @@ struct rotation_matrix {
     T elements[3][3];
 
     /// Element at (row, col), both in [0, 3).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept { return elements[row][col]; }
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
+        return elements[row][col];
+    }
     [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
         return elements[row][col];
     }
 
