@@ -43,20 +43,9 @@
 // - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
 //   and return an empty std::optional instead of NaN.
 
-// ---- begin quat/config.hpp ----
-// quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
+// ---- begin quat/axis_angle.hpp ----
+// Rotations given as a unit axis and an angle.
 
-#define QUAT_VERSION_MAJOR 1
-#define QUAT_VERSION_MINOR 0
-#define QUAT_VERSION_PATCH 0
-
-/// Precondition check used throughout quat. Defaults to assert(), so release builds pay nothing;
-/// define QUAT_ASSERT(cond, msg) before including quat to throw, log or abort instead.
-#ifndef QUAT_ASSERT
-#include <cassert>
-#define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
-#endif
-// ---- end quat/config.hpp ----
 // ---- begin quat/vec3.hpp ----
 // 3D vectors: the points and axes that rotations act on.
 
@@ -78,7 +67,9 @@ namespace quat::detail {
 
 /// True while the caller is being constant-evaluated. The builtin exists in GCC >= 9, Clang >= 9
 /// and MSVC >= 19.25 in every language mode, which lets C++17 code use <cmath> at run time.
-[[nodiscard]] constexpr bool constant_evaluated() noexcept { return __builtin_is_constant_evaluated(); }
+[[nodiscard]] constexpr bool constant_evaluated() noexcept {
+    return __builtin_is_constant_evaluated();
+}
 
 namespace compile_time {
 
@@ -97,10 +88,22 @@ inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
     // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
     real scale = 1;
     constexpr real big = 18446744073709551616.0L;  // 2^64
-    while (x >= big) { x /= big; scale *= 4294967296.0L; }
-    while (x < 1 / big) { x *= big; scale /= 4294967296.0L; }
-    while (x >= 4) { x /= 4; scale *= 2; }
-    while (x < 1) { x *= 4; scale /= 2; }
+    while (x >= big) {
+        x /= big;
+        scale *= 4294967296.0L;
+    }
+    while (x < 1 / big) {
+        x *= big;
+        scale /= 4294967296.0L;
+    }
+    while (x >= 4) {
+        x /= 4;
+        scale *= 2;
+    }
+    while (x < 1) {
+        x *= 4;
+        scale /= 2;
+    }
     real y = (x + 1) / 2;
     for (int i = 0; i < 64; ++i) {
         const real next = (y + x / y) / 2;
@@ -134,17 +137,23 @@ struct sine_cosine {
     real sin, cos;
 };
 [[nodiscard]] constexpr sine_cosine sin_cos(real x) noexcept {
-    if (is_nan(x) || x - x != 0) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (is_nan(x) || x - x != 0)
+        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
     const real quotient = x / (pi / 2);
-    if (quotient > 9e15L || quotient < -9e15L) return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (quotient > 9e15L || quotient < -9e15L)
+        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
     const long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
     const real r = (x - static_cast<real>(k) * half_pi_head) - static_cast<real>(k) * half_pi_tail;
     const real s = sin_kernel(r), c = cos_kernel(r);
     switch (((k % 4) + 4) % 4) {
-        case 0: return {s, c};
-        case 1: return {c, -s};
-        case 2: return {-s, -c};
-        default: return {-c, s};
+        case 0:
+            return {s, c};
+        case 1:
+            return {c, -s};
+        case 2:
+            return {-s, -c};
+        default:
+            return {-c, s};
     }
 }
 
@@ -247,6 +256,17 @@ template <class T>
     return x == x && abs(x) <= std::numeric_limits<T>::max();
 }
 
+/// sqrt(a^2 + b^2) without overflow or underflow: one extra comparison on the common path.
+template <class T>
+[[nodiscard]] constexpr T hypot(T a, T b) noexcept {
+    const T s = a * a + b * b;
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return sqrt(s);
+    const T scale = abs(a) < abs(b) ? abs(b) : abs(a);
+    if (!(scale > T(0)) || !is_finite(scale)) return sqrt(s);  // 0, Inf or NaN
+    const T p = a / scale, q = b / scale;
+    return scale * sqrt(p * p + q * q);
+}
+
 /// pi in the scalar type T.
 template <class T>
 inline constexpr T pi = T(3.14159265358979323846264338327950288L);
@@ -327,7 +347,8 @@ template <class T>
     const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
     const T s = squared_norm(v);
     // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return detail::sqrt(s);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(v / scale));
 }
@@ -349,6 +370,40 @@ template <class T>
 
 }  // namespace quat
 // ---- end quat/vec3.hpp ----
+
+namespace quat {
+
+/// Rotation by `angle` radians, counter-clockwise about the unit vector `axis` seen from its tip.
+/// Conversions from it expect a unit axis; try_to_quaternion normalizes and checks untrusted input.
+template <class T>
+struct axis_angle {
+    vec3<T> axis;
+    T angle;
+};
+
+}  // namespace quat
+// ---- end quat/axis_angle.hpp ----
+// ---- begin quat/config.hpp ----
+// quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
+
+#define QUAT_VERSION_MAJOR 1
+#define QUAT_VERSION_MINOR 0
+#define QUAT_VERSION_PATCH 0
+
+/// Precondition check used throughout quat. Defaults to assert(), so release builds pay nothing;
+/// define QUAT_ASSERT(cond, msg) before including quat to throw, log or abort instead.
+#ifndef QUAT_ASSERT
+#include <cassert>
+#define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
+#endif
+// ---- end quat/config.hpp ----
+// ---- begin quat/conversions.hpp ----
+// Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
+// Euler-angle conversions live in euler.hpp.
+
+#include <limits>
+#include <optional>
+
 // ---- begin quat/quaternion.hpp ----
 // Quaternions w + xi + yj + zk (scalar first, Hamilton's ij = k) and their algebra.
 
@@ -364,7 +419,9 @@ struct quaternion {
     T w, x, y, z;
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
-    [[nodiscard]] static constexpr quaternion identity() noexcept { return {T(1), T(0), T(0), T(0)}; }
+    [[nodiscard]] static constexpr quaternion identity() noexcept {
+        return {T(1), T(0), T(0), T(0)};
+    }
 };
 
 using quatf = quaternion<float>;
@@ -375,17 +432,20 @@ template <class T>
     return {-q.w, -q.x, -q.y, -q.z};
 }
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
 /// Hamilton product: as rotations, a * b applies b first, then a.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& a, const quaternion<T>& b) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& a,
+                                                const quaternion<T>& b) noexcept {
     return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
             a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
@@ -438,7 +498,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T norm(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return detail::sqrt(s);
     const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
                                 detail::max(detail::abs(q.y), detail::abs(q.z)));
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
@@ -450,7 +511,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> normalize(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return q / detail::sqrt(s);
+    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
+        return q / detail::sqrt(s);
     const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
                                 detail::max(detail::abs(q.y), detail::abs(q.z)));
     if (!(scale > T(0)) || !detail::is_finite(scale)) return q / detail::sqrt(s);  // NaN out
@@ -460,8 +522,10 @@ template <class T>
 
 /// q / |q|, or std::nullopt when q is zero or has a non-finite component.
 template <class T>
-[[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(const quaternion<T>& q) noexcept {
-    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) || !detail::is_finite(q.z))
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(
+    const quaternion<T>& q) noexcept {
+    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
+        !detail::is_finite(q.z))
         return std::nullopt;
     if (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)) return std::nullopt;
     return normalize(q);
@@ -478,7 +542,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_inverse(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (!(s >= std::numeric_limits<T>::min()) || !(s <= std::numeric_limits<T>::max())) return std::nullopt;
+    if (!(s >= std::numeric_limits<T>::min()) || !(s <= std::numeric_limits<T>::max()))
+        return std::nullopt;
     return conjugate(q) / s;
 }
 
@@ -493,11 +558,11 @@ template <class T>
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
-/// Uses 2 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
+/// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
 template <class T>
 [[nodiscard]] constexpr T angle_between(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    return T(2) * detail::atan2(norm(a - near), norm(a + near));
+    return T(4) * detail::atan2(norm(a - near), norm(a + near));
 }
 
 }  // namespace quat
@@ -515,8 +580,14 @@ struct rotation_matrix {
     T elements[3][3];
 
     /// Element at (row, col), both in [0, 3).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept { return elements[row][col]; }
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept { return elements[row][col]; }
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
+        return elements[row][col];
+    }
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
+        return elements[row][col];
+    }
 
     /// The rotation by zero angle.
     [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
@@ -528,7 +599,8 @@ struct rotation_matrix {
         return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
     }
     /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
-    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0, const vec3<T>& c1,
+    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0,
+                                                                const vec3<T>& c1,
                                                                 const vec3<T>& c2) noexcept {
         return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
     }
@@ -548,23 +620,27 @@ template <class T>
 
 /// Matrix product: as rotations, a * b applies b first, then a.
 template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a,
+                                                     const rotation_matrix<T>& b) noexcept {
     rotation_matrix<T> product{};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
+        for (int j = 0; j < 3; ++j)
+            product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
     return product;
 }
 
 /// Exact element-wise equality.
 template <class T>
-[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (!(a(i, j) == b(i, j))) return false;
     return true;
 }
 template <class T>
-[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
     return !(a == b);
 }
 
@@ -594,7 +670,8 @@ template <class T>
     T worst = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = i; j < 3; ++j) {
-            const T deviation = detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
+            const T deviation =
+                detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
             if (deviation != deviation) return deviation;  // NaN in, NaN out
             if (worst < deviation) worst = deviation;
         }
@@ -603,29 +680,6 @@ template <class T>
 
 }  // namespace quat
 // ---- end quat/rotation_matrix.hpp ----
-// ---- begin quat/axis_angle.hpp ----
-// Rotations given as a unit axis and an angle.
-
-
-namespace quat {
-
-/// Rotation by `angle` radians, counter-clockwise about the unit vector `axis` seen from its tip.
-/// Conversions from it expect a unit axis; try_to_quaternion normalizes and checks untrusted input.
-template <class T>
-struct axis_angle {
-    vec3<T> axis;
-    T angle;
-};
-
-}  // namespace quat
-// ---- end quat/axis_angle.hpp ----
-// ---- begin quat/conversions.hpp ----
-// Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
-// Euler-angle conversions live in euler.hpp.
-
-#include <limits>
-#include <optional>
-
 
 namespace quat {
 
@@ -693,7 +747,8 @@ template <class T>
 /// to_quaternion of the rotation about normalize(axis), or std::nullopt when the axis is zero or
 /// any input is non-finite.
 template <class T>
-[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(const axis_angle<T>& rotation) noexcept {
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(
+    const axis_angle<T>& rotation) noexcept {
     const std::optional<vec3<T>> axis = try_normalize(rotation.axis);
     if (!axis || !detail::is_finite(rotation.angle)) return std::nullopt;
     return to_quaternion(axis_angle<T>{*axis, rotation.angle});
@@ -725,13 +780,16 @@ template <class T>
     const T xk = a.x * k, yk = a.y * k, zk = a.z * k;
     const T xs = a.x * s, ys = a.y * s, zs = a.z * s;
     const T xy = a.x * yk, xz = a.x * zk, yz = a.y * zk;
-    return {{{c + a.x * xk, xy - zs, xz + ys}, {xy + zs, c + a.y * yk, yz - xs}, {xz - ys, yz + xs, c + a.z * zk}}};
+    return {{{c + a.x * xk, xy - zs, xz + ys},
+             {xy + zs, c + a.y * yk, yz - xs},
+             {xz - ys, yz + xs, c + a.z * zk}}};
 }
 
 /// Exponential map: the unit quaternion of the rotation by |v| radians about v / |v|.
 /// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> from_rotation_vector(const vec3<T>& rotation_vector) noexcept {
+[[nodiscard]] constexpr quaternion<T> from_rotation_vector(
+    const vec3<T>& rotation_vector) noexcept {
     const T angle = norm(rotation_vector);
     const T angle2 = angle * angle;
     T w{}, scale{};  // scale = sin(angle / 2) / angle
@@ -757,9 +815,10 @@ template <class T>
     if (p.w > T(0) && ratio * ratio * ratio * ratio < std::numeric_limits<T>::epsilon()) {
         // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
         const T r2 = ratio * ratio;
-        return u * ((T(2) / p.w) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
+        return (u / p.w) * (T(2) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
     }
-    return u * (T(2) * detail::atan2(s, p.w) / s);
+    // Dividing u first keeps 1/s from overflowing for a subnormal-scaled q.
+    return (u / s) * (T(2) * detail::atan2(s, p.w));
 }
 
 }  // namespace quat
@@ -790,8 +849,14 @@ struct euler {
     static constexpr quat::frame rotation_frame = F;    ///< for generic code
 
     /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
-    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return angles[i]; }
-    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return angles[i]; }
+    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept {
+        QUAT_ASSERT(i < 3, "Euler angle index out of range");
+        return angles[i];
+    }
+    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept {
+        QUAT_ASSERT(i < 3, "Euler angle index out of range");
+        return angles[i];
+    }
 };
 
 /// Result of extract_euler: the angles, and whether the rotation is at gimbal lock, where only the
@@ -809,8 +874,9 @@ struct axis_triple {
 };
 
 [[nodiscard]] constexpr axis_triple axes_of(sequence s) noexcept {
-    constexpr axis_triple table[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
-                                     {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
+    constexpr axis_triple table[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0},
+                                     {2, 0, 1}, {2, 1, 0}, {0, 1, 0}, {0, 2, 0},
+                                     {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
     return table[static_cast<int>(s)];
 }
 
@@ -836,7 +902,8 @@ template <class T>
 template <class T, sequence S, frame F>
 [[nodiscard]] constexpr quaternion<T> to_quaternion(const euler<T, S, F>& e) noexcept {
     constexpr detail::axis_triple order = detail::product_order<S, F>();
-    const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1], last = F == frame::intrinsic ? e[2] : e[0];
+    const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1],
+            last = F == frame::intrinsic ? e[2] : e[0];
     const T c0 = detail::cos(first / T(2)), s0 = detail::sin(first / T(2));
     const T c1 = detail::cos(middle / T(2)), s1 = detail::sin(middle / T(2));
     const T c2 = detail::cos(last / T(2)), s2 = detail::sin(last / T(2));
@@ -862,7 +929,8 @@ template <class T, sequence S, frame F>
 template <class T, sequence S, frame F>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const euler<T, S, F>& e) noexcept {
     constexpr detail::axis_triple order = detail::product_order<S, F>();
-    const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1], F == frame::intrinsic ? e[2] : e[0]};
+    const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1],
+                        F == frame::intrinsic ? e[2] : e[0]};
     const int axis[3] = {order.first, order.second, order.third};
     rotation_matrix<T> r = rotation_matrix<T>::identity();
     for (int n = 0; n < 3; ++n) {
@@ -899,7 +967,7 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const T b = proper ? v[i] : v[i] - parity * v[k];
     const T c = proper ? v[j] : v[j] + q.w;
     const T d = proper ? parity * v[k] : parity * v[k] + v[i];
-    const T cos_part = detail::sqrt(a * a + b * b), sin_part = detail::sqrt(c * c + d * d);
+    const T cos_part = detail::hypot(a, b), sin_part = detail::hypot(c, d);
     T beta = T(2) * detail::atan2(sin_part, cos_part);
     const T half_sum = detail::atan2(b, a), half_difference = detail::atan2(d, c);
     T alpha{}, gamma{};
@@ -982,7 +1050,8 @@ template <class T>
     if (a2 * a2 < std::numeric_limits<T>::epsilon()) {
         // sin(tx)/sin(x) = t (1 - (t^2 - 1) x^2 / 6 + ...), next term below epsilon^1.5
         const T t2 = t * t;
-        return t * (T(1) - (t2 - T(1)) * a2 / T(6) + (T(3) * t2 * t2 - T(10) * t2 + T(7)) * a2 * a2 / T(360));
+        return t * (T(1) - (t2 - T(1)) * a2 / T(6) +
+                    (T(3) * t2 * t2 - T(10) * t2 + T(7)) * a2 * a2 / T(360));
     }
     return sin(t * angle) / sin_angle;
 }
@@ -994,7 +1063,8 @@ template <class T>
 /// -b is nearer a, at t = 1, exactly. The angle comes from 2 atan2(|a - b|, |a + b|), accurate for
 /// nearly equal and nearly opposite inputs. Precondition: unit a and b.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b, T t) noexcept {
+[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            T t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     if (t == T(0)) return a;
     if (t == T(1)) return near;
@@ -1002,13 +1072,15 @@ template <class T>
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
     const T angle = T(2) * detail::atan2(chord, sum);      // between a and near, in [0, pi/2]
     const T sin_angle = chord * sum / T(2);
-    return a * detail::sine_ratio(T(1) - t, angle, sin_angle) + near * detail::sine_ratio(t, angle, sin_angle);
+    return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
+           near * detail::sine_ratio(t, angle, sin_angle);
 }
 
 /// Normalized linear interpolation along the shorter arc: the slerp path at non-uniform speed,
 /// cheaper. Precondition: unit a and b; the sign flip keeps the sum non-zero for t in [0, 1].
 template <class T>
-[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b, T t) noexcept {
+[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            T t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     return normalize(a + (near - a) * t);
 }
@@ -1039,6 +1111,10 @@ struct horn_solution {
 // unconditionally convergent, quadratically at the end, a handful of sweeps for a 4x4.
 template <class T>
 [[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& input) noexcept {
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (!detail::is_finite(input(i, j))) return {{nan, nan, nan, nan}, nan};
     T scale = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(input(i, j)));
@@ -1047,22 +1123,28 @@ template <class T>
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) m(i, j) = input(i, j) / scale;
 
-    T k[4][4] = {{m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
-                 {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
-                 {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
-                 {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
-    T v[4][4] = {{T(1), T(0), T(0), T(0)}, {T(0), T(1), T(0), T(0)}, {T(0), T(0), T(1), T(0)}, {T(0), T(0), T(0), T(1)}};
+    T k[4][4] = {
+        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
+        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
+        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
+        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
+    T v[4][4] = {{T(1), T(0), T(0), T(0)},
+                 {T(0), T(1), T(0), T(0)},
+                 {T(0), T(0), T(1), T(0)},
+                 {T(0), T(0), T(0), T(1)}};
     for (int sweep = 0; sweep < 32; ++sweep) {
         T off = T(0), total = T(0);
         for (int p = 0; p < 4; ++p)
             for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
-        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total)) break;
+        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total))
+            break;
         for (int p = 0; p < 3; ++p)
             for (int q = p + 1; q < 4; ++q) {
                 if (k[p][q] == T(0)) continue;
                 // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
                 const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
-                const T t = (theta < T(0) ? T(-1) : T(1)) / (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
+                const T t = (theta < T(0) ? T(-1) : T(1)) /
+                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
                 const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
                 for (int r = 0; r < 4; ++r) {  // k <- k J
                     const T kp = k[r][p], kq = k[r][q];
@@ -1106,12 +1188,11 @@ template <class T>
 /// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
 /// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
 template <class T>
-[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(const rotation_matrix<T>& m) noexcept {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (!detail::is_finite(m(i, j))) return std::nullopt;
+[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
+    const rotation_matrix<T>& m) noexcept {
     const detail::horn_solution<T> result = detail::solve_horn(m);
-    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon()))) return std::nullopt;
+    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
+        return std::nullopt;
     return to_matrix(result.rotation);
 }
 
