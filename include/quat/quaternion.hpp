@@ -24,15 +24,18 @@ struct quaternion {
 using quatf = quaternion<float>;
 using quatd = quaternion<double>;
 
+/// Negation; -q is the same rotation as q.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& q) noexcept {
     return {-q.w, -q.x, -q.y, -q.z};
 }
+/// Component-wise sum.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a,
                                                 const quaternion<T>& b) noexcept {
     return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
 }
+/// Component-wise difference.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a,
                                                 const quaternion<T>& b) noexcept {
@@ -48,10 +51,12 @@ template <class T>
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
             a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& q, T s) noexcept {
     return {q.w * s, q.x * s, q.y * s, q.z * s};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator*(T s, const quaternion<T>& q) noexcept {
     return q * s;
@@ -68,6 +73,7 @@ template <class T>
 [[nodiscard]] constexpr bool operator==(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return !(a == b);

@@ -72,6 +72,7 @@ template <class T>
             if (!(a(i, j) == b(i, j))) return false;
     return true;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
                                         const rotation_matrix<T>& b) noexcept {

@@ -13,22 +13,27 @@ struct vec3 {
     T x, y, z;
 };
 
+/// Negation.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& v) noexcept {
     return {-v.x, -v.y, -v.z};
 }
+/// Component-wise sum.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator+(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
+/// Component-wise difference.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator*(const vec3<T>& v, T s) noexcept {
     return {v.x * s, v.y * s, v.z * s};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator*(T s, const vec3<T>& v) noexcept {
     return v * s;
@@ -43,6 +48,7 @@ template <class T>
 [[nodiscard]] constexpr bool operator==(const vec3<T>& a, const vec3<T>& b) noexcept {
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const vec3<T>& a, const vec3<T>& b) noexcept {
     return !(a == b);
