@@ -288,22 +288,27 @@ struct vec3 {
     T x, y, z;
 };
 
+/// Negation.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& v) noexcept {
     return {-v.x, -v.y, -v.z};
 }
+/// Component-wise sum.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator+(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
+/// Component-wise difference.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator*(const vec3<T>& v, T s) noexcept {
     return {v.x * s, v.y * s, v.z * s};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator*(T s, const vec3<T>& v) noexcept {
     return v * s;
@@ -318,6 +323,7 @@ template <class T>
 [[nodiscard]] constexpr bool operator==(const vec3<T>& a, const vec3<T>& b) noexcept {
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const vec3<T>& a, const vec3<T>& b) noexcept {
     return !(a == b);
@@ -427,15 +433,18 @@ struct quaternion {
 using quatf = quaternion<float>;
 using quatd = quaternion<double>;
 
+/// Negation; -q is the same rotation as q.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& q) noexcept {
     return {-q.w, -q.x, -q.y, -q.z};
 }
+/// Component-wise sum.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator+(const quaternion<T>& a,
                                                 const quaternion<T>& b) noexcept {
     return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
 }
+/// Component-wise difference.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& a,
                                                 const quaternion<T>& b) noexcept {
@@ -451,10 +460,12 @@ template <class T>
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
             a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& q, T s) noexcept {
     return {q.w * s, q.x * s, q.y * s, q.z * s};
 }
+/// Product with a scalar, component-wise.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator*(T s, const quaternion<T>& q) noexcept {
     return q * s;
@@ -471,6 +482,7 @@ template <class T>
 [[nodiscard]] constexpr bool operator==(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return !(a == b);
@@ -638,6 +650,7 @@ template <class T>
             if (!(a(i, j) == b(i, j))) return false;
     return true;
 }
+/// Negation of ==.
 template <class T>
 [[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
                                         const rotation_matrix<T>& b) noexcept {
