@@ -56,7 +56,13 @@ void panel(svg::document& doc, double x0, double pitch, const char* title) {
     view3d::draw_box(doc, cam, to_quaternion(ypr{{0.0, pitch, 0.0}}), {0.45, 0.3, 0.08}, {0, 0, 0},
                      1.0);
     doc.text({x0 + 220, 60}, title, 15, "middle", "#222", true);
-    const v3 a = turn_axis(ypr{{0.0, pitch, 0.0}}, 0), c = turn_axis(ypr{{0.0, pitch, 0.0}}, 2);
+    // Rounded to 1e-9 so that -0.00 never appears in the picture.
+    const auto tidy = [](v3 v) {
+        for (double* c : {&v.x, &v.y, &v.z}) *c = std::abs(*c) < 1e-9 ? 0.0 : *c;
+        return v;
+    };
+    const v3 a = tidy(turn_axis(ypr{{0.0, pitch, 0.0}}, 0)),
+             c = tidy(turn_axis(ypr{{0.0, pitch, 0.0}}, 2));
     char line[120];
     std::snprintf(line, sizeof line, "increasing yaw turns about (%+.2f, %+.2f, %+.2f)", a.x, a.y,
                   a.z);

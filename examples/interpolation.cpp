@@ -148,11 +148,12 @@ int main(int argc, char** argv) {
 
     double fastest_rate = 2.0;
     for (const plot::series& s : speed)
-        for (double rate : s.y) fastest_rate = std::max(fastest_rate, std::ceil(rate * 2) / 2);
+        for (double rate : s.y)
+            fastest_rate = std::max(fastest_rate, std::ceil(rate) + 1);  // room for the legend
     plot::chart chart{520,
-                      70,
+                      85,
                       440,
-                      340,
+                      330,
                       "Angular velocity over t",
                       "t",
                       "angular velocity / (total angle per unit t)",
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
                       1,
                       0,
                       fastest_rate};
-    chart.legend_top_left = true;
+    chart.legend_top_left = false;
     plot::draw(doc, chart, speed);
     expect(doc.save(out), "interpolation.svg written");
     std::printf("  wrote %s\n", out.c_str());
