@@ -132,7 +132,7 @@ struct runner {
         const int e = sizeof(T) == sizeof(float) ? 37 : 300;
         const std::string range = "1e-" + std::to_string(e) + " … 1e" + std::to_string(e);
         const auto same = scaled_quaternions<T>(g, n(100000, 3000), -e, e, true);
-        add(make("normalize", "|q| from " + range, "eps (max component)", target_normalize),
+        add(make("normalize", "\\|q\\| from " + range, "eps (max component)", target_normalize),
             [&](auto lib) { return measure_normalize<decltype(lib)>(same); });
         const auto mixed = scaled_quaternions<T>(g, n(100000, 3000), -e, e, false);
         add(make("normalize", "each component from " + range, "eps (max component)", target_normalize),
