@@ -9,8 +9,11 @@ namespace quat {
 /// Conversions from it expect a unit axis; try_to_quaternion normalizes and checks untrusted input.
 template <class T>
 struct axis_angle {
+    /// The unit axis and the angle in radians.
+    /// @{
     vec3<T> axis;
     T angle;
+    /// @}
 };
 
 }  // namespace quat

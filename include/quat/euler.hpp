@@ -24,7 +24,10 @@ enum class frame { intrinsic, extrinsic };
 /// angles of one convention never silently pass for another.
 template <class T, sequence S = sequence::zyx, frame F = frame::intrinsic>
 struct euler {
+    /// The angles in radians, in the order of the sequence's letters.
+    /// @{
     T angles[3];
+    /// @}
 
     static constexpr quat::sequence axis_sequence = S;  ///< for generic code
     static constexpr quat::frame rotation_frame = F;    ///< for generic code
@@ -34,6 +37,7 @@ struct euler {
         QUAT_ASSERT(i < 3, "Euler angle index out of range");
         return angles[i];
     }
+    /// Angle i in {0, 1, 2}, read-only.
     [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept {
         QUAT_ASSERT(i < 3, "Euler angle index out of range");
         return angles[i];
@@ -44,8 +48,8 @@ struct euler {
 /// sum or difference of the first and third angles is determined and the third angle is set to 0.
 template <class T, sequence S, frame F>
 struct euler_extraction {
-    euler<T, S, F> angles;
-    bool gimbal_lock;
+    euler<T, S, F> angles;  ///< The angles, e[2] == 0 at gimbal lock.
+    bool gimbal_lock;       ///< True when the middle angle is at its singular value.
 };
 
 namespace detail {
@@ -68,13 +72,6 @@ template <sequence S, frame F>
     constexpr axis_triple a = axes_of(S);
     if constexpr (F == frame::intrinsic) return a;
     else return {a.third, a.second, a.first};
-}
-
-template <class T>
-[[nodiscard]] constexpr T wrap_angle(T angle) noexcept {  // into [-pi, pi]
-    if (angle > pi<T>) return angle - T(2) * pi<T>;
-    if (angle < -pi<T>) return angle + T(2) * pi<T>;
-    return angle;
 }
 
 }  // namespace detail
@@ -140,39 +137,42 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const int i = order.first, j = order.second, k = 3 - i - j;
     const bool proper = order.first == order.third;
     const T parity = (j - i + 3) % 3 == 1 ? T(1) : T(-1);
-    const T v[3] = {q.x, q.y, q.z};
+    // Angles need no particular scale, but the products below must not overflow or underflow.
+    const T size = squared_norm(q), epsilon = std::numeric_limits<T>::epsilon();
+    const quaternion<T> p = size > epsilon && size < T(1) / epsilon ? q : normalize(q);
+    const T v[3] = {p.x, p.y, p.z};
     // Proper i-j-i: (w, v_i, v_j, parity v_k) = (cos(b/2) cos(s), cos(b/2) sin(s), sin(b/2) cos(d),
     // sin(b/2) sin(d)), s = (alpha + gamma)/2, d = (alpha - gamma)/2. Tait–Bryan i-j-k reduces to
     // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta + pi/2.
-    const T a = proper ? q.w : q.w - v[j];
+    const T a = proper ? p.w : p.w - v[j];
     const T b = proper ? v[i] : v[i] - parity * v[k];
-    const T c = proper ? v[j] : v[j] + q.w;
+    const T c = proper ? v[j] : v[j] + p.w;
     const T d = proper ? parity * v[k] : parity * v[k] + v[i];
-    const T cos_part = detail::hypot(a, b), sin_part = detail::hypot(c, d);
+    const T cos_part = detail::sqrt(a * a + b * b), sin_part = detail::sqrt(c * c + d * d);
     T beta = T(2) * detail::atan2(sin_part, cos_part);
-    const T half_sum = detail::atan2(b, a), half_difference = detail::atan2(d, c);
+    // alpha = s + d and gamma = s - d, each from one atan2 of a complex product, (a + ib)(c ± id),
+    // which is more accurate than adding two angles and lands in [-pi, pi] without wrapping.
     T alpha{}, gamma{};
-    const T epsilon = std::numeric_limits<T>::epsilon();
     const bool at_zero = sin_part <= epsilon * cos_part, at_pi = cos_part <= epsilon * sin_part;
     // At a lock only alpha + gamma (at zero) or alpha - gamma (at pi) is known: the angle that
     // ends up in e[2] is set to 0 (gamma for intrinsic, alpha for extrinsic, which is reversed).
     const bool zero_gamma = F == frame::intrinsic;
     if (at_zero) {
-        alpha = zero_gamma ? T(2) * half_sum : T(0);
-        gamma = zero_gamma ? T(0) : T(2) * half_sum;
+        const T sum = detail::atan2(T(2) * a * b, a * a - b * b);  // angle of (a + ib)^2
+        alpha = zero_gamma ? sum : T(0);
+        gamma = zero_gamma ? T(0) : sum;
     } else if (at_pi) {
-        alpha = zero_gamma ? T(2) * half_difference : T(0);
-        gamma = zero_gamma ? T(0) : T(-2) * half_difference;
+        const T difference = detail::atan2(T(2) * c * d, c * c - d * d);  // angle of (c + id)^2
+        alpha = zero_gamma ? difference : T(0);
+        gamma = zero_gamma ? T(0) : -difference;
     } else {
-        alpha = half_sum + half_difference;
-        gamma = half_sum - half_difference;
+        alpha = detail::atan2(a * d + b * c, a * c - b * d);
+        gamma = detail::atan2(b * c - a * d, a * c + b * d);
     }
     if (!proper) {
         beta -= detail::pi<T> / T(2);
         gamma = -parity * gamma;
     }
-    alpha = detail::wrap_angle(alpha);
-    gamma = detail::wrap_angle(gamma);
     euler<T, S, F> angles{};
     angles[0] = F == frame::intrinsic ? alpha : gamma;
     angles[1] = beta;

@@ -39,7 +39,8 @@ template <class T>
     const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
     const T angle = T(2) * detail::atan2(chord, sum);      // between a and near, in [0, pi/2]
-    const T sin_angle = chord * sum / T(2);
+    const T sin_angle =
+        detail::sin(angle);  // exactly the sine the numerators use: |result| = 1 to ~2 eps
     return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
            near * detail::sine_ratio(t, angle, sin_angle);
 }

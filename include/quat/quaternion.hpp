@@ -13,7 +13,10 @@ namespace quat {
 /// A unit quaternion represents the active rotation v -> q v q*; q and -q are the same rotation.
 template <class T>
 struct quaternion {
+    /// Scalar part w, vector part (x, y, z).
+    /// @{
     T w, x, y, z;
+    /// @}
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
     [[nodiscard]] static constexpr quaternion identity() noexcept {
@@ -21,8 +24,8 @@ struct quaternion {
     }
 };
 
-using quatf = quaternion<float>;
-using quatd = quaternion<double>;
+using quatf = quaternion<float>;   ///< Single-precision quaternion.
+using quatd = quaternion<double>;  ///< Double-precision quaternion.
 
 /// Negation; -q is the same rotation as q.
 template <class T>
@@ -151,7 +154,7 @@ template <class T>
 }
 
 /// Rotates v by the unit quaternion q: q (0, v) q*, computed as v + w t + u x t with t = 2 u x v
-/// (u the vector part), 15 multiplications instead of two Hamilton products.
+/// (u the vector part): 18 multiplications and 12 additions against 32 and 24 for two Hamilton products.
 /// Precondition: |q| = 1 (a non-unit q also scales and skews v).
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {

@@ -11,13 +11,17 @@ namespace quat {
 /// determinant +1); nearest_rotation and try_to_quaternion also accept any 3x3 matrix in it.
 template <class T>
 struct rotation_matrix {
+    /// Row-major: elements[row][col].
+    /// @{
     T elements[3][3];
+    /// @}
 
     /// Element at (row, col), both in [0, 3).
     [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
         return elements[row][col];
     }
+    /// Element at (row, col), read-only.
     [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
         QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
         return elements[row][col];

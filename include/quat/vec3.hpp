@@ -10,7 +10,10 @@ namespace quat {
 /// A 3D vector or point with public components.
 template <class T>
 struct vec3 {
+    /// Cartesian components.
+    /// @{
     T x, y, z;
+    /// @}
 };
 
 /// Negation.

@@ -203,17 +203,6 @@ template <class T>
     return x == x && abs(x) <= std::numeric_limits<T>::max();
 }
 
-/// sqrt(a^2 + b^2) without overflow or underflow: one extra comparison on the common path.
-template <class T>
-[[nodiscard]] constexpr T hypot(T a, T b) noexcept {
-    const T s = a * a + b * b;
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max()) return sqrt(s);
-    const T scale = abs(a) < abs(b) ? abs(b) : abs(a);
-    if (!(scale > T(0)) || !is_finite(scale)) return sqrt(s);  // 0, Inf or NaN
-    const T p = a / scale, q = b / scale;
-    return scale * sqrt(p * p + q * q);
-}
-
 /// pi in the scalar type T.
 template <class T>
 inline constexpr T pi = T(3.14159265358979323846264338327950288L);
