@@ -5,6 +5,7 @@
 
 #include "detail/math.hpp"
 #include "quaternion.hpp"
+#include "vec3.hpp"
 
 namespace quat {
 
@@ -27,7 +28,7 @@ template <class T>
 }  // namespace detail
 
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
-/// constant angular velocity; t outside [0, 1] extrapolates. Returns a at t = 0 and b, or -b when
+/// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns a at t = 0 and b, or -b when
 /// -b is nearer a, at t = 1, exactly. The angle comes from 2 atan2(|a - b|, |a + b|), accurate for
 /// nearly equal and nearly opposite inputs. Precondition: unit a and b.
 template <class T>
@@ -36,11 +37,21 @@ template <class T>
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     if (t == T(0)) return a;
     if (t == T(1)) return near;
+    if (t < T(0) || t > T(1)) {
+        // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
+        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
+        const quaternion<T> relative = conjugate(a) * near;
+        const vec3<T> u{relative.x, relative.y, relative.z};
+        const T s = norm(u);
+        if (!(s > T(0))) return a;
+        const T half_turn = t * detail::atan2(s, relative.w);
+        const vec3<T> v = u / s * detail::sin(half_turn);
+        return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
+    }
     const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
     const T angle = T(2) * detail::atan2(chord, sum);      // between a and near, in [0, pi/2]
-    const T sin_angle =
-        detail::sin(angle);  // exactly the sine the numerators use: |result| = 1 to ~2 eps
+    const T sin_angle = detail::sin(angle);  // the sine the numerators use: |result| - 1 < 2 eps
     return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
            near * detail::sine_ratio(t, angle, sin_angle);
 }
