@@ -1,0 +1,123 @@
+// rotate_point (latency of one rotation) and rotate_batch (throughput over n points, in and out of
+// cache), with a memcpy of the same bytes as the memory-bound floor.
+#include <cstring>
+
+#include "common.hpp"
+
+namespace bench {
+namespace {
+
+// One point rotated again and again: each rotation waits for the previous one (latency).
+template <class Lib, class Rep>
+void rotate_point(benchmark::State& state) {
+    random_source random;
+    const auto r = Rep::template make<Lib>(random.rotation());
+    auto v = Lib::make_vector(random.vector());
+    for (auto _ : state) {
+        v = Lib::rotate(r, v);
+        benchmark::DoNotOptimize(v);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+template <class T>
+std::size_t batch_bytes(std::size_t n) {
+    return 2 * n * 3 * sizeof(T);  // read and written once each
+}
+
+template <class Lib, class Rep>
+void rotate_batch(benchmark::State& state, long long count) {
+    using T = typename Lib::scalar;
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    const auto r = Rep::template make<Lib>(random.rotation());
+    std::vector<typename Lib::vector> in(n), out(n);
+    for (auto& v : in) v = Lib::make_vector(random.vector());
+    for (auto _ : state) {
+        Lib::rotate_batch(r, in.data(), out.data(), n);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(batch_bytes<T>(n)));
+}
+
+// quat's struct-of-arrays overload over the same points.
+template <class T>
+void rotate_batch_soa(benchmark::State& state, long long count) {
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    const quat::quaternion<T> q = lib_quat<T>::make_quaternion(random.rotation());
+    std::vector<T> x(n), y(n), z(n), ox(n), oy(n), oz(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto v = random.vector();
+        x[i] = T(v.x), y[i] = T(v.y), z[i] = T(v.z);
+    }
+    for (auto _ : state) {
+        quat::rotate(q, quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
+                     quat::soa_points<T>{ox.data(), oy.data(), oz.data(), n});
+        benchmark::DoNotOptimize(ox.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(batch_bytes<T>(n)));
+}
+
+// Copying the same bytes: no rotation can be faster once the points are out of cache.
+template <class T>
+void rotate_batch_memcpy(benchmark::State& state, long long count) {
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    std::vector<T> in(3 * n), out(3 * n);
+    for (auto& v : in) v = T(random.uniform(-1, 1));
+    for (auto _ : state) {
+        std::memcpy(out.data(), in.data(), 3 * n * sizeof(T));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(batch_bytes<T>(n)));
+}
+
+template <class T>
+const std::vector<long long>& batch_sizes() {
+    // 64 ... 4M points in steps of 4: L1, L2, L3 and main memory.
+    static const std::vector<long long> sizes = {64, 256, 1024, 4096, 16384, 65536, 262144, 1048576, 4194304};
+    return sizes;
+}
+
+template <template <class> class Lib, class T>
+void register_library() {
+    using L = Lib<T>;
+    const char* type = type_name<T>;
+    benchmark::RegisterBenchmark(name("rotate_point", L::name, "quaternion", type).c_str(),
+                                 rotate_point<L, quaternion_rep>);
+    benchmark::RegisterBenchmark(name("rotate_point", L::name, "matrix", type).c_str(),
+                                 rotate_point<L, matrix_rep>);
+    if (!std::is_same_v<T, float>) return;  // the batch targets are float
+    for (const long long n : batch_sizes<T>()) {
+        benchmark::RegisterBenchmark(name("rotate_batch", L::name, "quaternion", type, n).c_str(),
+                                     rotate_batch<L, quaternion_rep>, n);
+        benchmark::RegisterBenchmark(name("rotate_batch", L::name, "matrix", type, n).c_str(),
+                                     rotate_batch<L, matrix_rep>, n);
+    }
+}
+
+}  // namespace
+
+void register_rotate() {
+    register_library<lib_quat, float>();
+    register_library<lib_glm, float>();
+    register_library<lib_eigen, float>();
+    register_library<lib_quat, double>();
+    register_library<lib_glm, double>();
+    register_library<lib_eigen, double>();
+    for (const long long n : batch_sizes<float>()) {
+        benchmark::RegisterBenchmark(name("rotate_batch", "quat", "quaternion_soa", "float", n).c_str(),
+                                     rotate_batch_soa<float>, n);
+        benchmark::RegisterBenchmark(name("rotate_batch", "memcpy", "bytes", "float", n).c_str(),
+                                     rotate_batch_memcpy<float>, n);
+    }
+}
+
+}  // namespace bench

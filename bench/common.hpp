@@ -1,0 +1,178 @@
+// Shared pieces of quat_bench: seeded inputs, one adapter per library (quat, GLM, Eigen) with the
+// same static functions, and the benchmark naming scheme <operation>/<library>/<representation>/<type>[/<n>].
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <quat/batch.hpp>
+#include <quat/fast_slerp.hpp>
+#include <quat/quat.hpp>
+
+namespace bench {
+
+/// Every benchmark draws its inputs from this seed at run time, so the optimizer cannot fold them.
+inline constexpr std::uint64_t seed = 20190501;
+
+template <class T>
+inline const char* type_name = std::is_same_v<T, float> ? "float" : "double";
+
+/// "<operation>/<library>/<representation>/<type>" plus "/<n>" when n >= 0.
+inline std::string name(const std::string& operation, const std::string& library, const std::string& representation,
+                        const std::string& type, long long n = -1) {
+    std::string s = operation + "/" + library + "/" + representation + "/" + type;
+    if (n >= 0) s += "/" + std::to_string(n);
+    return s;
+}
+
+/// Seeded random unit quaternions (double; each library converts), vectors and parameters.
+class random_source {
+public:
+    explicit random_source(std::uint64_t s = seed) : engine_(s) {}
+    quat::quatd rotation() {
+        for (;;) {
+            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_), z = gauss_(engine_);
+            const double n = std::sqrt(w * w + x * x + y * y + z * z);
+            if (n > 1e-3) return {w / n, x / n, y / n, z / n};
+        }
+    }
+    quat::vec3<double> vector() { return {gauss_(engine_), gauss_(engine_), gauss_(engine_)}; }
+    double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(engine_); }
+
+private:
+    std::mt19937_64 engine_;
+    std::normal_distribution<double> gauss_;
+};
+
+/// quat: the library under test.
+template <class T>
+struct lib_quat {
+    static constexpr const char* name = "quat";
+    using scalar = T;
+    using quaternion = quat::quaternion<T>;
+    using matrix = quat::rotation_matrix<T>;
+    using vector = quat::vec3<T>;
+    static quaternion make_quaternion(const quat::quatd& q) { return {T(q.w), T(q.x), T(q.y), T(q.z)}; }
+    static matrix make_matrix(const quat::quatd& q) { return quat::to_matrix(make_quaternion(q)); }
+    static vector make_vector(const quat::vec3<double>& v) { return {T(v.x), T(v.y), T(v.z)}; }
+    static vector rotate(const quaternion& q, const vector& v) { return quat::rotate(q, v); }
+    static vector rotate(const matrix& m, const vector& v) { return quat::rotate(m, v); }
+    static quaternion compose(const quaternion& a, const quaternion& b) { return a * b; }
+    static matrix compose(const matrix& a, const matrix& b) { return a * b; }
+    static quaternion identity_quaternion() { return quaternion::identity(); }
+    static matrix identity_matrix() { return matrix::identity(); }
+    static quaternion normalize(const quaternion& q) { return quat::normalize(q); }
+    static quaternion slerp(const quaternion& a, const quaternion& b, T t) { return quat::slerp(a, b, t); }
+    static quaternion nlerp(const quaternion& a, const quaternion& b, T t) { return quat::nlerp(a, b, t); }
+    static T norm(const quaternion& q) { return quat::norm(q); }
+    template <class R>
+    static void rotate_batch(const R& r, const vector* in, vector* out, std::size_t n) {
+        quat::rotate(r, in, out, n);
+    }
+};
+
+/// GLM 0.9.9: glm::qua (scalar w first in its constructor), glm::mat3, glm::vec3.
+template <class T>
+struct lib_glm {
+    static constexpr const char* name = "glm";
+    using scalar = T;
+    using quaternion = glm::qua<T, glm::defaultp>;
+    using matrix = glm::mat<3, 3, T, glm::defaultp>;
+    using vector = glm::vec<3, T, glm::defaultp>;
+    static quaternion make_quaternion(const quat::quatd& q) { return quaternion(T(q.w), T(q.x), T(q.y), T(q.z)); }
+    static matrix make_matrix(const quat::quatd& q) { return glm::mat3_cast(make_quaternion(q)); }
+    static vector make_vector(const quat::vec3<double>& v) { return vector(T(v.x), T(v.y), T(v.z)); }
+    static vector rotate(const quaternion& q, const vector& v) { return q * v; }
+    static vector rotate(const matrix& m, const vector& v) { return m * v; }
+    static quaternion compose(const quaternion& a, const quaternion& b) { return a * b; }
+    static matrix compose(const matrix& a, const matrix& b) { return a * b; }
+    static quaternion identity_quaternion() { return quaternion(T(1), T(0), T(0), T(0)); }
+    static matrix identity_matrix() { return matrix(T(1)); }
+    static quaternion normalize(const quaternion& q) { return glm::normalize(q); }
+    static quaternion slerp(const quaternion& a, const quaternion& b, T t) { return glm::slerp(a, b, t); }
+    // GLM has no nlerp; its users write normalize(lerp) after choosing the nearer sign themselves.
+    static quaternion nlerp(const quaternion& a, const quaternion& b, T t) {
+        return glm::normalize(glm::lerp(a, glm::dot(a, b) < T(0) ? -b : b, t));
+    }
+    static T norm(const quaternion& q) { return glm::length(q); }
+    template <class R>
+    static void rotate_batch(const R& r, const vector* in, vector* out, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = r * in[i];
+    }
+};
+
+/// Eigen 3.4: Quaternion (constructor w, x, y, z), Matrix3, Vector3; batches of matrices as
+/// Map<Matrix3X> products, the way Eigen users rotate many points.
+template <class T>
+struct lib_eigen {
+    static constexpr const char* name = "eigen";
+    using scalar = T;
+    using quaternion = Eigen::Quaternion<T>;
+    using matrix = Eigen::Matrix<T, 3, 3>;
+    using vector = Eigen::Matrix<T, 3, 1>;
+    static quaternion make_quaternion(const quat::quatd& q) { return quaternion(T(q.w), T(q.x), T(q.y), T(q.z)); }
+    static matrix make_matrix(const quat::quatd& q) { return make_quaternion(q).toRotationMatrix(); }
+    static vector make_vector(const quat::vec3<double>& v) { return vector(T(v.x), T(v.y), T(v.z)); }
+    static vector rotate(const quaternion& q, const vector& v) { return q * v; }
+    static vector rotate(const matrix& m, const vector& v) { return m * v; }
+    static quaternion compose(const quaternion& a, const quaternion& b) { return a * b; }
+    static matrix compose(const matrix& a, const matrix& b) { return a * b; }
+    static quaternion identity_quaternion() { return quaternion::Identity(); }
+    static matrix identity_matrix() { return matrix::Identity(); }
+    static quaternion normalize(const quaternion& q) { return q.normalized(); }
+    static quaternion slerp(const quaternion& a, const quaternion& b, T t) { return a.slerp(t, b); }
+    static quaternion nlerp(const quaternion& a, const quaternion& b, T t) {
+        const quaternion near = a.dot(b) < T(0) ? quaternion(-b.coeffs()) : b;
+        return quaternion(a.coeffs() + (near.coeffs() - a.coeffs()) * t).normalized();
+    }
+    static T norm(const quaternion& q) { return q.norm(); }
+    static void rotate_batch(const quaternion& q, const vector* in, vector* out, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = q * in[i];
+    }
+    static void rotate_batch(const matrix& m, const vector* in, vector* out, std::size_t n) {
+        using points = Eigen::Matrix<T, 3, Eigen::Dynamic>;
+        Eigen::Map<points>(out[0].data(), 3, static_cast<Eigen::Index>(n)).noalias() =
+            m * Eigen::Map<const points>(in[0].data(), 3, static_cast<Eigen::Index>(n));
+    }
+};
+
+/// Rotation type of a library for a representation tag.
+struct quaternion_rep {
+    static constexpr const char* name = "quaternion";
+    template <class Lib>
+    using type = typename Lib::quaternion;
+    template <class Lib>
+    static type<Lib> make(const quat::quatd& q) { return Lib::make_quaternion(q); }
+    template <class Lib>
+    static type<Lib> identity() { return Lib::identity_quaternion(); }
+};
+struct matrix_rep {
+    static constexpr const char* name = "matrix";
+    template <class Lib>
+    using type = typename Lib::matrix;
+    template <class Lib>
+    static type<Lib> make(const quat::quatd& q) { return Lib::make_matrix(q); }
+    template <class Lib>
+    static type<Lib> identity() { return Lib::identity_matrix(); }
+};
+
+/// Registration entry points, one per source file; each registers float and double variants.
+void register_rotate();
+void register_compose();
+void register_conversions();
+void register_interpolation();
+
+/// `quat_bench --counts`: the operation-count tables.
+int print_counts();
+
+}  // namespace bench
