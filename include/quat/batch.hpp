@@ -131,8 +131,9 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 /// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
 /// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
 /// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-/// the same rotation as the left-to-right loop by associativity, rounded differently (for 1024
-/// random unit factors the two differ by about 1e-6 in float, 2e-15 in double: tests/test_batch.cpp).
+/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
+/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
+/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
     constexpr std::size_t lanes = 4;
