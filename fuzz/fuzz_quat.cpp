@@ -37,7 +37,8 @@ bool finite(const quat::rotation_matrix<double>& m) {
 }
 bool is_unit(const quat::quatd& q) { return std::abs(quat::norm(q) - 1) <= unit_tolerance; }
 bool is_rotation(const quat::rotation_matrix<double>& m) {
-    return quat::orthogonality_error(m) <= unit_tolerance && std::abs(quat::determinant(m) - 1) <= unit_tolerance;
+    return quat::orthogonality_error(m) <= unit_tolerance &&
+           std::abs(quat::determinant(m) - 1) <= unit_tolerance;
 }
 
 /// Euler extraction of a unit quaternion: finite, canonical and reproducing the rotation.
@@ -45,9 +46,12 @@ template <sequence S, frame F>
 void check_euler(const quat::quatd& unit) {
     const auto extraction = quat::extract_euler<S, F>(unit);
     const auto& e = extraction.angles;
-    require(std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2]), "to_euler: finite in, finite out");
-    require(std::abs(e[0]) <= M_PI && std::abs(e[2]) <= M_PI, "to_euler: first/third angle in [-pi, pi]");
-    require(quat::angle_between(quat::to_quaternion(e), unit) <= round_trip_tolerance, "to_euler: round trip");
+    require(std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2]),
+            "to_euler: finite in, finite out");
+    require(std::abs(e[0]) <= M_PI && std::abs(e[2]) <= M_PI,
+            "to_euler: first/third angle in [-pi, pi]");
+    require(quat::angle_between(quat::to_quaternion(e), unit) <= round_trip_tolerance,
+            "to_euler: round trip");
     require(!extraction.gimbal_lock || e[2] == 0, "to_euler: third angle 0 at gimbal lock");
 }
 
@@ -66,11 +70,12 @@ void check_quaternion(const quat::quatd& q) {
     require(is_rotation(m), "to_matrix: rotation");
     const quat::quatd back = quat::to_quaternion(m);
     require(is_unit(back) && back.w >= 0, "to_quaternion(matrix): unit, w >= 0");
-    require(quat::angle_between(back, *unit) <= round_trip_tolerance, "to_quaternion(matrix): round trip");
+    require(quat::angle_between(back, *unit) <= round_trip_tolerance,
+            "to_quaternion(matrix): round trip");
     require(quat::try_to_quaternion(m).has_value(), "try_to_quaternion: accepts a rotation");
     // exp/log round trip.
-    require(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(*unit)), *unit) <=
-                round_trip_tolerance,
+    require(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(*unit)),
+                                *unit) <= round_trip_tolerance,
             "rotation vector round trip");
 }
 
@@ -105,6 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const quat::quatd a{v[0], v[1], v[2], v[3]}, b{v[4], v[5], v[6], v[7]};
     check_quaternion(a);
     check_slerp(a, b, v[8]);
-    check_matrix(quat::rotation_matrix<double>::from_rows({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}));
+    check_matrix(quat::rotation_matrix<double>::from_rows({v[0], v[1], v[2]}, {v[3], v[4], v[5]},
+                                                          {v[6], v[7], v[8]}));
     return 0;
 }

@@ -1,6 +1,7 @@
 // Specification of conversions.hpp: quaternion <-> matrix <-> axis-angle <-> rotation vector.
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <quat/conversions.hpp>
 
@@ -41,6 +42,7 @@ TEMPLATE_TEST_CASE("matrix -> quaternion inverts to_matrix, 180-degree turns inc
     using T = TestType;
     quat::test::random_rotations random;
     std::vector<quaternion<T>> inputs;
+    inputs.reserve(2204);
     for (int n = 0; n < 2000; ++n) inputs.push_back(random.unit_quaternion<T>());
     for (int n = 0; n < 200; ++n) {  // half turns: w = 0, about random and coordinate axes
         const vec3<T> a = random.unit_vector<T>();

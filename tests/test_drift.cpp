@@ -2,8 +2,8 @@
 // quaternions is unit only up to a few eps, and the errors add up like a random walk (or worse, a
 // drift), so the library's documented policy is: renormalize a chained orientation every N
 // products (N = 16 here: measured max ||q| - 1| = 8.0 eps over 10^6 products; N = 64 gave 18 eps).
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -47,10 +47,12 @@ drift_result run_chain(std::size_t every) {
 
 }  // namespace
 
-TEST_CASE("10^6 chained float products, renormalized every 16, stay within 16 eps of unit norm", "[drift]") {
+TEST_CASE("10^6 chained float products, renormalized every 16, stay within 16 eps of unit norm",
+          "[drift]") {
     const drift_result r = run_chain(renormalize_every);
     const double eps = double(std::numeric_limits<float>::epsilon());
-    INFO("max ||q| - 1| = " << r.max_norm_error / eps << " eps; final angle error " << r.final_angle_error << " rad");
+    INFO("max ||q| - 1| = " << r.max_norm_error / eps << " eps; final angle error "
+                            << r.final_angle_error << " rad");
     // Between renormalizations the error grows by at most a few eps per product (random-walk-like).
     CHECK(r.max_norm_error <= 16 * eps);
     // The orientation itself accumulates rounding like any float integration: bounded loosely.

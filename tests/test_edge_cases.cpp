@@ -25,8 +25,8 @@ constexpr sequence all_sequences[12] = {sequence::xyz, sequence::xzy, sequence::
 
 template <class Fn, std::size_t... I>
 void for_each_convention(Fn&& fn, std::index_sequence<I...>) {
-    (fn(std::integral_constant<sequence, all_sequences[I / 2]>{},
-        std::integral_constant<frame, I % 2 == 0 ? frame::intrinsic : frame::extrinsic>{}),
+    (fn(std::integral_constant<sequence, all_sequences[I / 2]>{}, std::integral_constant < frame,
+        I % 2 == 0 ? frame::intrinsic : frame::extrinsic > {}),
      ...);
 }
 /// Calls fn(integral_constant<sequence>, integral_constant<frame>) for all 24 conventions.
@@ -35,7 +35,9 @@ void for_each_convention(Fn&& fn) {
     for_each_convention(std::forward<Fn>(fn), std::make_index_sequence<24>{});
 }
 
-constexpr bool is_proper(sequence s) { return static_cast<int>(s) >= static_cast<int>(sequence::xyx); }
+constexpr bool is_proper(sequence s) {
+    return static_cast<int>(s) >= static_cast<int>(sequence::xyx);
+}
 
 template <class T>
 bool has_nan(const quat::quaternion<T>& q) {
@@ -86,8 +88,8 @@ TEMPLATE_TEST_CASE("the identity is exact in every conversion", "[edge]", float,
     });
 }
 
-TEMPLATE_TEST_CASE("half turns about coordinate and random axes survive every conversion", "[edge]", float,
-                   double) {
+TEMPLATE_TEST_CASE("half turns about coordinate and random axes survive every conversion", "[edge]",
+                   float, double) {
     using T = TestType;
     for (const auto& q : half_turns<T>()) {
         INFO("q = " << q.w << ", " << q.x << ", " << q.y << ", " << q.z);
@@ -96,10 +98,12 @@ TEMPLATE_TEST_CASE("half turns about coordinate and random axes survive every co
         CHECK(quat::angle_between(back, q) <= tolerance<T>::round_trip);
         CHECK(back.w >= 0);
         CHECK(std::abs(quat::to_axis_angle(q).angle - T(pi)) <= tolerance<T>::conversion);
-        CHECK(std::abs(quat::norm(quat::to_rotation_vector(q)) - T(pi)) <= tolerance<T>::conversion);
+        CHECK(std::abs(quat::norm(quat::to_rotation_vector(q)) - T(pi)) <=
+              tolerance<T>::conversion);
         CHECK(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(q)), q) <=
               tolerance<T>::round_trip);
-        CHECK(std::abs(quat::angle_between(quat::quaternion<T>::identity(), q) - T(pi)) <= tolerance<T>::conversion);
+        CHECK(std::abs(quat::angle_between(quat::quaternion<T>::identity(), q) - T(pi)) <=
+              tolerance<T>::conversion);
         for_each_convention([&](auto s, auto f) {
             const auto e = quat::to_euler<decltype(s)::value, decltype(f)::value>(q);
             INFO("convention " << int(decltype(s)::value) << " frame " << int(decltype(f)::value));
@@ -108,25 +112,29 @@ TEMPLATE_TEST_CASE("half turns about coordinate and random axes survive every co
     }
 }
 
-TEMPLATE_TEST_CASE("middle Euler angle at and near gimbal lock, all 24 conventions", "[edge][euler]", float,
-                   double) {
+TEMPLATE_TEST_CASE("middle Euler angle at and near gimbal lock, all 24 conventions",
+                   "[edge][euler]", float, double) {
     using T = TestType;
     quat::test::random_rotations rng;
     for_each_convention([&](auto s, auto f) {
         constexpr sequence S = decltype(s)::value;
         constexpr frame F = decltype(f)::value;
-        const std::vector<double> locks = is_proper(S) ? std::vector<double>{0.0, pi} : std::vector<double>{-pi / 2, pi / 2};
+        const std::vector<double> locks =
+            is_proper(S) ? std::vector<double>{0.0, pi} : std::vector<double>{-pi / 2, pi / 2};
         for (double lock : locks)
             for (int k = 0; k <= 15; ++k)
                 for (double sign : {-1.0, 1.0}) {
                     const double middle = k == 0 ? lock : lock + sign * std::pow(10.0, -k);
-                    const quat::euler<T, S, F> e{rng.uniform<T>(-pi, pi), T(middle), rng.uniform<T>(-pi, pi)};
+                    const quat::euler<T, S, F> e{rng.uniform<T>(-pi, pi), T(middle),
+                                                 rng.uniform<T>(-pi, pi)};
                     const auto q = quat::to_quaternion(e);
                     const auto extraction = quat::extract_euler<S, F>(q);
                     const auto& back = extraction.angles;
-                    INFO("convention " << int(S) << " frame " << int(F) << " middle " << middle << " k " << k);
+                    INFO("convention " << int(S) << " frame " << int(F) << " middle " << middle
+                                       << " k " << k);
                     // The returned angles reproduce the rotation, whatever split they chose.
-                    CHECK(quat::angle_between(quat::to_quaternion(back), q) <= tolerance<T>::euler_round_trip);
+                    CHECK(quat::angle_between(quat::to_quaternion(back), q) <=
+                          tolerance<T>::euler_round_trip);
                     // Canonical ranges hold even for inputs just outside them.
                     CHECK(std::abs(back[0]) <= T(pi));
                     CHECK(std::abs(back[2]) <= T(pi));
@@ -137,22 +145,24 @@ TEMPLATE_TEST_CASE("middle Euler angle at and near gimbal lock, all 24 conventio
                     }
                     // Far from the lock (10^-k well above epsilon) no lock is reported; at a lock the
                     // third angle is the one fixed by convention.
-                    if (k > 0 && std::pow(10.0, -k) > 1e3 * double(std::numeric_limits<T>::epsilon()))
+                    if (k > 0 &&
+                        std::pow(10.0, -k) > 1e3 * double(std::numeric_limits<T>::epsilon()))
                         CHECK_FALSE(extraction.gimbal_lock);
                     if (extraction.gimbal_lock) CHECK(back[2] == 0);
                 }
     });
 }
 
-TEMPLATE_TEST_CASE("huge, tiny and subnormal components normalize to the same unit quaternion", "[edge]", float,
-                   double) {
+TEMPLATE_TEST_CASE("huge, tiny and subnormal components normalize to the same unit quaternion",
+                   "[edge]", float, double) {
     using T = TestType;
     using limits = std::numeric_limits<T>;
     quat::test::random_rotations rng;
     for (int i = 0; i < 200; ++i) {
         const auto q = rng.unit_quaternion<T>();
         const auto unit = quat::normalize(q);
-        for (T scale : {limits::max() / 4, T(1e30), T(1e-30), limits::min(), limits::denorm_min() * T(1 << 20)}) {
+        for (T scale : {limits::max() / 4, T(1e30), T(1e-30), limits::min(),
+                        limits::denorm_min() * T(1 << 20)}) {
             const quat::quaternion<T> scaled = q * scale;
             INFO("scale " << scale << " (" << (sizeof(T) == 4 ? "float" : "double") << ")");
             const auto n = quat::normalize(scaled);
@@ -170,20 +180,24 @@ TEMPLATE_TEST_CASE("huge, tiny and subnormal components normalize to the same un
     CHECK(quat::normalize(smallest) == quat::quaternion<T>::identity());
 }
 
-TEMPLATE_TEST_CASE("to_euler and to_rotation_vector are scale-invariant for huge, tiny and subnormal q",
-                   "[edge]", float, double) {
+TEMPLATE_TEST_CASE(
+    "to_euler and to_rotation_vector are scale-invariant for huge, tiny and subnormal q", "[edge]",
+    float, double) {
     using T = TestType;
     using limits = std::numeric_limits<T>;
     quat::test::random_rotations rng;
     for (int i = 0; i < 50; ++i) {
         const auto q = rng.unit_quaternion<T>();
-        for (T scale : {limits::max() / 4, T(1e30), T(1e-30), limits::min(), limits::denorm_min() * T(1 << 20)}) {
+        for (T scale : {limits::max() / 4, T(1e30), T(1e-30), limits::min(),
+                        limits::denorm_min() * T(1 << 20)}) {
             const quat::quaternion<T> scaled = q * scale;
             INFO("scale " << scale << " (" << (sizeof(T) == 4 ? "float" : "double") << ")");
             // Documented: "any non-zero scale of q gives the same result/angles".
             const T tol = scale < limits::min() ? T(1e-5) : tolerance<T>::euler_round_trip;
-            CHECK(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(scaled)), q) <= tol);
-            CHECK(quat::angle_between(quat::to_quaternion(quat::to_euler<sequence::zyx>(scaled)), q) <= tol);
+            CHECK(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(scaled)),
+                                      q) <= tol);
+            CHECK(quat::angle_between(quat::to_quaternion(quat::to_euler<sequence::zyx>(scaled)),
+                                      q) <= tol);
         }
     }
 }
@@ -197,13 +211,15 @@ TEMPLATE_TEST_CASE("q and -q are one rotation everywhere", "[edge]", float, doub
         const auto v = rng.vector<T>();
         CHECK(quat::to_matrix(q) == quat::to_matrix(-q));  // products of two negations are exact
         CHECK(quat::test::max_difference(quat::rotate(q, v), quat::rotate(-q, v)) == 0);
-        CHECK(quat::test::max_difference(quat::to_rotation_vector(q), quat::to_rotation_vector(-q)) <=
-              tolerance<T>::conversion);
+        CHECK(quat::test::max_difference(quat::to_rotation_vector(q),
+                                         quat::to_rotation_vector(-q)) <= tolerance<T>::conversion);
         const auto e1 = quat::to_euler<sequence::zyx>(q), e2 = quat::to_euler<sequence::zyx>(-q);
-        CHECK(std::abs(e1[0] - e2[0]) + std::abs(e1[1] - e2[1]) + std::abs(e1[2] - e2[2]) <= tolerance<T>::conversion);
+        CHECK(std::abs(e1[0] - e2[0]) + std::abs(e1[1] - e2[1]) + std::abs(e1[2] - e2[2]) <=
+              tolerance<T>::conversion);
         CHECK(quat::angle_between(q, -q) <= tolerance<T>::conversion);
         const T t = rng.uniform<T>(0, 1);
-        CHECK(quat::angle_between(quat::slerp(q, b, t), quat::slerp(q, -b, t)) <= tolerance<T>::slerp_angle);
+        CHECK(quat::angle_between(quat::slerp(q, b, t), quat::slerp(q, -b, t)) <=
+              tolerance<T>::slerp_angle);
     }
 }
 
@@ -211,8 +227,9 @@ TEMPLATE_TEST_CASE("q and -q are one rotation everywhere", "[edge]", float, doub
 // the conversions that read only directions (to_euler, to_axis_angle, to_rotation_vector,
 // angle_between) are scale-invariant; to_matrix and rotate are not checked (no QUAT_ASSERT fires):
 // for q = s p with unit p they return I + s^2 (R - I) and v + s^2 (R v - v), not a rotation.
-TEMPLATE_TEST_CASE("non-unit input: scale-invariant conversions; to_matrix and rotate give I + s^2 (R - I)", "[edge]",
-                   float, double) {
+TEMPLATE_TEST_CASE(
+    "non-unit input: scale-invariant conversions; to_matrix and rotate give I + s^2 (R - I)",
+    "[edge]", float, double) {
     using T = TestType;
     quat::test::random_rotations rng;
     for (int i = 0; i < 200; ++i) {
@@ -222,7 +239,8 @@ TEMPLATE_TEST_CASE("non-unit input: scale-invariant conversions; to_matrix and r
         const quat::quaternion<T> big = q * s;
         CHECK(quat::angle_between(quat::from_rotation_vector(quat::to_rotation_vector(big)), q) <=
               tolerance<T>::round_trip);
-        CHECK(std::abs(quat::to_axis_angle(big).angle - quat::to_axis_angle(q).angle) <= tolerance<T>::conversion);
+        CHECK(std::abs(quat::to_axis_angle(big).angle - quat::to_axis_angle(q).angle) <=
+              tolerance<T>::conversion);
         CHECK(quat::angle_between(quat::to_quaternion(quat::to_euler<sequence::xzx>(big)), q) <=
               tolerance<T>::euler_round_trip);
         const auto rv = quat::rotate(q, v);
@@ -232,7 +250,8 @@ TEMPLATE_TEST_CASE("non-unit input: scale-invariant conversions; to_matrix and r
         for (int row = 0; row < 3; ++row)
             for (int col = 0; col < 3; ++col) {
                 const T identity = row == col ? T(1) : T(0);
-                CHECK(std::abs(m(row, col) - (identity + s2 * (r(row, col) - identity))) <= tolerance<T>::product * s2);
+                CHECK(std::abs(m(row, col) - (identity + s2 * (r(row, col) - identity))) <=
+                      tolerance<T>::product * s2);
             }
     }
 }
@@ -269,7 +288,8 @@ TEMPLATE_TEST_CASE("NaN and Inf in give NaN out or an empty optional", "[edge]",
     CHECK_FALSE(quat::try_to_quaternion(quat::axis_angle<T>{{0, 0, 0}, T(1)}).has_value());
 }
 
-TEMPLATE_TEST_CASE("non-orthogonal and reflected matrices", "[edge][nearest_rotation]", float, double) {
+TEMPLATE_TEST_CASE("non-orthogonal and reflected matrices", "[edge][nearest_rotation]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations rng;
     const auto reflect_z = quat::rotation_matrix<T>::from_rows({1, 0, 0}, {0, 1, 0}, {0, 0, -1});
@@ -287,15 +307,18 @@ TEMPLATE_TEST_CASE("non-orthogonal and reflected matrices", "[edge][nearest_rota
         CHECK(std::abs(quat::determinant(repaired) - 1) <= tolerance<T>::conversion);
         CHECK(quat::try_to_quaternion(repaired).has_value());
         // A scaled rotation's nearest rotation is the rotation itself.
-        CHECK(quat::test::max_difference(quat::nearest_rotation(r * quat::rotation_matrix<T>{{{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}}), r) <=
-              tolerance<T>::conversion);
+        CHECK(quat::test::max_difference(
+                  quat::nearest_rotation(
+                      r * quat::rotation_matrix<T>{{{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}}),
+                  r) <= tolerance<T>::conversion);
         // Reflected input still yields a proper rotation (documented: the nearest proper one).
         const auto from_reflection = quat::nearest_rotation(r * reflect_z);
         CHECK(std::abs(quat::determinant(from_reflection) - 1) <= tolerance<T>::conversion);
         CHECK(quat::orthogonality_error(from_reflection) <= tolerance<T>::conversion);
     }
     // -I has a whole circle of nearest rotations: reported as not unique; zero has no direction.
-    const auto minus_identity = quat::rotation_matrix<T>::from_rows({-1, 0, 0}, {0, -1, 0}, {0, 0, -1});
+    const auto minus_identity =
+        quat::rotation_matrix<T>::from_rows({-1, 0, 0}, {0, -1, 0}, {0, 0, -1});
     CHECK_FALSE(quat::try_nearest_rotation(minus_identity).has_value());
     CHECK_FALSE(quat::try_to_quaternion(minus_identity).has_value());
     const auto zero = quat::rotation_matrix<T>::from_rows({0, 0, 0}, {0, 0, 0}, {0, 0, 0});
@@ -326,9 +349,10 @@ constexpr std::array<T, 5 * 16> constexpr_table(const std::array<quat::quaternio
         const quat::quaternion<T> exp = quat::from_rotation_vector(log);
         const auto zyx = quat::to_euler<sequence::zyx>(n);
         const auto zxz = quat::to_euler<sequence::zxz, frame::extrinsic>(n);
-        const quat::quaternion<T> s = quat::slerp(n, quat::normalize(in[(i + 1) % in.size()]), T(0.3));
-        const T values[16] = {n.w, n.x, n.y, n.z, log.x, log.y, log.z, exp.w,
-                              zyx[0], zyx[1], zyx[2], zxz[0], zxz[1], zxz[2], s.w, s.x};
+        const quat::quaternion<T> s =
+            quat::slerp(n, quat::normalize(in[(i + 1) % in.size()]), T(0.3));
+        const T values[16] = {n.w,    n.x,    n.y,    n.z,    log.x,  log.y,  log.z, exp.w,
+                              zyx[0], zyx[1], zyx[2], zxz[0], zxz[1], zxz[2], s.w,   s.x};
         for (std::size_t j = 0; j < 16; ++j) out[i * 16 + j] = values[j];
     }
     return out;
@@ -338,26 +362,28 @@ template <class T>
 constexpr auto constexpr_results = constexpr_table(constexpr_inputs<T>);
 // Evaluated by the compiler: a normalized quaternion's w and a zyx pitch within range.
 static_assert(constexpr_results<double>[0] > 0.4 && constexpr_results<double>[0] < 0.6);
-static_assert(constexpr_results<double>[4 * 16 + 9] > 1.5 && constexpr_results<double>[4 * 16 + 9] < 1.5708);
+static_assert(constexpr_results<double>[4 * 16 + 9] > 1.5 &&
+              constexpr_results<double>[4 * 16 + 9] < 1.5708);
 static_assert(constexpr_results<float>[3] > 0.4f && constexpr_results<float>[3] < 0.6f);
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("constexpr results equal run-time results within constexpr_vs_runtime", "[edge][constexpr]",
-                   float, double) {
+TEMPLATE_TEST_CASE("constexpr results equal run-time results within constexpr_vs_runtime",
+                   "[edge][constexpr]", float, double) {
     using T = TestType;
     // Launder the inputs through volatile so the run-time call really uses <cmath>.
     std::array<quat::quaternion<T>, 5> runtime_inputs{};
     for (std::size_t i = 0; i < runtime_inputs.size(); ++i) {
-        volatile T w = constexpr_inputs<T>[i].w, x = constexpr_inputs<T>[i].x, y = constexpr_inputs<T>[i].y,
-                   z = constexpr_inputs<T>[i].z;
+        volatile T w = constexpr_inputs<T>[i].w, x = constexpr_inputs<T>[i].x,
+                   y = constexpr_inputs<T>[i].y, z = constexpr_inputs<T>[i].z;
         runtime_inputs[i] = {w, x, y, z};
     }
     const auto runtime = constexpr_table(runtime_inputs);
     for (std::size_t k = 0; k < runtime.size(); ++k) {
-        INFO("input " << k / 16 << " value " << k % 16 << ": constexpr " << constexpr_results<T>[k] << " run time "
-                      << runtime[k]);
+        INFO("input " << k / 16 << " value " << k % 16 << ": constexpr " << constexpr_results<T>[k]
+                      << " run time " << runtime[k]);
         const T scale = std::max(T(1), std::abs(runtime[k]));
-        CHECK(std::abs(constexpr_results<T>[k] - runtime[k]) <= tolerance<T>::constexpr_vs_runtime * scale);
+        CHECK(std::abs(constexpr_results<T>[k] - runtime[k]) <=
+              tolerance<T>::constexpr_vs_runtime * scale);
     }
 }

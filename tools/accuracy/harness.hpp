@@ -124,18 +124,14 @@ struct row {
     [[nodiscard]] bool missed() const {
         return quat && !std::isnan(target) && !(quat->max <= target);
     }
-    [[nodiscard]] bool unexplained_miss() const {
-        return missed() && !(quat->max <= accepted);
-    }
+    [[nodiscard]] bool unexplained_miss() const { return missed() && !(quat->max <= accepted); }
 };
 
 inline std::string format_number(double v) {
     char buf[32];
     if (std::isinf(v)) return "inf";
-    if (v != 0 && (v >= 1e5 || v < 1e-2))
-        std::snprintf(buf, sizeof buf, "%.1e", v);
-    else
-        std::snprintf(buf, sizeof buf, "%.2f", v);
+    if (v != 0 && (v >= 1e5 || v < 1e-2)) std::snprintf(buf, sizeof buf, "%.1e", v);
+    else std::snprintf(buf, sizeof buf, "%.2f", v);
     return buf;
 }
 
@@ -143,20 +139,25 @@ inline std::string format_cell(const std::optional<error_stats>& s) {
     if (!s) return "—";
     std::string cell = format_number(s->max) + " / " + format_number(s->rms());
     if (s->non_finite > 0)
-        cell += " (" + std::to_string(s->non_finite) + "/" + std::to_string(s->count) + " non-finite)";
+        cell +=
+            " (" + std::to_string(s->non_finite) + "/" + std::to_string(s->count) + " non-finite)";
     return cell;
 }
 
 inline void print_table(const std::vector<row>& rows) {
-    std::printf("| operation | inputs | type | unit | quat target | quat max / rms | GLM max / rms | "
-                "Eigen max / rms |\n");
+    std::printf(
+        "| operation | inputs | type | unit | quat target | quat max / rms | GLM max / rms | "
+        "Eigen max / rms |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (const row& r : rows) {
         const std::string target =
-            std::isnan(r.target) ? "—" : ("≤ " + format_number(r.target) + (r.missed() ? " **missed**" : ""));
-        std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", r.operation.c_str(), r.inputs.c_str(),
-                    r.scalar.c_str(), r.unit.c_str(), target.c_str(), format_cell(r.quat).c_str(),
-                    format_cell(r.glm).c_str(), format_cell(r.eigen).c_str());
+            std::isnan(r.target)
+                ? "—"
+                : ("≤ " + format_number(r.target) + (r.missed() ? " **missed**" : ""));
+        std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", r.operation.c_str(),
+                    r.inputs.c_str(), r.scalar.c_str(), r.unit.c_str(), target.c_str(),
+                    format_cell(r.quat).c_str(), format_cell(r.glm).c_str(),
+                    format_cell(r.eigen).c_str());
     }
 }
 

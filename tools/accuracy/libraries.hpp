@@ -6,9 +6,9 @@
 #include <optional>
 
 #include <Eigen/Geometry>
+#include <glm/ext/quaternion_exponential.hpp>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <glm/ext/quaternion_exponential.hpp>
 
 #include <quat/quat.hpp>
 
@@ -19,18 +19,30 @@ namespace accuracy {
 /// Coordinate-axis indices (0 = x, 1 = y, 2 = z) of a quat Euler sequence.
 constexpr std::array<int, 3> axes_of(quat::sequence s) {
     switch (s) {
-        case quat::sequence::xyz: return {0, 1, 2};
-        case quat::sequence::xzy: return {0, 2, 1};
-        case quat::sequence::yxz: return {1, 0, 2};
-        case quat::sequence::yzx: return {1, 2, 0};
-        case quat::sequence::zxy: return {2, 0, 1};
-        case quat::sequence::zyx: return {2, 1, 0};
-        case quat::sequence::xyx: return {0, 1, 0};
-        case quat::sequence::xzx: return {0, 2, 0};
-        case quat::sequence::yxy: return {1, 0, 1};
-        case quat::sequence::yzy: return {1, 2, 1};
-        case quat::sequence::zxz: return {2, 0, 2};
-        case quat::sequence::zyz: return {2, 1, 2};
+        case quat::sequence::xyz:
+            return {0, 1, 2};
+        case quat::sequence::xzy:
+            return {0, 2, 1};
+        case quat::sequence::yxz:
+            return {1, 0, 2};
+        case quat::sequence::yzx:
+            return {1, 2, 0};
+        case quat::sequence::zxy:
+            return {2, 0, 1};
+        case quat::sequence::zyx:
+            return {2, 1, 0};
+        case quat::sequence::xyx:
+            return {0, 1, 0};
+        case quat::sequence::xzx:
+            return {0, 2, 0};
+        case quat::sequence::yxy:
+            return {1, 0, 1};
+        case quat::sequence::yzy:
+            return {1, 2, 1};
+        case quat::sequence::zxz:
+            return {2, 0, 2};
+        case quat::sequence::zyz:
+            return {2, 1, 2};
     }
     return {0, 0, 0};
 }
@@ -38,18 +50,30 @@ constexpr std::array<int, 3> axes_of(quat::sequence s) {
 struct quat_library {
     static constexpr const char* name = "quat";
     template <class T>
-    static quat::quaternion<T> in(const q4<T>& q) { return {q[0], q[1], q[2], q[3]}; }
+    static quat::quaternion<T> in(const q4<T>& q) {
+        return {q[0], q[1], q[2], q[3]};
+    }
     template <class T>
-    static q4<T> out(const quat::quaternion<T>& q) { return {q.w, q.x, q.y, q.z}; }
+    static q4<T> out(const quat::quaternion<T>& q) {
+        return {q.w, q.x, q.y, q.z};
+    }
 
     template <class T>
-    static q4<T> matrix_round_trip(const q4<T>& q) { return out(quat::to_quaternion(quat::to_matrix(in(q)))); }
+    static q4<T> matrix_round_trip(const q4<T>& q) {
+        return out(quat::to_quaternion(quat::to_matrix(in(q))));
+    }
     template <class T>
-    static q4<T> normalize(const q4<T>& q) { return out(quat::normalize(in(q))); }
+    static q4<T> normalize(const q4<T>& q) {
+        return out(quat::normalize(in(q)));
+    }
     template <class T>
-    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) { return out(quat::slerp(in(a), in(b), t)); }
+    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) {
+        return out(quat::slerp(in(a), in(b), t));
+    }
     template <class T>
-    static q4<T> exp(const v3<T>& v) { return out(quat::from_rotation_vector(quat::vec3<T>{v[0], v[1], v[2]})); }
+    static q4<T> exp(const v3<T>& v) {
+        return out(quat::from_rotation_vector(quat::vec3<T>{v[0], v[1], v[2]}));
+    }
     template <class T>
     static v3<T> log(const q4<T>& q) {
         const quat::vec3<T> v = quat::to_rotation_vector(in(q));
@@ -75,19 +99,31 @@ struct quat_library {
 struct glm_library {
     static constexpr const char* name = "GLM";
     template <class T>
-    static glm::qua<T> in(const q4<T>& q) { return glm::qua<T>(q[0], q[1], q[2], q[3]); }
+    static glm::qua<T> in(const q4<T>& q) {
+        return glm::qua<T>(q[0], q[1], q[2], q[3]);
+    }
     template <class T>
-    static q4<T> out(const glm::qua<T>& q) { return {q.w, q.x, q.y, q.z}; }
+    static q4<T> out(const glm::qua<T>& q) {
+        return {q.w, q.x, q.y, q.z};
+    }
 
     template <class T>
-    static q4<T> matrix_round_trip(const q4<T>& q) { return out(glm::quat_cast(glm::mat3_cast(in(q)))); }
+    static q4<T> matrix_round_trip(const q4<T>& q) {
+        return out(glm::quat_cast(glm::mat3_cast(in(q))));
+    }
     template <class T>
-    static q4<T> normalize(const q4<T>& q) { return out(glm::normalize(in(q))); }
+    static q4<T> normalize(const q4<T>& q) {
+        return out(glm::normalize(in(q)));
+    }
     template <class T>
-    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) { return out(glm::slerp(in(a), in(b), t)); }
+    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) {
+        return out(glm::slerp(in(a), in(b), t));
+    }
     /// GLM's exp of the pure quaternion (0, v/2) is the rotation by |v| about v.
     template <class T>
-    static q4<T> exp(const v3<T>& v) { return out(glm::exp(glm::qua<T>(T(0), v[0] / 2, v[1] / 2, v[2] / 2))); }
+    static q4<T> exp(const v3<T>& v) {
+        return out(glm::exp(glm::qua<T>(T(0), v[0] / 2, v[1] / 2, v[2] / 2)));
+    }
     /// GLM's log of a unit quaternion is (0, half the rotation vector).
     template <class T>
     static v3<T> log(const q4<T>& q) {
@@ -96,7 +132,7 @@ struct glm_library {
     }
     template <class T>
     static v3<T> rotate(const q4<T>& q, const v3<T>& v) {
-        const glm::vec<3, T> r = in(q) * glm::vec<3, T>(v[0], v[1], v[2]);
+        const glm::vec<3, T> r = in(q)*glm::vec<3, T>(v[0], v[1], v[2]);
         return {r.x, r.y, r.z};
     }
     template <class T, quat::sequence S, quat::frame F>
@@ -105,7 +141,8 @@ struct glm_library {
         constexpr bool xyz_extrinsic = S == quat::sequence::xyz && F == quat::frame::extrinsic;
         if constexpr (zyx_intrinsic || xyz_extrinsic) {
             // (pitch, yaw, roll) = angles about x, y, z.
-            const glm::vec<3, T> pyr = zyx_intrinsic ? glm::vec<3, T>(a[2], a[1], a[0]) : glm::vec<3, T>(a[0], a[1], a[2]);
+            const glm::vec<3, T> pyr =
+                zyx_intrinsic ? glm::vec<3, T>(a[2], a[1], a[0]) : glm::vec<3, T>(a[0], a[1], a[2]);
             const glm::vec<3, T> back = glm::eulerAngles(glm::qua<T>(pyr));
             if (zyx_intrinsic) return v3<T>{back.z, back.y, back.x};
             return v3<T>{back.x, back.y, back.z};
@@ -121,18 +158,30 @@ struct glm_library {
 struct eigen_library {
     static constexpr const char* name = "Eigen";
     template <class T>
-    static Eigen::Quaternion<T> in(const q4<T>& q) { return Eigen::Quaternion<T>(q[0], q[1], q[2], q[3]); }
+    static Eigen::Quaternion<T> in(const q4<T>& q) {
+        return Eigen::Quaternion<T>(q[0], q[1], q[2], q[3]);
+    }
     template <class T>
-    static q4<T> out(const Eigen::Quaternion<T>& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+    static q4<T> out(const Eigen::Quaternion<T>& q) {
+        return {q.w(), q.x(), q.y(), q.z()};
+    }
     template <class T>
-    static Eigen::Matrix<T, 3, 1> axis(int i) { return Eigen::Matrix<T, 3, 1>::Unit(i); }
+    static Eigen::Matrix<T, 3, 1> axis(int i) {
+        return Eigen::Matrix<T, 3, 1>::Unit(i);
+    }
 
     template <class T>
-    static q4<T> matrix_round_trip(const q4<T>& q) { return out(Eigen::Quaternion<T>(in(q).toRotationMatrix())); }
+    static q4<T> matrix_round_trip(const q4<T>& q) {
+        return out(Eigen::Quaternion<T>(in(q).toRotationMatrix()));
+    }
     template <class T>
-    static q4<T> normalize(const q4<T>& q) { return out(in(q).normalized()); }
+    static q4<T> normalize(const q4<T>& q) {
+        return out(in(q).normalized());
+    }
     template <class T>
-    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) { return out(in(a).slerp(t, in(b))); }
+    static q4<T> slerp(const q4<T>& a, const q4<T>& b, T t) {
+        return out(in(a).slerp(t, in(b)));
+    }
     /// Eigen has no exp map on vectors; AngleAxis(|v|, v/|v|) is how its users write it.
     template <class T>
     static q4<T> exp(const v3<T>& v) {
@@ -149,7 +198,7 @@ struct eigen_library {
     }
     template <class T>
     static v3<T> rotate(const q4<T>& q, const v3<T>& v) {
-        const Eigen::Matrix<T, 3, 1> r = in(q) * Eigen::Matrix<T, 3, 1>(v[0], v[1], v[2]);
+        const Eigen::Matrix<T, 3, 1> r = in(q)*Eigen::Matrix<T, 3, 1>(v[0], v[1], v[2]);
         return {r.x(), r.y(), r.z()};
     }
     template <class T, quat::sequence S, quat::frame F>
@@ -159,10 +208,12 @@ struct eigen_library {
         const Eigen::Quaternion<T> q1(Eigen::AngleAxis<T>(a[1], axis<T>(ax[1])));
         const Eigen::Quaternion<T> q2(Eigen::AngleAxis<T>(a[2], axis<T>(ax[2])));
         if constexpr (F == quat::frame::intrinsic) {
-            const Eigen::Matrix<T, 3, 1> e = (q0 * q1 * q2).toRotationMatrix().eulerAngles(ax[0], ax[1], ax[2]);
+            const Eigen::Matrix<T, 3, 1> e =
+                (q0 * q1 * q2).toRotationMatrix().eulerAngles(ax[0], ax[1], ax[2]);
             return v3<T>{e[0], e[1], e[2]};
         } else {
-            const Eigen::Matrix<T, 3, 1> e = (q2 * q1 * q0).toRotationMatrix().eulerAngles(ax[2], ax[1], ax[0]);
+            const Eigen::Matrix<T, 3, 1> e =
+                (q2 * q1 * q0).toRotationMatrix().eulerAngles(ax[2], ax[1], ax[0]);
             return v3<T>{e[2], e[1], e[0]};
         }
     }

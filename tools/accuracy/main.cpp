@@ -48,9 +48,10 @@ struct runner {
     int n(int full, int quick) const { return opt.quick ? quick : full; }
     rng fresh(std::uint64_t salt) const { return rng{seed * 7919 + salt}; }
 
-    row make(const std::string& op, const std::string& inputs, const std::string& unit, double target,
-             double accepted = std::numeric_limits<double>::quiet_NaN()) const {
-        return row{op, inputs, type_name<T>(), unit, target, std::nullopt, std::nullopt, std::nullopt, accepted};
+    row make(const std::string& op, const std::string& inputs, const std::string& unit,
+             double target, double accepted = std::numeric_limits<double>::quiet_NaN()) const {
+        return row{op,           inputs,       type_name<T>(), unit,    target,
+                   std::nullopt, std::nullopt, std::nullopt,   accepted};
     }
 
     // Runs measure(lib) for the three libraries; each measure returns optional<error_stats> or error_stats.
@@ -65,31 +66,38 @@ struct runner {
     void matrix_round_trip() {
         rng g = fresh(1);
         const auto random = random_rotations<T>(g, n(100000, 3000));
-        add(make("q → matrix → q", "random rotations", "eps (max component)", target_matrix_round_trip),
+        add(make("q → matrix → q", "random rotations", "eps (max component)",
+                 target_matrix_round_trip),
             [&](auto lib) { return measure_matrix_round_trip<decltype(lib)>(random); });
         const auto edge = near_identity_and_half_turns<T>(g, n(500, 30));
-        add(make("q → matrix → q", "angle 10^-k, π − 10^-k, 0, π (k = 0..15)", "eps (max component)",
-                 target_matrix_round_trip),
+        add(make("q → matrix → q", "angle 10^-k, π − 10^-k, 0, π (k = 0..15)",
+                 "eps (max component)", target_matrix_round_trip),
             [&](auto lib) { return measure_matrix_round_trip<decltype(lib)>(edge); });
     }
 
     void euler() {
         const char* unit = "eps (rotation angle, rad)";
         for (bool gimbal : {false, true}) {
-            const char* inputs = gimbal ? "middle angle at lock and lock ± 10^-k (k = 1..15)" : "random angles";
+            const char* inputs =
+                gimbal ? "middle angle at lock and lock ± 10^-k (k = 1..15)" : "random angles";
             const int count = gimbal ? n(40, 3) : n(10000, 300);
             rng g = fresh(gimbal ? 3 : 2);
-            add(make("Euler → q → Euler, zyx intrinsic (GLM's convention)", inputs, unit, target_euler, accepted_euler),
-                [&](auto lib) { return measure_euler_family<decltype(lib), T>(g, count, gimbal, true, nullptr); });
+            add(make("Euler → q → Euler, zyx intrinsic (GLM's convention)", inputs, unit,
+                     target_euler, accepted_euler),
+                [&](auto lib) {
+                    return measure_euler_family<decltype(lib), T>(g, count, gimbal, true, nullptr);
+                });
             std::vector<std::pair<std::string, double>> per_convention;
-            row r = make("Euler → q → Euler, all 24 conventions", inputs, unit, target_euler, accepted_euler);
-            r.quat = measure_euler_family<quat_library, T>(g, count, gimbal, false, &per_convention);
+            row r = make("Euler → q → Euler, all 24 conventions", inputs, unit, target_euler,
+                         accepted_euler);
+            r.quat =
+                measure_euler_family<quat_library, T>(g, count, gimbal, false, &per_convention);
             r.eigen = measure_euler_family<eigen_library, T>(g, count, gimbal, false, nullptr);
             rows.push_back(r);
             if (opt.conventions)
                 for (const auto& [name, max] : per_convention)
-                    std::fprintf(stderr, "  quat %s %s %s: max %s eps\n", type_name<T>(), inputs, name.c_str(),
-                                 format_number(max).c_str());
+                    std::fprintf(stderr, "  quat %s %s %s: max %s eps\n", type_name<T>(), inputs,
+                                 name.c_str(), format_number(max).c_str());
         }
     }
 
@@ -104,7 +112,8 @@ struct runner {
         const int count = n(50000, 2000);
         auto random_pairs = [&](int k) {
             std::vector<std::pair<q4<T>, q4<T>>> p;
-            for (int i = 0; i < k; ++i) p.emplace_back(g.template unit_quaternion<T>(), g.template unit_quaternion<T>());
+            for (int i = 0; i < k; ++i)
+                p.emplace_back(g.template unit_quaternion<T>(), g.template unit_quaternion<T>());
             return p;
         };
         auto ts = [&](std::size_t k, double lo, double hi) {
@@ -113,17 +122,24 @@ struct runner {
             return t;
         };
         families.push_back({"random pairs, t ∈ [0, 1]", random_pairs(count), {}});
-        families.push_back({"a ≈ b (angle 10^-k, k = 0..15, and 0), t ∈ [0, 1]", nearby_pairs<T>(g, n(3000, 100), false), {}});
-        families.push_back({"a ≈ −b (angle π − 10^-k), t ∈ [0, 1]", nearby_pairs<T>(g, n(3000, 100), true), {}});
+        families.push_back({"a ≈ b (angle 10^-k, k = 0..15, and 0), t ∈ [0, 1]",
+                            nearby_pairs<T>(g, n(3000, 100), false),
+                            {}});
+        families.push_back(
+            {"a ≈ −b (angle π − 10^-k), t ∈ [0, 1]", nearby_pairs<T>(g, n(3000, 100), true), {}});
         families.push_back({"random pairs, t ∈ [−1, 2] (extrapolation)", random_pairs(count), {}});
         for (std::size_t f = 0; f < families.size(); ++f)
-            families[f].ts = f == 3 ? ts(families[f].pairs.size(), -1, 2) : ts(families[f].pairs.size(), 0, 1);
+            families[f].ts =
+                f == 3 ? ts(families[f].pairs.size(), -1, 2) : ts(families[f].pairs.size(), 0, 1);
         for (const family& fam : families) {
             row norm_row = make("slerp: \\|r\\| − 1", fam.name, "eps", target_slerp_norm);
             const bool extrapolating = &fam == &families.back();
-            row angle_row = make("slerp: angle to reference", fam.name, "eps (rotation angle, rad)", target_slerp_angle,
-                                 extrapolating ? accepted_slerp_extrapolation : std::numeric_limits<double>::quiet_NaN());
-            auto run = [&](auto lib, std::optional<error_stats>& norm_cell, std::optional<error_stats>& angle_cell) {
+            row angle_row = make("slerp: angle to reference", fam.name, "eps (rotation angle, rad)",
+                                 target_slerp_angle,
+                                 extrapolating ? accepted_slerp_extrapolation
+                                               : std::numeric_limits<double>::quiet_NaN());
+            auto run = [&](auto lib, std::optional<error_stats>& norm_cell,
+                           std::optional<error_stats>& angle_cell) {
                 error_stats ne, ae;
                 measure_slerp<decltype(lib)>(fam.pairs, fam.ts, ne, ae);
                 norm_cell = ne;
@@ -142,24 +158,28 @@ struct runner {
         const int e = sizeof(T) == sizeof(float) ? 37 : 300;
         const std::string range = "1e-" + std::to_string(e) + " … 1e" + std::to_string(e);
         const auto same = scaled_quaternions<T>(g, n(100000, 3000), -e, e, true);
-        add(make("normalize", "\\|q\\| from " + range, "eps (max component)", target_normalize, accepted_normalize),
+        add(make("normalize", "\\|q\\| from " + range, "eps (max component)", target_normalize,
+                 accepted_normalize),
             [&](auto lib) { return measure_normalize<decltype(lib)>(same); });
         const auto mixed = scaled_quaternions<T>(g, n(100000, 3000), -e, e, false);
-        add(make("normalize", "each component from " + range, "eps (max component)", target_normalize, accepted_normalize),
+        add(make("normalize", "each component from " + range, "eps (max component)",
+                 target_normalize, accepted_normalize),
             [&](auto lib) { return measure_normalize<decltype(lib)>(mixed); });
     }
 
     void exp_log() {
         rng g = fresh(6);
         const auto vs = rotation_vectors<T>(g, n(100000, 3000));
-        add(make("exp: rotation vector → q", "angle 1e-10 … π", "eps (w abs., vector rel.)", target_exp_log),
+        add(make("exp: rotation vector → q", "angle 1e-10 … π", "eps (w abs., vector rel.)",
+                 target_exp_log),
             [&](auto lib) { return measure_exp<decltype(lib)>(vs); });
         add(make("log: q → rotation vector", "angle 1e-10 … π", "eps (relative)", target_exp_log),
             [&](auto lib) { return measure_log<decltype(lib)>(vs); });
     }
 
     void rotate() {
-        add(make("rotate: \\|v\\| preserved", "random unit q (rounded once), \\|v\\| 1e-3 … 1e3", "eps (relative)", target_rotate),
+        add(make("rotate: \\|v\\| preserved", "random unit q (rounded once), \\|v\\| 1e-3 … 1e3",
+                 "eps (relative)", target_rotate),
             [&](auto lib) {
                 rng g = fresh(7);
                 return measure_rotate<decltype(lib), T>(g, n(100000, 3000));
@@ -186,25 +206,30 @@ int run(const options& opt) {
     d.rotate();
 
     print_table(rows);
-    std::printf("\nCells: max / RMS error in the unit of the row (eps = machine epsilon of the type). "
-                "Reference: %s. Seed %llu, %s sample counts.\n",
-                reference_name(), static_cast<unsigned long long>(seed), opt.quick ? "quick" : "full");
+    std::printf(
+        "\nCells: max / RMS error in the unit of the row (eps = machine epsilon of the type). "
+        "Reference: %s. Seed %llu, %s sample counts.\n",
+        reference_name(), static_cast<unsigned long long>(seed), opt.quick ? "quick" : "full");
     int missed = 0, unexplained = 0;
     for (const row& r : rows) {
         if (r.missed()) {
             ++missed;
             if (r.unexplained_miss()) ++unexplained;
-            std::fprintf(stderr, "MISSED: %s [%s, %s]: max %s > %s; worst input %s\n", r.operation.c_str(),
-                         r.inputs.c_str(), r.scalar.c_str(), format_number(r.quat->max).c_str(),
-                         format_number(r.target).c_str(), r.quat->worst_case.c_str());
+            std::fprintf(stderr, "MISSED: %s [%s, %s]: max %s > %s; worst input %s\n",
+                         r.operation.c_str(), r.inputs.c_str(), r.scalar.c_str(),
+                         format_number(r.quat->max).c_str(), format_number(r.target).c_str(),
+                         r.quat->worst_case.c_str());
         } else if (opt.worst) {
-            std::fprintf(stderr, "worst: %s [%s, %s]: %s at %s\n", r.operation.c_str(), r.inputs.c_str(),
-                         r.scalar.c_str(), format_number(r.quat->max).c_str(), r.quat->worst_case.c_str());
+            std::fprintf(stderr, "worst: %s [%s, %s]: %s at %s\n", r.operation.c_str(),
+                         r.inputs.c_str(), r.scalar.c_str(), format_number(r.quat->max).c_str(),
+                         r.quat->worst_case.c_str());
         }
     }
     if (missed > 0)
-        std::fprintf(stderr, "%d of quat's accuracy targets missed, %d beyond the ceilings the README explains\n",
-                     missed, unexplained);
+        std::fprintf(
+            stderr,
+            "%d of quat's accuracy targets missed, %d beyond the ceilings the README explains\n",
+            missed, unexplained);
     return unexplained > 0 ? 1 : 0;
 }
 

@@ -14,14 +14,15 @@ namespace accuracy {
 template <class T>
 std::string describe(const q4<T>& q) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "q = (%.17g, %.17g, %.17g, %.17g)", double(q[0]), double(q[1]), double(q[2]),
-                  double(q[3]));
+    std::snprintf(buf, sizeof buf, "q = (%.17g, %.17g, %.17g, %.17g)", double(q[0]), double(q[1]),
+                  double(q[2]), double(q[3]));
     return buf;
 }
 template <class T>
 std::string describe(const v3<T>& v) {
     char buf[128];
-    std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", double(v[0]), double(v[1]), double(v[2]));
+    std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", double(v[0]), double(v[1]),
+                  double(v[2]));
     return buf;
 }
 
@@ -30,7 +31,9 @@ inline real max_abs_difference(const hq& a, const hq& b) {
     for (int i = 0; i < 4; ++i) m = r_abs(a[i] - b[i]) > m ? r_abs(a[i] - b[i]) : m;
     return m;
 }
-inline real dot4(const hq& a, const hq& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]; }
+inline real dot4(const hq& a, const hq& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
 inline hq negated(const hq& q) { return {-q[0], -q[1], -q[2], -q[3]}; }
 
 // ---- input families ------------------------------------------------------------------------
@@ -56,7 +59,8 @@ std::vector<q4<T>> near_identity_and_half_turns(rng& g, int random_axes) {
     std::vector<q4<T>> out;
     for (const auto& a : axes)
         for (double angle : angles)
-            out.push_back(narrow<T>(exp_map(widen(v3<double>{angle * a[0], angle * a[1], angle * a[2]}))));
+            out.push_back(
+                narrow<T>(exp_map(widen(v3<double>{angle * a[0], angle * a[1], angle * a[2]}))));
     return out;
 }
 
@@ -81,7 +85,8 @@ error_stats measure_normalize(const std::vector<q4<T>>& inputs) {
     error_stats s;
     for (const q4<T>& q : inputs) {
         const hq ref = normalized(widen(q));
-        if (s.add(in_eps<T>(max_abs_difference(widen(Lib::normalize(q)), ref)))) s.worst_case = describe(q);
+        if (s.add(in_eps<T>(max_abs_difference(widen(Lib::normalize(q)), ref))))
+            s.worst_case = describe(q);
     }
     return s;
 }
@@ -107,14 +112,15 @@ struct slerp_case {
 
 /// slerp: norm error ||r| - 1| and rotation-angle error to the reference, both in eps.
 template <class Lib, class T>
-void measure_slerp(const std::vector<std::pair<q4<T>, q4<T>>>& pairs, const std::vector<T>& ts, error_stats& norm_err,
-                   error_stats& angle_err) {
+void measure_slerp(const std::vector<std::pair<q4<T>, q4<T>>>& pairs, const std::vector<T>& ts,
+                   error_stats& norm_err, error_stats& angle_err) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
         const auto& [a, b] = pairs[i];
         const T t = ts[i];
         const hq got = widen(Lib::slerp(a, b, t));
         const hq ref = slerp(widen(a), widen(b), real(t));
-        const std::string what = "a = " + describe(a) + ", b = " + describe(b) + ", t = " + std::to_string(double(t));
+        const std::string what =
+            "a = " + describe(a) + ", b = " + describe(b) + ", t = " + std::to_string(double(t));
         if (norm_err.add(in_eps<T>(r_abs(norm(got) - 1)))) norm_err.worst_case = what;
         if (angle_err.add(in_eps<T>(rotation_angle_between(got, ref)))) angle_err.worst_case = what;
     }
@@ -129,7 +135,8 @@ std::vector<std::pair<q4<T>, q4<T>>> nearby_pairs(rng& g, int per_k, bool opposi
         for (int i = 0; i < per_k; ++i) {
             const q4<T> a = g.template unit_quaternion<T>();
             const v3<double> n = g.unit_vector();
-            hq b = mul(widen(a), exp_map(widen(v3<double>{delta * n[0], delta * n[1], delta * n[2]})));
+            hq b =
+                mul(widen(a), exp_map(widen(v3<double>{delta * n[0], delta * n[1], delta * n[2]})));
             if (opposite) b = negated(b);
             out.emplace_back(a, narrow<T>(b));
         }
@@ -142,7 +149,9 @@ template <class T>
 std::vector<v3<T>> rotation_vectors(rng& g, int n) {
     std::vector<v3<T>> out;
     for (int i = 0; i < n; ++i) {
-        const double angle = i == n - 1 ? 3.141592653589793 : std::pow(10.0, g.uniform(-10, std::log10(3.141592653589793)));
+        const double angle = i == n - 1
+                                 ? 3.141592653589793
+                                 : std::pow(10.0, g.uniform(-10, std::log10(3.141592653589793)));
         const v3<double> a = g.unit_vector();
         out.push_back(narrow<T>(v3<double>{angle * a[0], angle * a[1], angle * a[2]}));
     }

@@ -57,7 +57,9 @@ inline hq mul(const hq& a, const hq& b) {
             a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
 }
 inline hq conj(const hq& q) { return {q[0], -q[1], -q[2], -q[3]}; }
-inline real norm(const hq& q) { return r_sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]); }
+inline real norm(const hq& q) {
+    return r_sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+}
 inline real norm(const hv& v) { return r_sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 inline hq normalized(const hq& q) {
     const real n = norm(q);
@@ -114,7 +116,8 @@ inline hq slerp(const hq& a_in, const hq& b_in, real t) {
     if (theta == 0) return a;
     const real ka = r_sin((1 - t) * theta) / r_sin(theta);
     const real kb = r_sin(t * theta) / r_sin(theta);
-    return {ka * a[0] + kb * b[0], ka * a[1] + kb * b[1], ka * a[2] + kb * b[2], ka * a[3] + kb * b[3]};
+    return {ka * a[0] + kb * b[0], ka * a[1] + kb * b[1], ka * a[2] + kb * b[2],
+            ka * a[3] + kb * b[3]};
 }
 
 }  // namespace accuracy
