@@ -110,32 +110,41 @@ template <template <class> class Lib, class T>
 void register_library() {
     using L = Lib<T>;
     const char* type = type_name<T>;
-    benchmark::RegisterBenchmark(name("compose", L::name, "quaternion", type).c_str(), compose<L, quaternion_rep>);
-    benchmark::RegisterBenchmark(name("compose", L::name, "matrix", type).c_str(), compose<L, matrix_rep>);
+    benchmark::RegisterBenchmark(name("compose", L::name, "quaternion", type).c_str(),
+                                 compose<L, quaternion_rep>);
+    benchmark::RegisterBenchmark(name("compose", L::name, "matrix", type).c_str(),
+                                 compose<L, matrix_rep>);
     for (const long long k : {2LL, 8LL, 64LL, 1024LL}) {
         // quat's quaternion entry is its compose(span); the sequential loop runs as chain_sequential.
         const std::string library = L::name;
         if (library == "quat") {
-            benchmark::RegisterBenchmark(name("chain", "quat", "quaternion", type, k).c_str(), chain_span<T>, k);
-            benchmark::RegisterBenchmark(name("chain_sequential", "quat", "quaternion", type, k).c_str(),
-                                         chain<L, quaternion_rep>, k);
+            benchmark::RegisterBenchmark(name("chain", "quat", "quaternion", type, k).c_str(),
+                                         chain_span<T>, k);
+            benchmark::RegisterBenchmark(
+                name("chain_sequential", "quat", "quaternion", type, k).c_str(),
+                chain<L, quaternion_rep>, k);
         } else {
             benchmark::RegisterBenchmark(name("chain", L::name, "quaternion", type, k).c_str(),
                                          chain<L, quaternion_rep>, k);
         }
-        benchmark::RegisterBenchmark(name("chain", L::name, "matrix", type, k).c_str(), chain<L, matrix_rep>, k);
+        benchmark::RegisterBenchmark(name("chain", L::name, "matrix", type, k).c_str(),
+                                     chain<L, matrix_rep>, k);
     }
-    benchmark::RegisterBenchmark(name("drift", L::name, "quaternion", type, 1024).c_str(), drift<L>, 1024, false);
-    benchmark::RegisterBenchmark(name("drift_normalized", L::name, "quaternion", type, 1024).c_str(), drift<L>, 1024,
-                                 true);
+    benchmark::RegisterBenchmark(name("drift", L::name, "quaternion", type, 1024).c_str(), drift<L>,
+                                 1024, false);
+    benchmark::RegisterBenchmark(
+        name("drift_normalized", L::name, "quaternion", type, 1024).c_str(), drift<L>, 1024, true);
     if (!std::is_same_v<T, float>) return;
     for (const long long n : {1LL, 2LL, 4LL, 8LL, 16LL, 64LL, 256LL}) {
-        benchmark::RegisterBenchmark(name("apply_chain_composed", L::name, "quaternion", type, n).c_str(),
-                                     apply_composed<L, quaternion_rep>, n);
-        benchmark::RegisterBenchmark(name("apply_chain_composed", L::name, "matrix", type, n).c_str(),
-                                     apply_composed<L, matrix_rep>, n);
-        benchmark::RegisterBenchmark(name("apply_chain_each", L::name, "quaternion", type, n).c_str(),
-                                     apply_each<L, quaternion_rep>, n);
+        benchmark::RegisterBenchmark(
+            name("apply_chain_composed", L::name, "quaternion", type, n).c_str(),
+            apply_composed<L, quaternion_rep>, n);
+        benchmark::RegisterBenchmark(
+            name("apply_chain_composed", L::name, "matrix", type, n).c_str(),
+            apply_composed<L, matrix_rep>, n);
+        benchmark::RegisterBenchmark(
+            name("apply_chain_each", L::name, "quaternion", type, n).c_str(),
+            apply_each<L, quaternion_rep>, n);
         benchmark::RegisterBenchmark(name("apply_chain_each", L::name, "matrix", type, n).c_str(),
                                      apply_each<L, matrix_rep>, n);
     }

@@ -86,7 +86,8 @@ void rotate_batch_memcpy(benchmark::State& state, long long count) {
 template <class T>
 const std::vector<long long>& batch_sizes() {
     // 64 ... 4M points in steps of 4: L1, L2, L3 and main memory.
-    static const std::vector<long long> sizes = {64, 256, 1024, 4096, 16384, 65536, 262144, 1048576, 4194304};
+    static const std::vector<long long> sizes = {64,    256,    1024,    4096,   16384,
+                                                 65536, 262144, 1048576, 4194304};
     return sizes;
 }
 
@@ -117,8 +118,9 @@ void register_rotate() {
     register_library<lib_glm, double>();
     register_library<lib_eigen, double>();
     for (const long long n : batch_sizes<float>()) {
-        benchmark::RegisterBenchmark(name("rotate_batch", "quat", "quaternion_soa", "float", n).c_str(),
-                                     rotate_batch_soa<float>, n);
+        benchmark::RegisterBenchmark(
+            name("rotate_batch", "quat", "quaternion_soa", "float", n).c_str(),
+            rotate_batch_soa<float>, n);
         benchmark::RegisterBenchmark(name("rotate_batch", "memcpy", "bytes", "float", n).c_str(),
                                      rotate_batch_memcpy<float>, n);
     }

@@ -28,8 +28,9 @@ template <class T>
 inline const char* type_name = std::is_same_v<T, float> ? "float" : "double";
 
 /// "<operation>/<library>/<representation>/<type>" plus "/<n>" when n >= 0.
-inline std::string name(const std::string& operation, const std::string& library, const std::string& representation,
-                        const std::string& type, long long n = -1) {
+inline std::string name(const std::string& operation, const std::string& library,
+                        const std::string& representation, const std::string& type,
+                        long long n = -1) {
     std::string s = operation + "/" + library + "/" + representation + "/" + type;
     if (n >= 0) s += "/" + std::to_string(n);
     return s;
@@ -41,13 +42,16 @@ public:
     explicit random_source(std::uint64_t s = seed) : engine_(s) {}
     quat::quatd rotation() {
         for (;;) {
-            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_), z = gauss_(engine_);
+            const double w = gauss_(engine_), x = gauss_(engine_), y = gauss_(engine_),
+                         z = gauss_(engine_);
             const double n = std::sqrt(w * w + x * x + y * y + z * z);
             if (n > 1e-3) return {w / n, x / n, y / n, z / n};
         }
     }
     quat::vec3<double> vector() { return {gauss_(engine_), gauss_(engine_), gauss_(engine_)}; }
-    double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(engine_); }
+    double uniform(double low, double high) {
+        return std::uniform_real_distribution<double>(low, high)(engine_);
+    }
 
 private:
     std::mt19937_64 engine_;
@@ -62,7 +66,9 @@ struct lib_quat {
     using quaternion = quat::quaternion<T>;
     using matrix = quat::rotation_matrix<T>;
     using vector = quat::vec3<T>;
-    static quaternion make_quaternion(const quat::quatd& q) { return {T(q.w), T(q.x), T(q.y), T(q.z)}; }
+    static quaternion make_quaternion(const quat::quatd& q) {
+        return {T(q.w), T(q.x), T(q.y), T(q.z)};
+    }
     static matrix make_matrix(const quat::quatd& q) { return quat::to_matrix(make_quaternion(q)); }
     static vector make_vector(const quat::vec3<double>& v) { return {T(v.x), T(v.y), T(v.z)}; }
     static vector rotate(const quaternion& q, const vector& v) { return quat::rotate(q, v); }
@@ -72,8 +78,12 @@ struct lib_quat {
     static quaternion identity_quaternion() { return quaternion::identity(); }
     static matrix identity_matrix() { return matrix::identity(); }
     static quaternion normalize(const quaternion& q) { return quat::normalize(q); }
-    static quaternion slerp(const quaternion& a, const quaternion& b, T t) { return quat::slerp(a, b, t); }
-    static quaternion nlerp(const quaternion& a, const quaternion& b, T t) { return quat::nlerp(a, b, t); }
+    static quaternion slerp(const quaternion& a, const quaternion& b, T t) {
+        return quat::slerp(a, b, t);
+    }
+    static quaternion nlerp(const quaternion& a, const quaternion& b, T t) {
+        return quat::nlerp(a, b, t);
+    }
     static T norm(const quaternion& q) { return quat::norm(q); }
     template <class R>
     static void rotate_batch(const R& r, const vector* in, vector* out, std::size_t n) {
@@ -89,9 +99,13 @@ struct lib_glm {
     using quaternion = glm::qua<T, glm::defaultp>;
     using matrix = glm::mat<3, 3, T, glm::defaultp>;
     using vector = glm::vec<3, T, glm::defaultp>;
-    static quaternion make_quaternion(const quat::quatd& q) { return quaternion(T(q.w), T(q.x), T(q.y), T(q.z)); }
+    static quaternion make_quaternion(const quat::quatd& q) {
+        return quaternion(T(q.w), T(q.x), T(q.y), T(q.z));
+    }
     static matrix make_matrix(const quat::quatd& q) { return glm::mat3_cast(make_quaternion(q)); }
-    static vector make_vector(const quat::vec3<double>& v) { return vector(T(v.x), T(v.y), T(v.z)); }
+    static vector make_vector(const quat::vec3<double>& v) {
+        return vector(T(v.x), T(v.y), T(v.z));
+    }
     static vector rotate(const quaternion& q, const vector& v) { return q * v; }
     static vector rotate(const matrix& m, const vector& v) { return m * v; }
     static quaternion compose(const quaternion& a, const quaternion& b) { return a * b; }
@@ -99,7 +113,9 @@ struct lib_glm {
     static quaternion identity_quaternion() { return quaternion(T(1), T(0), T(0), T(0)); }
     static matrix identity_matrix() { return matrix(T(1)); }
     static quaternion normalize(const quaternion& q) { return glm::normalize(q); }
-    static quaternion slerp(const quaternion& a, const quaternion& b, T t) { return glm::slerp(a, b, t); }
+    static quaternion slerp(const quaternion& a, const quaternion& b, T t) {
+        return glm::slerp(a, b, t);
+    }
     // GLM has no nlerp; its users write normalize(lerp) after choosing the nearer sign themselves.
     static quaternion nlerp(const quaternion& a, const quaternion& b, T t) {
         return glm::normalize(glm::lerp(a, glm::dot(a, b) < T(0) ? -b : b, t));
@@ -120,9 +136,15 @@ struct lib_eigen {
     using quaternion = Eigen::Quaternion<T>;
     using matrix = Eigen::Matrix<T, 3, 3>;
     using vector = Eigen::Matrix<T, 3, 1>;
-    static quaternion make_quaternion(const quat::quatd& q) { return quaternion(T(q.w), T(q.x), T(q.y), T(q.z)); }
-    static matrix make_matrix(const quat::quatd& q) { return make_quaternion(q).toRotationMatrix(); }
-    static vector make_vector(const quat::vec3<double>& v) { return vector(T(v.x), T(v.y), T(v.z)); }
+    static quaternion make_quaternion(const quat::quatd& q) {
+        return quaternion(T(q.w), T(q.x), T(q.y), T(q.z));
+    }
+    static matrix make_matrix(const quat::quatd& q) {
+        return make_quaternion(q).toRotationMatrix();
+    }
+    static vector make_vector(const quat::vec3<double>& v) {
+        return vector(T(v.x), T(v.y), T(v.z));
+    }
     static vector rotate(const quaternion& q, const vector& v) { return q * v; }
     static vector rotate(const matrix& m, const vector& v) { return m * v; }
     static quaternion compose(const quaternion& a, const quaternion& b) { return a * b; }
@@ -152,18 +174,26 @@ struct quaternion_rep {
     template <class Lib>
     using type = typename Lib::quaternion;
     template <class Lib>
-    static type<Lib> make(const quat::quatd& q) { return Lib::make_quaternion(q); }
+    static type<Lib> make(const quat::quatd& q) {
+        return Lib::make_quaternion(q);
+    }
     template <class Lib>
-    static type<Lib> identity() { return Lib::identity_quaternion(); }
+    static type<Lib> identity() {
+        return Lib::identity_quaternion();
+    }
 };
 struct matrix_rep {
     static constexpr const char* name = "matrix";
     template <class Lib>
     using type = typename Lib::matrix;
     template <class Lib>
-    static type<Lib> make(const quat::quatd& q) { return Lib::make_matrix(q); }
+    static type<Lib> make(const quat::quatd& q) {
+        return Lib::make_matrix(q);
+    }
     template <class Lib>
-    static type<Lib> identity() { return Lib::identity_matrix(); }
+    static type<Lib> identity() {
+        return Lib::identity_matrix();
+    }
 };
 
 /// Registration entry points, one per source file; each registers float and double variants.

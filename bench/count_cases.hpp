@@ -60,7 +60,9 @@ inline quat::operation_counts quaternion_from_axis_angle() {
 inline quat::operation_counts rotate_naive() {
     const auto q = unit_quaternion();
     const auto v = point();
-    return count([&] { (void)(q * quat::quaternion<C>{C(0), v.x, v.y, v.z} * quat::conjugate(q)); });
+    return count([&] {
+        (void)(q * quat::quaternion<C>{C(0), v.x, v.y, v.z} * quat::conjugate(q));
+    });
 }
 inline quat::operation_counts rotate_quaternion() {
     const auto q = unit_quaternion();

@@ -19,7 +19,8 @@ struct operation_counts {
     std::int64_t trig = 0;  ///< sin, cos, atan2, asin, acos
 
     friend bool operator==(const operation_counts& a, const operation_counts& b) noexcept {
-        return a.add == b.add && a.mul == b.mul && a.div == b.div && a.sqrt == b.sqrt && a.trig == b.trig;
+        return a.add == b.add && a.mul == b.mul && a.div == b.div && a.sqrt == b.sqrt &&
+               a.trig == b.trig;
     }
 };
 
@@ -43,10 +44,18 @@ struct counted {
     constexpr explicit counted(U v) noexcept : value(static_cast<T>(v)) {}
 
     friend counted operator-(counted a) noexcept { return counted(-a.value); }
-    friend counted operator+(counted a, counted b) noexcept { return ++detail::counted_tally.add, counted(a.value + b.value); }
-    friend counted operator-(counted a, counted b) noexcept { return ++detail::counted_tally.add, counted(a.value - b.value); }
-    friend counted operator*(counted a, counted b) noexcept { return ++detail::counted_tally.mul, counted(a.value * b.value); }
-    friend counted operator/(counted a, counted b) noexcept { return ++detail::counted_tally.div, counted(a.value / b.value); }
+    friend counted operator+(counted a, counted b) noexcept {
+        return ++detail::counted_tally.add, counted(a.value + b.value);
+    }
+    friend counted operator-(counted a, counted b) noexcept {
+        return ++detail::counted_tally.add, counted(a.value - b.value);
+    }
+    friend counted operator*(counted a, counted b) noexcept {
+        return ++detail::counted_tally.mul, counted(a.value * b.value);
+    }
+    friend counted operator/(counted a, counted b) noexcept {
+        return ++detail::counted_tally.div, counted(a.value / b.value);
+    }
     friend counted& operator+=(counted& a, counted b) noexcept { return a = a + b; }
     friend counted& operator-=(counted& a, counted b) noexcept { return a = a - b; }
     friend counted& operator*=(counted& a, counted b) noexcept { return a = a * b; }
@@ -59,16 +68,28 @@ struct counted {
     friend bool operator!=(counted a, counted b) noexcept { return a.value != b.value; }
 
     // Found by argument-dependent lookup from quat's templates (`using std::sqrt; sqrt(x)`).
-    friend counted sqrt(counted a) noexcept { return ++detail::counted_tally.sqrt, counted(std::sqrt(a.value)); }
-    friend counted sin(counted a) noexcept { return ++detail::counted_tally.trig, counted(std::sin(a.value)); }
-    friend counted cos(counted a) noexcept { return ++detail::counted_tally.trig, counted(std::cos(a.value)); }
-    friend counted asin(counted a) noexcept { return ++detail::counted_tally.trig, counted(std::asin(a.value)); }
-    friend counted acos(counted a) noexcept { return ++detail::counted_tally.trig, counted(std::acos(a.value)); }
+    friend counted sqrt(counted a) noexcept {
+        return ++detail::counted_tally.sqrt, counted(std::sqrt(a.value));
+    }
+    friend counted sin(counted a) noexcept {
+        return ++detail::counted_tally.trig, counted(std::sin(a.value));
+    }
+    friend counted cos(counted a) noexcept {
+        return ++detail::counted_tally.trig, counted(std::cos(a.value));
+    }
+    friend counted asin(counted a) noexcept {
+        return ++detail::counted_tally.trig, counted(std::asin(a.value));
+    }
+    friend counted acos(counted a) noexcept {
+        return ++detail::counted_tally.trig, counted(std::acos(a.value));
+    }
     friend counted atan2(counted y, counted x) noexcept {
         return ++detail::counted_tally.trig, counted(std::atan2(y.value, x.value));
     }
     friend counted abs(counted a) noexcept { return counted(std::abs(a.value)); }
-    friend counted copysign(counted a, counted b) noexcept { return counted(std::copysign(a.value, b.value)); }
+    friend counted copysign(counted a, counted b) noexcept {
+        return counted(std::copysign(a.value, b.value));
+    }
     friend counted fma(counted a, counted b, counted c) noexcept {
         ++detail::counted_tally.add;
         ++detail::counted_tally.mul;
@@ -88,10 +109,22 @@ struct std::numeric_limits<quat::counted<T>> {
     static constexpr bool has_infinity = std::numeric_limits<T>::has_infinity;
     static constexpr bool has_quiet_NaN = std::numeric_limits<T>::has_quiet_NaN;
     static constexpr int digits = std::numeric_limits<T>::digits;
-    static constexpr quat::counted<T> epsilon() noexcept { return quat::counted<T>(std::numeric_limits<T>::epsilon()); }
-    static constexpr quat::counted<T> min() noexcept { return quat::counted<T>(std::numeric_limits<T>::min()); }
-    static constexpr quat::counted<T> max() noexcept { return quat::counted<T>(std::numeric_limits<T>::max()); }
-    static constexpr quat::counted<T> lowest() noexcept { return quat::counted<T>(std::numeric_limits<T>::lowest()); }
-    static constexpr quat::counted<T> infinity() noexcept { return quat::counted<T>(std::numeric_limits<T>::infinity()); }
-    static constexpr quat::counted<T> quiet_NaN() noexcept { return quat::counted<T>(std::numeric_limits<T>::quiet_NaN()); }
+    static constexpr quat::counted<T> epsilon() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::epsilon());
+    }
+    static constexpr quat::counted<T> min() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::min());
+    }
+    static constexpr quat::counted<T> max() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::max());
+    }
+    static constexpr quat::counted<T> lowest() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::lowest());
+    }
+    static constexpr quat::counted<T> infinity() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::infinity());
+    }
+    static constexpr quat::counted<T> quiet_NaN() noexcept {
+        return quat::counted<T>(std::numeric_limits<T>::quiet_NaN());
+    }
 };

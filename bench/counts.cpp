@@ -15,23 +15,26 @@ struct thesis_row {
 
 void print_row(const char* what, const quat::operation_counts& c) {
     std::printf("  %-52s %5lld %5lld %5lld %5lld %5lld\n", what, static_cast<long long>(c.add),
-                static_cast<long long>(c.mul), static_cast<long long>(c.div), static_cast<long long>(c.sqrt),
-                static_cast<long long>(c.trig));
+                static_cast<long long>(c.mul), static_cast<long long>(c.div),
+                static_cast<long long>(c.sqrt), static_cast<long long>(c.trig));
 }
 void print_thesis(const char* what, thesis_row t) {
     std::printf("  %-52s %5ld %5ld %5ld %5s %5ld\n", what, t.add, t.mul, t.div, "-", t.trig);
 }
 void header(const char* title) {
-    std::printf("\n%s\n  %-52s %5s %5s %5s %5s %5s\n", title, "", "add", "mul", "div", "sqrt", "trig");
+    std::printf("\n%s\n  %-52s %5s %5s %5s %5s %5s\n", title, "", "add", "mul", "div", "sqrt",
+                "trig");
 }
 
 }  // namespace
 
 int print_counts() {
     using namespace count_cases;
-    std::printf("Operation counts of quat's templates, run on quat::counted<double> (bench/counted.hpp).\n"
-                "add = additions and subtractions; negations and comparisons are free; the thesis (Kivi 2019,\n"
-                "MATLAB) did not count square roots.\n");
+    std::printf(
+        "Operation counts of quat's templates, run on quat::counted<double> (bench/counted.hpp).\n"
+        "add = additions and subtractions; negations and comparisons are free; the thesis (Kivi "
+        "2019,\n"
+        "MATLAB) did not count square roots.\n");
 
     header("Table 3.1: build the rotation, then rotate one point once");
     print_thesis("matrix from Euler angles (thesis)", {10, 25, 0, 6});
@@ -45,16 +48,25 @@ int print_counts() {
     print_row("quaternion from axis + angle (quat)", quaternion_from_axis_angle());
     std::printf(
         "  why they differ:\n"
-        "  - matrix from Euler: to_matrix(euler) serves all 24 conventions by turning two columns per axis\n"
-        "    rotation of a running matrix (12 mul, 6 add each, identity included); the thesis multiplied out\n"
+        "  - matrix from Euler: to_matrix(euler) serves all 24 conventions by turning two columns "
+        "per axis\n"
+        "    rotation of a running matrix (12 mul, 6 add each, identity included); the thesis "
+        "multiplied out\n"
         "    the z-y-x product by hand and exploited its zeros.\n"
-        "  - quaternion from Euler: to_quaternion(euler) is a closed-form product of the three half-angle\n"
-        "    quaternions (no multiplications by zero), and rotate(q, v) is v + w t + u x t (18 mul, 12 add)\n"
-        "    instead of the thesis's two full Hamilton products q p q* (32 mul, 24 add, the naive row). Its 6\n"
-        "    divisions are angle / 2 computed separately for each cos and sin (3 would do, or none with * 0.5).\n"
-        "  - quaternion from axis + angle: the half angle costs one division (angle / 2) that the thesis's\n"
-        "    (wrong) full-angle formula 2.26 skipped; the rotation itself is again the 15-mul form.\n"
-        "  - matrix from axis + angle: Rodrigues' formula with the products shared (xk, xs, ...).\n");
+        "  - quaternion from Euler: to_quaternion(euler) is a closed-form product of the three "
+        "half-angle\n"
+        "    quaternions (no multiplications by zero), and rotate(q, v) is v + w t + u x t (18 "
+        "mul, 12 add)\n"
+        "    instead of the thesis's two full Hamilton products q p q* (32 mul, 24 add, the naive "
+        "row). Its 6\n"
+        "    divisions are angle / 2 computed separately for each cos and sin (3 would do, or none "
+        "with * 0.5).\n"
+        "  - quaternion from axis + angle: the half angle costs one division (angle / 2) that the "
+        "thesis's\n"
+        "    (wrong) full-angle formula 2.26 skipped; the rotation itself is again the 15-mul "
+        "form.\n"
+        "  - matrix from axis + angle: Rodrigues' formula with the products shared (xk, xs, "
+        "...).\n");
 
     header("Rotating a point (rotation already built)");
     print_row("quaternion, naive q (0, v) q*: two Hamilton products", rotate_naive());
@@ -67,8 +79,8 @@ int print_counts() {
     print_row("matrix product A * B", compose_matrices());
     print_row("to_matrix(q) (to apply a composed quaternion as M v)", quaternion_to_matrix());
 
-    std::printf("\nTable 3.2: numbers stored per rotation\n  %-32s %7s %14s %14s\n", "", "thesis", "quat float",
-                "quat double");
+    std::printf("\nTable 3.2: numbers stored per rotation\n  %-32s %7s %14s %14s\n", "", "thesis",
+                "quat float", "quat double");
     const struct {
         const char* name;
         int thesis;
@@ -76,14 +88,17 @@ int print_counts() {
     } storage[] = {
         {"Euler angles", 3, sizeof(quat::euler<float>), sizeof(quat::euler<double>)},
         {"axis + angle", 4, sizeof(quat::axis_angle<float>), sizeof(quat::axis_angle<double>)},
-        {"rotation matrix", 9, sizeof(quat::rotation_matrix<float>), sizeof(quat::rotation_matrix<double>)},
+        {"rotation matrix", 9, sizeof(quat::rotation_matrix<float>),
+         sizeof(quat::rotation_matrix<double>)},
         {"quaternion", 4, sizeof(quat::quaternion<float>), sizeof(quat::quaternion<double>)},
     };
     for (const auto& s : storage)
-        std::printf("  %-32s %7d %5zu (%2zu B) %5zu (%2zu B)\n", s.name, s.thesis, s.f / sizeof(float), s.f,
-                    s.d / sizeof(double), s.d);
-    std::printf("  The types hold exactly the thesis's numbers: no padding, no cached values; the Euler type\n"
-                "  carries its axis sequence and frame in the type, not in memory.\n");
+        std::printf("  %-32s %7d %5zu (%2zu B) %5zu (%2zu B)\n", s.name, s.thesis,
+                    s.f / sizeof(float), s.f, s.d / sizeof(double), s.d);
+    std::printf(
+        "  The types hold exactly the thesis's numbers: no padding, no cached values; the Euler "
+        "type\n"
+        "  carries its axis sequence and frame in the type, not in memory.\n");
     return 0;
 }
 

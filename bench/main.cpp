@@ -48,13 +48,16 @@ public:
     std::vector<measurement> results;
 };
 
-std::string row_key(const measurement& m) { return m.operation + "/" + m.representation + "/" + m.type + (m.size.empty() ? "" : "/" + m.size); }
+std::string row_key(const measurement& m) {
+    return m.operation + "/" + m.representation + "/" + m.type +
+           (m.size.empty() ? "" : "/" + m.size);
+}
 
 double find(const std::vector<measurement>& all, const std::string& name) {
     const measurement key = parse(name);
     for (const measurement& m : all)
-        if (m.operation == key.operation && m.library == key.library && m.representation == key.representation &&
-            m.type == key.type && m.size == key.size)
+        if (m.operation == key.operation && m.library == key.library &&
+            m.representation == key.representation && m.type == key.type && m.size == key.size)
             return m.ns_per_item;
     return 0;
 }
@@ -67,9 +70,11 @@ void print_table(const std::vector<measurement>& all) {
         if (rows.find(key) == rows.end()) order.push_back(key);
         rows[key][m.library] = m.ns_per_item;
     }
-    std::printf("\nns per item (per point, product, value or call; CPU time); ratio = other / quat, > 1 means quat is faster\n");
-    std::printf("%-52s %10s %10s %10s %9s %9s\n", "operation/representation/type[/n]", "quat", "glm", "eigen", "glm/quat",
-                "eigen/quat");
+    std::printf(
+        "\nns per item (per point, product, value or call; CPU time); ratio = other / quat, > 1 "
+        "means quat is faster\n");
+    std::printf("%-52s %10s %10s %10s %9s %9s\n", "operation/representation/type[/n]", "quat",
+                "glm", "eigen", "glm/quat", "eigen/quat");
     auto cell = [](const std::map<std::string, double>& r, const char* lib) {
         const auto it = r.find(lib);
         return it == r.end() ? std::string("-") : std::to_string(it->second).substr(0, 8);
@@ -80,14 +85,17 @@ void print_table(const std::vector<measurement>& all) {
         if (r.count("memcpy")) extra = "  memcpy " + cell(r, "memcpy");
         const double q = r.count("quat") ? r.at("quat") : 0;
         auto ratio = [&](const char* lib) {
-            return (q > 0 && r.count(lib)) ? std::to_string(r.at(lib) / q).substr(0, 6) : std::string("-");
+            return (q > 0 && r.count(lib)) ? std::to_string(r.at(lib) / q).substr(0, 6)
+                                           : std::string("-");
         };
         if (r.count("memcpy") && !r.count("quat")) {
-            std::printf("%-52s %10s %10s %10s %9s %9s%s\n", key.c_str(), "-", "-", "-", "-", "-", extra.c_str());
+            std::printf("%-52s %10s %10s %10s %9s %9s%s\n", key.c_str(), "-", "-", "-", "-", "-",
+                        extra.c_str());
             continue;
         }
-        std::printf("%-52s %10s %10s %10s %9s %9s\n", key.c_str(), cell(r, "quat").c_str(), cell(r, "glm").c_str(),
-                    cell(r, "eigen").c_str(), ratio("glm").c_str(), ratio("eigen").c_str());
+        std::printf("%-52s %10s %10s %10s %9s %9s\n", key.c_str(), cell(r, "quat").c_str(),
+                    cell(r, "glm").c_str(), cell(r, "eigen").c_str(), ratio("glm").c_str(),
+                    ratio("eigen").c_str());
     }
 }
 
@@ -97,31 +105,39 @@ void print_targets(const std::vector<measurement>& all) {
     auto target = [](const char* what, double value, double goal, bool at_least) {
         if (!(value > 0)) return std::printf("  %-62s not measured\n", what), void();
         const bool met = at_least ? value >= goal : value <= goal;
-        std::printf("  %-62s %7.2f  (goal %s %.2f)  %s\n", what, value, at_least ? ">=" : "<=", goal, met ? "met" : "MISSED");
+        std::printf("  %-62s %7.2f  (goal %s %.2f)  %s\n", what, value,
+                    at_least ? ">=" : "<=", goal, met ? "met" : "MISSED");
     };
     double best = 1e300;
-    for (const char* n : {"rotate_batch/glm/quaternion/float/1024", "rotate_batch/glm/matrix/float/1024",
-                          "rotate_batch/eigen/quaternion/float/1024", "rotate_batch/eigen/matrix/float/1024"}) {
+    for (const char* n :
+         {"rotate_batch/glm/quaternion/float/1024", "rotate_batch/glm/matrix/float/1024",
+          "rotate_batch/eigen/quaternion/float/1024", "rotate_batch/eigen/matrix/float/1024"}) {
         const double t = find(all, n);
         if (t > 0 && t < best) best = t;
     }
     const double ours = find(all, "rotate_batch/quat/quaternion/float/1024");
-    target("rotate_batch 1024: best(glm, eigen) / quat", ours > 0 && best < 1e300 ? best / ours : 0, 3.0, true);
+    target("rotate_batch 1024: best(glm, eigen) / quat", ours > 0 && best < 1e300 ? best / ours : 0,
+           3.0, true);
     const double big = find(all, "rotate_batch/quat/quaternion/float/4194304");
     const double copy = find(all, "rotate_batch/memcpy/bytes/float/4194304");
     target("rotate_batch 4194304: quat / memcpy", copy > 0 ? big / copy : 0, 1.10, false);
     const double chain = find(all, "chain/quat/quaternion/float/1024");
-    target("chain 1024: glm / quat compose(span)", chain > 0 ? find(all, "chain/glm/quaternion/float/1024") / chain : 0, 1.5, true);
-    const double slerp = find(all, "slerp/quat/quaternion/float"), glm_slerp = find(all, "slerp/glm/quaternion/float");
+    target("chain 1024: glm / quat compose(span)",
+           chain > 0 ? find(all, "chain/glm/quaternion/float/1024") / chain : 0, 1.5, true);
+    const double slerp = find(all, "slerp/quat/quaternion/float"),
+                 glm_slerp = find(all, "slerp/glm/quaternion/float");
     target("slerp: quat / glm", glm_slerp > 0 ? slerp / glm_slerp : 0, 1.0, false);
     const double batch = find(all, "slerp_batch/quat/quaternion/float/1024");
-    target("slerp_batch 1024: glm per-call slerp / quat per value", batch > 0 ? glm_slerp / batch : 0, 4.0, true);
+    target("slerp_batch 1024: glm per-call slerp / quat per value",
+           batch > 0 ? glm_slerp / batch : 0, 4.0, true);
     const double fast = find(all, "slerp_fast/quat/quaternion/float");
     target("slerp_fast: glm slerp / quat slerp_fast", fast > 0 ? glm_slerp / fast : 0, 5.0, true);
 
-    std::printf("\napply_chain (k = 8 rotations on n points, ns per point): composed first vs applied one by one\n");
-    std::printf("  %-6s %-8s %12s %12s %12s %12s  fastest\n", "n", "library", "quat.comp", "matrix.comp", "quat.each",
-                "matrix.each");
+    std::printf(
+        "\napply_chain (k = 8 rotations on n points, ns per point): composed first vs applied one "
+        "by one\n");
+    std::printf("  %-6s %-8s %12s %12s %12s %12s  fastest\n", "n", "library", "quat.comp",
+                "matrix.comp", "quat.each", "matrix.each");
     for (const char* lib : {"quat", "glm", "eigen"})
         for (const char* n : {"1", "2", "4", "8", "16", "64", "256"}) {
             const std::string l = lib, s = n;
@@ -130,11 +146,13 @@ void print_targets(const std::vector<measurement>& all) {
                                  find(all, "apply_chain_each/" + l + "/quaternion/float/" + s),
                                  find(all, "apply_chain_each/" + l + "/matrix/float/" + s)};
             if (!(v[0] > 0)) continue;
-            const char* names[4] = {"quaternion composed", "matrix composed", "quaternion each", "matrix each"};
+            const char* names[4] = {"quaternion composed", "matrix composed", "quaternion each",
+                                    "matrix each"};
             int fastest = 0;
             for (int i = 1; i < 4; ++i)
                 if (v[i] > 0 && v[i] < v[fastest]) fastest = i;
-            std::printf("  %-6s %-8s %12.2f %12.2f %12.2f %12.2f  %s\n", n, lib, v[0], v[1], v[2], v[3], names[fastest]);
+            std::printf("  %-6s %-8s %12.2f %12.2f %12.2f %12.2f  %s\n", n, lib, v[0], v[1], v[2],
+                        v[3], names[fastest]);
         }
 }
 
@@ -169,7 +187,8 @@ int main(int argc, char** argv) {
         benchmark::RunSpecifiedBenchmarks();
     } else {
         collecting_reporter reporter;
-        std::printf("compiler: %s\nflags: %s\n", bench::build_info::compiler, bench::build_info::flags);
+        std::printf("compiler: %s\nflags: %s\n", bench::build_info::compiler,
+                    bench::build_info::flags);
         benchmark::RunSpecifiedBenchmarks(&reporter);
         print_table(reporter.results);
         print_targets(reporter.results);

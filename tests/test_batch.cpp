@@ -24,7 +24,8 @@ std::vector<quat::vec3<T>> random_points(quat::test::random_rotations& random, s
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("batch rotate equals the scalar rotate, array of structs, every size", "[batch]", float, double) {
+TEMPLATE_TEST_CASE("batch rotate equals the scalar rotate, array of structs, every size", "[batch]",
+                   float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     // Sizes around the block length (256) and odd ones, so every tail path runs.
@@ -37,14 +38,17 @@ TEMPLATE_TEST_CASE("batch rotate equals the scalar rotate, array of structs, eve
         quat::rotate(m, in.data(), by_m.data(), n);
         for (std::size_t i = 0; i < n; ++i) {
             // Points have length up to ~40, so the tolerance scales with it.
-            CHECK(max_difference(by_q[i], quat::rotate(q, in[i])) <= 64 * quat::test::tolerance<T>::rotate);
+            CHECK(max_difference(by_q[i], quat::rotate(q, in[i])) <=
+                  64 * quat::test::tolerance<T>::rotate);
             // Not bit-exact: a compiler may contract the vectorized a * b + c into FMAs differently.
-            CHECK(max_difference(by_m[i], quat::rotate(m, in[i])) <= 64 * quat::test::tolerance<T>::rotate);
+            CHECK(max_difference(by_m[i], quat::rotate(m, in[i])) <=
+                  64 * quat::test::tolerance<T>::rotate);
         }
     }
 }
 
-TEMPLATE_TEST_CASE("batch rotate, struct of arrays, matches array of structs", "[batch]", float, double) {
+TEMPLATE_TEST_CASE("batch rotate, struct of arrays, matches array of structs", "[batch]", float,
+                   double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (const std::size_t n : {1u, 5u, 256u, 777u}) {
@@ -57,12 +61,14 @@ TEMPLATE_TEST_CASE("batch rotate, struct of arrays, matches array of structs", "
         quat::rotate(q, quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
                      quat::soa_points<T>{ox.data(), oy.data(), oz.data(), n});
         for (std::size_t i = 0; i < n; ++i) {
-            CHECK(max_difference(quat::vec3<T>{ox[i], oy[i], oz[i]}, aos[i]) <= 64 * quat::test::tolerance<T>::rotate);
+            CHECK(max_difference(quat::vec3<T>{ox[i], oy[i], oz[i]}, aos[i]) <=
+                  64 * quat::test::tolerance<T>::rotate);
         }
     }
 }
 
-TEST_CASE("batch rotate works in place (output == input), the documented aliasing rule", "[batch]") {
+TEST_CASE("batch rotate works in place (output == input), the documented aliasing rule",
+          "[batch]") {
     quat::test::random_rotations random;
     const quat::quatf q = random.unit_quaternion<float>();
     std::vector<quat::vec3<float>> points = random_points<float>(random, 600);
@@ -73,15 +79,18 @@ TEST_CASE("batch rotate works in place (output == input), the documented aliasin
     CHECK(points == expected);
 
     std::vector<float> x(600), y(600), z(600);
-    for (std::size_t i = 0; i < 600; ++i) x[i] = original[i].x, y[i] = original[i].y, z[i] = original[i].z;
+    for (std::size_t i = 0; i < 600; ++i)
+        x[i] = original[i].x, y[i] = original[i].y, z[i] = original[i].z;
     quat::rotate(q, quat::soa_points<const float>{x.data(), y.data(), z.data(), 600},
                  quat::soa_points<float>{x.data(), y.data(), z.data(), 600});
     for (std::size_t i = 0; i < 600; ++i)
-        CHECK(max_difference(quat::vec3<float>{x[i], y[i], z[i]}, expected[i]) <= 64 * quat::test::tolerance<float>::rotate);
+        CHECK(max_difference(quat::vec3<float>{x[i], y[i], z[i]}, expected[i]) <=
+              64 * quat::test::tolerance<float>::rotate);
 }
 
 TEST_CASE("batch rotate accepts std::array and C arrays", "[batch]") {
-    const quat::quatd q = quat::to_quaternion(quat::axis_angle<double>{{0, 0, 1}, 1.5707963267948966});
+    const quat::quatd q =
+        quat::to_quaternion(quat::axis_angle<double>{{0, 0, 1}, 1.5707963267948966});
     const std::array<quat::vec3<double>, 2> in{{{1, 0, 0}, {0, 1, 0}}};
     quat::vec3<double> out[2];
     quat::rotate(q, in, out);
@@ -89,7 +98,8 @@ TEST_CASE("batch rotate accepts std::array and C arrays", "[batch]") {
     CHECK(max_difference(out[1], quat::vec3<double>{-1, 0, 0}) <= 1e-15);
 }
 
-TEMPLATE_TEST_CASE("compose(span) is the left-to-right product, rounded differently", "[batch]", float, double) {
+TEMPLATE_TEST_CASE("compose(span) is the left-to-right product, rounded differently", "[batch]",
+                   float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (const std::size_t n : {0u, 1u, 2u, 3u, 4u, 5u, 9u, 64u, 1023u, 1024u}) {
@@ -111,11 +121,11 @@ TEMPLATE_TEST_CASE("batch slerp equals the scalar slerp at every t", "[batch]", 
     for (int pair = 0; pair < 50; ++pair) {
         const quat::quaternion<T> a = random.unit_quaternion<T>();
         quat::quaternion<T> b = random.unit_quaternion<T>();
-        if (pair == 0) b = a;                                   // equal: series path
-        if (pair == 1) b = -a;                                  // opposite sign, same rotation
+        if (pair == 0) b = a;   // equal: series path
+        if (pair == 1) b = -a;  // opposite sign, same rotation
         std::vector<T> t(301);
         for (std::size_t i = 0; i < t.size(); ++i) t[i] = T(i) / T(300);
-        if (pair == 2) t[7] = T(1.5);                           // outside [0, 1]: scalar fallback
+        if (pair == 2) t[7] = T(1.5);  // outside [0, 1]: scalar fallback
         std::vector<quat::quaternion<T>> out(t.size());
         quat::slerp(a, b, t, out);
         for (std::size_t i = 0; i < t.size(); ++i) {
@@ -127,18 +137,21 @@ TEMPLATE_TEST_CASE("batch slerp equals the scalar slerp at every t", "[batch]", 
     }
 }
 
-TEST_CASE("batch rotate of a float array beyond 16 MiB (streaming stores) equals the scalar rotate", "[batch]") {
+TEST_CASE("batch rotate of a float array beyond 16 MiB (streaming stores) equals the scalar rotate",
+          "[batch]") {
     quat::test::random_rotations random;
     const quat::quatf q = random.unit_quaternion<float>();
     const quat::rotation_matrix<float> m = quat::to_matrix(q);
     const std::size_t n = (std::size_t(16) << 20) / sizeof(quat::vec3<float>) + 101;  // odd tail
     std::vector<quat::vec3<float>> points(n);
-    for (std::size_t i = 0; i < n; ++i) points[i] = {float(i % 97) - 48.0f, float(i % 89) * 0.5f, 1.0f};
+    for (std::size_t i = 0; i < n; ++i)
+        points[i] = {float(i % 97) - 48.0f, float(i % 89) * 0.5f, 1.0f};
     std::vector<quat::vec3<float>> out(n);
     quat::rotate(q, points, out);
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < n; ++i)
-        mismatches += max_difference(out[i], quat::rotate(m, points[i])) <= 1e-4f ? 0 : 1;  // |p| < 60
+        mismatches +=
+            max_difference(out[i], quat::rotate(m, points[i])) <= 1e-4f ? 0 : 1;  // |p| < 60
     CHECK(mismatches == 0);
     quat::rotate(m, points, points);  // in place
     CHECK(points == out);

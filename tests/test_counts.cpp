@@ -49,7 +49,8 @@ TEST_CASE("composing: the quaternion product is cheaper than the matrix product"
     check(quaternion_to_matrix(), {15, 9, 0, 0, 0});
 }
 
-TEST_CASE("Table 3.1: build the rotation from Euler angles or axis-angle, rotate one point", "[counts]") {
+TEST_CASE("Table 3.1: build the rotation from Euler angles or axis-angle, rotate one point",
+          "[counts]") {
     using namespace bench::count_cases;
     // Thesis (MATLAB): matrix 10/25/0/6 and 16/30/0/2; quaternion 25/42/0/6 and 21/31/0/2 (add/mul/div/trig).
     check(matrix_from_euler(), {24, 45, 0, 0, 6});

@@ -14,7 +14,8 @@ quat::quatd widen(const quat::quatf& q) { return {q.w, q.x, q.y, q.z}; }
 
 }  // namespace
 
-TEST_CASE("slerp_fast: rotation-angle error at most 1e-6 rad in float against the exact slerp", "[fast_slerp]") {
+TEST_CASE("slerp_fast: rotation-angle error at most 1e-6 rad in float against the exact slerp",
+          "[fast_slerp]") {
     quat::test::random_rotations random;
     double worst = 0;
     for (int pair = 0; pair < 4000; ++pair) {
@@ -27,7 +28,8 @@ TEST_CASE("slerp_fast: rotation-angle error at most 1e-6 rad in float against th
         for (int i = 0; i <= 64; ++i) {
             const float t = float(i) / 64.0f;
             // Reference: the exact slerp in double of the same float inputs, normalized in double.
-            const quat::quatd exact = quat::slerp(quat::normalize(widen(a)), quat::normalize(widen(b)), double(t));
+            const quat::quatd exact =
+                quat::slerp(quat::normalize(widen(a)), quat::normalize(widen(b)), double(t));
             const quat::quatd fast = widen(quat::slerp_fast(a, b, t));
             worst = std::max(worst, quat::angle_between(quat::normalize(fast), exact));
             // Its magnitude stays unit, so it can be used without renormalizing.
@@ -53,9 +55,11 @@ TEST_CASE("slerp_fast in double is accurate to the fitted polynomial's 1e-8", "[
     quat::test::random_rotations random;
     double worst = 0;
     for (int i = 0; i < 2000; ++i) {
-        const quat::quatd a = random.unit_quaternion<double>(), b = random.unit_quaternion<double>();
+        const quat::quatd a = random.unit_quaternion<double>(),
+                          b = random.unit_quaternion<double>();
         const double t = random.uniform<double>(0, 1);
-        worst = std::max(worst, quat::angle_between(quat::slerp_fast(a, b, t), quat::slerp(a, b, t)));
+        worst =
+            std::max(worst, quat::angle_between(quat::slerp_fast(a, b, t), quat::slerp(a, b, t)));
     }
     INFO("largest angular error " << worst << " rad");
     CHECK(worst <= 5e-8);

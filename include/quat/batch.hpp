@@ -46,12 +46,14 @@ inline constexpr std::size_t batch_block = 256;
 inline constexpr std::size_t batch_block_slerp = 128;
 
 template <class T>
-void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output, std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1), m12 = m(1, 2),
-            m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+                  std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
     for (std::size_t i = 0; i < n; ++i) {
         const T x = input[i].x, y = input[i].y, z = input[i].z;
-        output[i] = vec3<T>{m00 * x + m01 * y + m02 * z, m10 * x + m11 * y + m12 * z, m20 * x + m21 * y + m22 * z};
+        output[i] = vec3<T>{m00 * x + m01 * y + m02 * z, m10 * x + m11 * y + m12 * z,
+                            m20 * x + m21 * y + m22 * z};
     }
 }
 
@@ -62,9 +64,10 @@ inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
 
 // Rotates block by block into a local buffer, then streams the buffer to memory. The points are
 // written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
-inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input, vec3<float>* output,
-                             std::size_t count) noexcept {
-    static_assert(sizeof(vec3<float>) == 3 * sizeof(float), "vec3<float> must be three packed floats");
+inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input,
+                             vec3<float>* output, std::size_t count) noexcept {
+    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                  "vec3<float> must be three packed floats");
     vec3<float> buffer[batch_block];
     for (std::size_t start = 0; start < count; start += batch_block) {
         const std::size_t n = count - start < batch_block ? count - start : batch_block;
@@ -74,7 +77,8 @@ inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>*
         std::size_t i = 0;
         const std::size_t floats = 3 * n;
 #if defined(__SSE__) || defined(_M_X64)
-        for (; i < floats && reinterpret_cast<std::uintptr_t>(to + i) % 16 != 0; ++i) to[i] = from[i];
+        for (; i < floats && reinterpret_cast<std::uintptr_t>(to + i) % 16 != 0; ++i)
+            to[i] = from[i];
         for (; i + 4 <= floats; i += 4) _mm_stream_ps(to + i, _mm_loadu_ps(from + i));
 #endif
         for (; i < floats; ++i) to[i] = from[i];
@@ -85,10 +89,10 @@ inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>*
 }
 
 template <class T>
-void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* z, T* ox, T* oy, T* oz,
-                  std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1), m12 = m(1, 2),
-            m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* z, T* ox, T* oy,
+                  T* oz, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
     // Each index is read before it is written, so each output array may be its own input array, and
     // there is no dependence between iterations (the documented aliasing rule): say so to the
     // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
@@ -115,7 +119,8 @@ using if_point_arrays = std::enable_if_t<
 /// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
 /// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
 template <class T>
-void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output, std::size_t count) noexcept {
+void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+            std::size_t count) noexcept {
     if constexpr (std::is_same_v<T, float>) {
         if (count * sizeof(vec3<float>) >= detail::streaming_bytes) {
             detail::rotate_streaming(m, input, output, count);
@@ -131,23 +136,21 @@ void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output, 
 /// point costs 9 multiply-adds. Aliasing as for the matrix overload.
 template <class T>
 void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
-                      std::size_t count) noexcept {
+            std::size_t count) noexcept {
     rotate(to_matrix(q), input, output, count);
 }
 
 /// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
 /// any input. Precondition: output.count >= input.count.
 template <class T>
-void rotate(const rotation_matrix<T>& m, soa_points<const T> input,
-                      soa_points<T> output) noexcept {
+void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "output shorter than input");
     detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
 }
 
 /// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
 template <class T>
-void rotate(const quaternion<T>& q, soa_points<const T> input,
-                      soa_points<T> output) noexcept {
+void rotate(const quaternion<T>& q, soa_points<const T> input, soa_points<T> output) noexcept {
     rotate(to_matrix(q), input, output);
 }
 
@@ -231,8 +234,8 @@ template <class T>
 /// Preconditions: unit a and b; output does not overlap t. For t outside [0, 1], nearly equal a and
 /// b, or non-float/double scalars, each value falls back to the scalar slerp.
 template <class T>
-void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t,
-                     quaternion<T>* output, std::size_t count) noexcept {
+void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternion<T>* output,
+           std::size_t count) noexcept {
     if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
         for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, t[i]);
         return;
@@ -274,7 +277,7 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t,
 /// Precondition: size(output) >= size(t).
 template <class T, class Parameters, class Output>
 void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
-                     Output&& output) noexcept {
+           Output&& output) noexcept {
     QUAT_ASSERT(std::size(output) >= std::size(t), "output shorter than the parameters");
     slerp(a, b, static_cast<const T*>(std::data(t)), static_cast<quaternion<T>*>(std::data(output)),
           std::size(t));
