@@ -51,7 +51,7 @@ template <class T>
     const T x = d * sign;  // cos(angle) between a and the nearer of b, -b: angle in [0, pi/2]
     // Halve the angle (so the series converges 2^6 times faster): the midpoint m = (a + b) / (2 c),
     // c = cos(angle / 2); the first half of the arc runs from a to m, the second from m to b.
-    const T c = detail::sqrt((T(1) + x) / T(2));
+    const T c = detail::sqrt((T(1) + x) * T(0.5));
     const T half_scale = T(1) / (c + c);
     const T upper = T(t >= T(0.5));
     const T s = t + t - upper;
