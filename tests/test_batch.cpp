@@ -156,3 +156,21 @@ TEST_CASE("batch rotate of a float array beyond 16 MiB (streaming stores) equals
     quat::rotate(m, points, points);  // in place
     CHECK(points == out);
 }
+
+TEST_CASE("struct-of-arrays rotate beyond 16 MiB (streaming stores) equals the scalar rotate",
+          "[batch]") {
+    const quat::quatf q = quat::normalize(quat::quatf{0.3f, -0.5f, 0.7f, 0.2f});
+    const quat::rotation_matrix<float> m = quat::to_matrix(q);
+    const std::size_t n = (std::size_t(16) << 20) / (3 * sizeof(float)) + 77;
+    std::vector<float> x(n), y(n), z(n), ox(n), oy(n), oz(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = float(i % 31), y[i] = -float(i % 17), z[i] = 0.5f;
+    quat::rotate(q, quat::soa_points<const float>{x.data(), y.data(), z.data(), n},
+                 quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const quat::vec3<float> expected = quat::rotate(m, quat::vec3<float>{x[i], y[i], z[i]});
+        mismatches +=
+            max_difference(quat::vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f ? 0 : 1;
+    }
+    CHECK(mismatches == 0);
+}

@@ -64,6 +64,23 @@ inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
 
 // Rotates block by block into a local buffer, then streams the buffer to memory. The points are
 // written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
+// Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE).
+inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
+    std::size_t i = 0;
+#if defined(__SSE__) || defined(_M_X64)
+    for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % 16 != 0; ++i) to[i] = from[i];
+    for (; i + 4 <= n; i += 4) _mm_stream_ps(to + i, _mm_loadu_ps(from + i));
+#endif
+    for (; i < n; ++i) to[i] = from[i];
+}
+
+// Makes the streamed stores visible before returning, like ordinary stores.
+inline void stream_fence() noexcept {
+#if defined(__SSE__) || defined(_M_X64)
+    _mm_sfence();
+#endif
+}
+
 inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input,
                              vec3<float>* output, std::size_t count) noexcept {
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
@@ -72,20 +89,9 @@ inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>*
     for (std::size_t start = 0; start < count; start += batch_block) {
         const std::size_t n = count - start < batch_block ? count - start : batch_block;
         rotate_block(m, input + start, buffer, n);
-        const float* from = &buffer[0].x;
-        float* to = &output[start].x;
-        std::size_t i = 0;
-        const std::size_t floats = 3 * n;
-#if defined(__SSE__) || defined(_M_X64)
-        for (; i < floats && reinterpret_cast<std::uintptr_t>(to + i) % 16 != 0; ++i)
-            to[i] = from[i];
-        for (; i + 4 <= floats; i += 4) _mm_stream_ps(to + i, _mm_loadu_ps(from + i));
-#endif
-        for (; i < floats; ++i) to[i] = from[i];
+        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
     }
-#if defined(__SSE__) || defined(_M_X64)
-    _mm_sfence();  // make the streamed stores visible before returning, like ordinary stores
-#endif
+    stream_fence();
 }
 
 template <class T>
@@ -145,6 +151,23 @@ void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
 template <class T>
 void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "output shorter than input");
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= detail::streaming_bytes) {
+            // Out of cache: rotate a block into local arrays, then stream them (as for AoS).
+            constexpr std::size_t block = detail::batch_block;
+            float rx[block], ry[block], rz[block];
+            for (std::size_t start = 0; start < input.count; start += block) {
+                const std::size_t n = input.count - start < block ? input.count - start : block;
+                detail::rotate_block(m, input.x + start, input.y + start, input.z + start, rx, ry,
+                                     rz, n);
+                detail::stream_floats(output.x + start, rx, n);
+                detail::stream_floats(output.y + start, ry, n);
+                detail::stream_floats(output.z + start, rz, n);
+            }
+            detail::stream_fence();
+            return;
+        }
+    }
     detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
 }
 
