@@ -278,14 +278,18 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternio
         const std::size_t n =
             count - start < detail::batch_block_slerp ? count - start : detail::batch_block_slerp;
         const T* tb = t + start;
-        T rw[detail::batch_block_slerp]{}, rx[detail::batch_block_slerp]{},
-            ry[detail::batch_block_slerp]{}, rz[detail::batch_block_slerp]{};
+        // Uninitialized: every used slot is written first.
+        T rw[detail::batch_block_slerp], rx[detail::batch_block_slerp],
+            ry[detail::batch_block_slerp], rz[detail::batch_block_slerp];
         for (std::size_t i = 0; i < n; ++i) {
             const T ti = tb[i];
             T wa = detail::sin_half_pi((T(1) - ti) * angle) * inverse_sine;
             T wb = detail::sin_half_pi(ti * angle) * inverse_sine;
-            wa = ti == T(0) ? T(1) : (ti == T(1) ? T(0) : wa);
-            wb = ti == T(0) ? T(0) : (ti == T(1) ? T(1) : wb);
+            // Exact ends by arithmetic on 0/1 flags (selects here keep g++ from vectorizing for
+            // SSE2): 1 - w is exact for w near 1, so w + (1 - w) is exactly 1.
+            const T at_start = T(ti == T(0)), at_end = T(ti == T(1));
+            wa = (wa + at_start * (T(1) - wa)) * (T(1) - at_end);
+            wb = wb + at_end * (T(1) - wb);
             rw[i] = a.w * wa + near.w * wb;
             rx[i] = a.x * wa + near.x * wb;
             ry[i] = a.y * wa + near.y * wb;
