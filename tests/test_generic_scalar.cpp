@@ -3,7 +3,7 @@
 //   value initialization T{} and copying;
 // - unary -, binary + - * / and the comparisons < <= > >= == != (returning bool);
 // - std::numeric_limits<T>: epsilon(), min(), max(), infinity(), quiet_NaN();
-// - sqrt, sin, cos, atan2 and abs, found by argument-dependent lookup (or std:: for built-ins).
+// - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for built-ins).
 // Operations must not throw (quat's functions are noexcept). The counting scalar of quat_bench is
 // one such type.
 #include <algorithm>
@@ -44,6 +44,7 @@ inline real sqrt(real a) noexcept { return real(std::sqrt(a.value)); }
 inline real sin(real a) noexcept { return real(std::sin(a.value)); }
 inline real cos(real a) noexcept { return real(std::cos(a.value)); }
 inline real atan2(real y, real x) noexcept { return real(std::atan2(y.value, x.value)); }
+inline real asin(real a) noexcept { return real(std::asin(a.value)); }
 inline real abs(real a) noexcept { return real(std::abs(a.value)); }
 
 }  // namespace user

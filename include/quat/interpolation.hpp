@@ -28,9 +28,9 @@ template <class T>
 }  // namespace detail
 
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
-/// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns a at t = 0 and b, or -b when
-/// -b is nearer a, at t = 1, exactly. The angle comes from 2 atan2(|a - b|, |a + b|), accurate for
-/// nearly equal and nearly opposite inputs. Precondition: unit a and b.
+/// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
+/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
+/// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             T t) noexcept {
@@ -48,9 +48,10 @@ template <class T>
         const vec3<T> v = u / s * detail::sin(half_turn);
         return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
     }
-    const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
-    const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
-    const T angle = T(2) * detail::atan2(chord, sum);      // between a and near, in [0, pi/2]
+    // |a - near| = 2 sin(angle/2) <= sqrt(2) since dot(a, near) >= 0; asin is well conditioned
+    // there (slope <= sqrt(2)), and the chord is accurate for nearly equal inputs, unlike acos(dot).
+    const T chord = detail::sqrt(squared_norm(a - near));
+    const T angle = T(2) * detail::asin(chord / T(2));  // between a and near, in [0, pi/2]
     const T sin_angle = detail::sin(angle);  // the sine the numerators use: |result| - 1 < 2 eps
     return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
            near * detail::sine_ratio(t, angle, sin_angle);

@@ -3,7 +3,7 @@
 // For float, double and long double: <cmath> at run time, and during constant evaluation our own
 // long double implementations (correct to a few ulp of double for the argument ranges rotations
 // use: |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the
-// user's sqrt, sin, cos, atan2 and abs.
+// user's sqrt, sin, cos, atan2, asin and abs.
 #pragma once
 
 #include <cmath>
@@ -182,6 +182,22 @@ template <class T>
     } else {
         using std::atan2;
         return atan2(y, x);
+    }
+}
+
+/// asin(x) in [-pi/2, pi/2]; NaN outside [-1, 1].
+template <class T>
+[[nodiscard]] constexpr T asin(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated()) {
+            const compile_time::real r = x;
+            if (!(r >= -1 && r <= 1)) return std::numeric_limits<T>::quiet_NaN();
+            return static_cast<T>(compile_time::atan2(r, compile_time::sqrt((1 - r) * (1 + r))));
+        }
+        return std::asin(x);
+    } else {
+        using std::asin;
+        return asin(x);
     }
 }
 
