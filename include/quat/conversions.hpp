@@ -70,7 +70,7 @@ template <class T>
 /// Precondition: unit axis; try_to_quaternion(axis_angle) normalizes and checks untrusted input.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> to_quaternion(const axis_angle<T>& rotation) noexcept {
-    const T half = rotation.angle / T(2), s = detail::sin(half);
+    const T half = rotation.angle * T(0.5), s = detail::sin(half);
     return {detail::cos(half), rotation.axis.x * s, rotation.axis.y * s, rotation.axis.z * s};
 }
 

@@ -82,9 +82,10 @@ template <class T, sequence S, frame F>
     constexpr detail::axis_triple order = detail::product_order<S, F>();
     const T first = F == frame::intrinsic ? e[0] : e[2], middle = e[1],
             last = F == frame::intrinsic ? e[2] : e[0];
-    const T c0 = detail::cos(first / T(2)), s0 = detail::sin(first / T(2));
-    const T c1 = detail::cos(middle / T(2)), s1 = detail::sin(middle / T(2));
-    const T c2 = detail::cos(last / T(2)), s2 = detail::sin(last / T(2));
+    const T h0 = first * T(0.5), h1 = middle * T(0.5), h2 = last * T(0.5);  // half angles, exact
+    const T c0 = detail::cos(h0), s0 = detail::sin(h0);
+    const T c1 = detail::cos(h1), s1 = detail::sin(h1);
+    const T c2 = detail::cos(h2), s2 = detail::sin(h2);
     // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b = ±e_rest.
     const int a = order.first, b = order.second, rest = 3 - a - b;
     const T parity = (b - a + 3) % 3 == 1 ? T(1) : T(-1);
@@ -110,9 +111,18 @@ template <class T, sequence S, frame F>
     const T angle[3] = {F == frame::intrinsic ? e[0] : e[2], e[1],
                         F == frame::intrinsic ? e[2] : e[0]};
     const int axis[3] = {order.first, order.second, order.third};
+    // Start from R_first itself (no arithmetic), then R <- R R_m(t) for the other two: column m
+    // stays, columns m+1 and m+2 turn by t within their plane.
     rotation_matrix<T> r = rotation_matrix<T>::identity();
-    for (int n = 0; n < 3; ++n) {
-        // R R_m(t): column m stays, columns m+1 and m+2 turn by t within their plane.
+    {
+        const int m1 = (axis[0] + 1) % 3, m2 = (axis[0] + 2) % 3;
+        const T c = detail::cos(angle[0]), s = detail::sin(angle[0]);
+        r(m1, m1) = c;
+        r(m2, m1) = s;
+        r(m1, m2) = -s;
+        r(m2, m2) = c;
+    }
+    for (int n = 1; n < 3; ++n) {
         const int m1 = (axis[n] + 1) % 3, m2 = (axis[n] + 2) % 3;
         const T c = detail::cos(angle[n]), s = detail::sin(angle[n]);
         for (int i = 0; i < 3; ++i) {

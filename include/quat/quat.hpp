@@ -17,9 +17,11 @@
 #pragma once
 
 #include "axis_angle.hpp"
+#include "batch.hpp"
 #include "config.hpp"
 #include "conversions.hpp"
 #include "euler.hpp"
+#include "fast_slerp.hpp"
 #include "interpolation.hpp"
 #include "nearest_rotation.hpp"
 #include "quaternion.hpp"

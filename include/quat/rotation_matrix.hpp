@@ -60,11 +60,12 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a,
                                                      const rotation_matrix<T>& b) noexcept {
-    rotation_matrix<T> product{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            product(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
-    return product;
+    const auto entry = [&a, &b](int i, int j) {
+        return a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
+    };
+    return {{{entry(0, 0), entry(0, 1), entry(0, 2)},
+             {entry(1, 0), entry(1, 1), entry(1, 2)},
+             {entry(2, 0), entry(2, 1), entry(2, 2)}}};
 }
 
 /// Exact element-wise equality.
