@@ -950,10 +950,10 @@ namespace quat {
 /// Use soa_points<const T> for inputs and soa_points<T> for outputs.
 template <class T>
 struct soa_points {
-    T* x;
-    T* y;
-    T* z;
-    std::size_t count;
+    T* x;               ///< x coordinates
+    T* y;               ///< y coordinates
+    T* z;               ///< z coordinates
+    std::size_t count;  ///< number of points in each array
 };
 
 namespace detail {
