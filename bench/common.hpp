@@ -32,7 +32,11 @@ inline std::string name(const std::string& operation, const std::string& library
                         const std::string& representation, const std::string& type,
                         long long n = -1) {
     std::string s = operation + "/" + library + "/" + representation + "/" + type;
-    if (n >= 0) s += "/" + std::to_string(n);
+    if (n >= 0) {
+        // Appended piecewise: GCC 12's -Wrestrict misfires on "/" + std::string&& at -O3.
+        s += '/';
+        s += std::to_string(n);
+    }
     return s;
 }
 

@@ -65,7 +65,7 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
         for (double e = std::ceil(y0); e <= y1 + 1e-9; e += 1) {
             const svg::point p = map(c.x_min, std::pow(10.0, e));
             doc.line({c.left, p.y}, {c.left + c.width, p.y}, grid);
-            doc.text({c.left - 6, p.y + 4}, "1e" + format_tick(e), 11, "end", "#444");
+            doc.text({c.left - 6, p.y + 4}, std::string("1e") + format_tick(e), 11, "end", "#444");
         }
     } else {
         const double y_step = nice_step(c.y_max - c.y_min, 5);

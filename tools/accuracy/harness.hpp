@@ -139,8 +139,8 @@ inline std::string format_cell(const std::optional<error_stats>& s) {
     if (!s) return "—";
     std::string cell = format_number(s->max) + " / " + format_number(s->rms());
     if (s->non_finite > 0)
-        cell +=
-            " (" + std::to_string(s->non_finite) + "/" + std::to_string(s->count) + " non-finite)";
+        cell += std::string(" (") + std::to_string(s->non_finite) + "/" + std::to_string(s->count) +
+                " non-finite)";
     return cell;
 }
 
@@ -153,7 +153,7 @@ inline void print_table(const std::vector<row>& rows) {
         const std::string target =
             std::isnan(r.target)
                 ? "—"
-                : ("≤ " + format_number(r.target) + (r.missed() ? " **missed**" : ""));
+                : (std::string("≤ ") + format_number(r.target) + (r.missed() ? " **missed**" : ""));
         std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", r.operation.c_str(),
                     r.inputs.c_str(), r.scalar.c_str(), r.unit.c_str(), target.c_str(),
                     format_cell(r.quat).c_str(), format_cell(r.glm).c_str(),

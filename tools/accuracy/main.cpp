@@ -156,7 +156,8 @@ struct runner {
     void normalize() {
         rng g = fresh(5);
         const int e = sizeof(T) == sizeof(float) ? 37 : 300;
-        const std::string range = "1e-" + std::to_string(e) + " … 1e" + std::to_string(e);
+        const std::string range =
+            std::string("1e-") + std::to_string(e) + " … 1e" + std::to_string(e);
         const auto same = scaled_quaternions<T>(g, n(100000, 3000), -e, e, true);
         add(make("normalize", "\\|q\\| from " + range, "eps (max component)", target_normalize,
                  accepted_normalize),

@@ -119,8 +119,8 @@ void measure_slerp(const std::vector<std::pair<q4<T>, q4<T>>>& pairs, const std:
         const T t = ts[i];
         const hq got = widen(Lib::slerp(a, b, t));
         const hq ref = slerp(widen(a), widen(b), real(t));
-        const std::string what =
-            "a = " + describe(a) + ", b = " + describe(b) + ", t = " + std::to_string(double(t));
+        const std::string what = std::string("a = ") + describe(a) + ", b = " + describe(b) +
+                                 ", t = " + std::to_string(double(t));
         if (norm_err.add(in_eps<T>(r_abs(norm(got) - 1)))) norm_err.worst_case = what;
         if (angle_err.add(in_eps<T>(rotation_angle_between(got, ref)))) angle_err.worst_case = what;
     }
@@ -169,7 +169,7 @@ error_stats measure_exp(const std::vector<v3<T>>& inputs) {
         const hv du{got[1] - ref[1], got[2] - ref[2], got[3] - ref[3]};
         const real rel = norm(du) / norm(hv{ref[1], ref[2], ref[3]});
         const real e = r_abs(got[0] - ref[0]) > rel ? r_abs(got[0] - ref[0]) : rel;
-        if (s.add(in_eps<T>(e))) s.worst_case = "v = " + describe(v);
+        if (s.add(in_eps<T>(e))) s.worst_case = std::string("v = ") + describe(v);
     }
     return s;
 }
