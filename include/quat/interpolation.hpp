@@ -9,24 +9,6 @@
 
 namespace quat {
 
-namespace detail {
-
-// sin(t * angle) / sin(angle) for angle in [0, pi/2]; a series where both sines are tiny, so
-// nearly equal rotations never divide by a small sine.
-template <class T>
-[[nodiscard]] constexpr T sine_ratio(T t, T angle, T sin_angle) noexcept {
-    const T a2 = angle * angle;
-    if (a2 * a2 < std::numeric_limits<T>::epsilon()) {
-        // sin(tx)/sin(x) = t (1 - (t^2 - 1) x^2 / 6 + ...), next term below epsilon^1.5
-        const T t2 = t * t;
-        return t * (T(1) - (t2 - T(1)) * a2 / T(6) +
-                    (T(3) * t2 * t2 - T(10) * t2 + T(7)) * a2 * a2 / T(360));
-    }
-    return sin(t * angle) / sin_angle;
-}
-
-}  // namespace detail
-
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
 /// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
 /// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
@@ -34,7 +16,9 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             T t) noexcept {
-    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
+    // A select, not a branch: with arbitrary inputs the sign is a coin toss that a branch
+    // predictor loses half the time.
+    const quaternion<T> near = b * (dot(a, b) < T(0) ? T(-1) : T(1));
     if (t == T(0)) return a;
     if (t == T(1)) return near;
     if (t < T(0) || t > T(1)) {
@@ -48,13 +32,19 @@ template <class T>
         const vec3<T> v = u / s * detail::sin(half_turn);
         return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
     }
-    // |a - near| = 2 sin(angle/2) <= sqrt(2) since dot(a, near) >= 0; asin is well conditioned
-    // there (slope <= sqrt(2)), and the chord is accurate for nearly equal inputs, unlike acos(dot).
-    const T chord = detail::sqrt(squared_norm(a - near));
-    const T angle = T(2) * detail::asin(chord / T(2));  // between a and near, in [0, pi/2]
-    const T sin_angle = detail::sin(angle);  // the sine the numerators use: |result| - 1 < 2 eps
-    return a * detail::sine_ratio(T(1) - t, angle, sin_angle) +
-           near * detail::sine_ratio(t, angle, sin_angle);
+    // With h half the angle between a and near (h <= pi/4 since dot(a, near) >= 0), the slerp
+    // path is cos(u) e + sin(u) f, u = (2t - 1) h, where e and f are the orthonormal directions
+    // of a + near and near - a (|a + near| = 2 cos h, |near - a| = 2 sin h): one sine-cosine pair
+    // instead of three sines, and each direction divided by the norm it actually has, so the
+    // result is unit to a few roundings whatever the rounding of h. The chord |near - a| keeps h
+    // accurate for nearly equal inputs, unlike acos of the dot product.
+    const quaternion<T> sum = a + near;
+    const quaternion<T> difference = near - a;
+    const T chord = detail::sqrt(squared_norm(difference));
+    if (chord == T(0)) return a;  // a == near: nothing to interpolate (NaN goes on below)
+    const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
+    return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
+           difference * (detail::sin(u) / chord);
 }
 
 /// Normalized linear interpolation along the shorter arc: the slerp path at non-uniform speed,
