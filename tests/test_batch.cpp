@@ -137,8 +137,10 @@ TEMPLATE_TEST_CASE("batch slerp equals the scalar slerp at every t", "[batch]", 
     }
 }
 
-TEST_CASE("batch rotate of a float array beyond 16 MiB (streaming stores) equals the scalar rotate",
-          "[batch]") {
+TEST_CASE(
+    "batch rotate of a float array beyond 16 MiB (streamed in AVX-512 builds) equals the scalar "
+    "rotate",
+    "[batch]") {
     quat::test::random_rotations random;
     const quat::quatf q = random.unit_quaternion<float>();
     const quat::rotation_matrix<float> m = quat::to_matrix(q);

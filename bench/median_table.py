@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Prints the README's Performance table: the median over several quat_bench runs of each cell.
+
+Usage: python3 bench/median_table.py run1.json run2.json run3.json
+  each from: quat_bench --table --benchmark_out=runN.json --benchmark_out_format=json
+Cells are ns per item (point, product, call or value) from items_per_second, as `--table` prints
+them; ratio = other / quat (> 1: quat faster). Python 3 standard library only.
+"""
+import json
+import statistics
+import sys
+
+# (row label, benchmark name with {lib} for the library); float unless the label says double.
+ROWS = [
+    ("rotate_point, quaternion (latency)", "rotate_point/{lib}/quaternion/float"),
+    ("rotate_point, matrix (latency)", "rotate_point/{lib}/matrix/float"),
+    ("rotate_batch, quaternion, n = 1024", "rotate_batch/{lib}/quaternion/float/1024"),
+    ("rotate_batch, matrix, n = 1024", "rotate_batch/{lib}/matrix/float/1024"),
+    ("rotate_batch, quaternion, struct of arrays, n = 1024",
+     "rotate_batch/{lib}/quaternion_soa/float/1024"),
+    ("rotate_batch, quaternion, n = 4194304", "rotate_batch/{lib}/quaternion/float/4194304"),
+    ("rotate_batch, matrix, n = 4194304", "rotate_batch/{lib}/matrix/float/4194304"),
+    ("rotate_batch, quaternion, struct of arrays, n = 4194304",
+     "rotate_batch/{lib}/quaternion_soa/float/4194304"),
+    ("memcpy of the same bytes, n = 1024", "rotate_batch/memcpy/bytes/float/1024"),
+    ("memcpy of the same bytes, n = 4194304", "rotate_batch/memcpy/bytes/float/4194304"),
+    ("compose, quaternion", "compose/{lib}/quaternion/float"),
+    ("compose, matrix", "compose/{lib}/matrix/float"),
+    ("chain k = 8, quaternion", "chain/{lib}/quaternion/float/8"),
+    ("chain k = 1024, quaternion (quat: `compose(span)`)", "chain/{lib}/quaternion/float/1024"),
+    ("chain k = 1024, quaternion, quat's left-to-right loop",
+     "chain_sequential/{lib}/quaternion/float/1024"),
+    ("chain k = 1024, matrix", "chain/{lib}/matrix/float/1024"),
+    ("chain k = 1024, quaternion, double (`compose(span)`)", "chain/{lib}/quaternion/double/1024"),
+    ("drift: 1024 products", "drift/{lib}/quaternion/float/1024"),
+    ("drift: 1024 products, renormalized each step", "drift_normalized/{lib}/quaternion/float/1024"),
+    ("convert euler → quaternion", "convert/{lib}/euler_to_quaternion/float"),
+    ("convert euler → matrix", "convert/{lib}/euler_to_matrix/float"),
+    ("convert axis-angle → quaternion", "convert/{lib}/axis_angle_to_quaternion/float"),
+    ("convert quaternion → matrix", "convert/{lib}/quaternion_to_matrix/float"),
+    ("convert matrix → quaternion", "convert/{lib}/matrix_to_quaternion/float"),
+    ("convert quaternion → euler", "convert/{lib}/quaternion_to_euler/float"),
+    ("convert quaternion → axis-angle", "convert/{lib}/quaternion_to_axis_angle/float"),
+    ("slerp (one call)", "slerp/{lib}/quaternion/float"),
+    ("slerp (one call), double", "slerp/{lib}/quaternion/double"),
+    ("slerp_batch, 1024 t values (per value; GLM/Eigen: per-call loop)",
+     "slerp_batch/{lib}/quaternion/float/1024"),
+    ("slerp_fast (one call)", "slerp_fast/{lib}/quaternion/float"),
+    ("nlerp", "nlerp/{lib}/quaternion/float"),
+    ("normalize", "normalize/{lib}/quaternion/float"),
+]
+LIBRARIES = ("quat", "glm", "eigen")
+
+
+def ns_per_item(path):
+    with open(path) as f:
+        data = json.load(f)
+    out = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type", "iteration") == "iteration" and b.get("items_per_second", 0) > 0:
+            out[b["name"]] = 1e9 / b["items_per_second"]
+    return data["context"], out
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    runs = [ns_per_item(p) for p in sys.argv[1:]]
+    context = runs[0][0]
+    print(f"<!-- {len(runs)} runs; {context.get('quat_compiler', '?')}, "
+          f"{context.get('quat_compile_flags', '?')} -->")
+    print("| benchmark (float unless noted) | quat | GLM | Eigen | GLM / quat | Eigen / quat |")
+    print("|---|---|---|---|---|---|")
+
+    def median(name):
+        values = [r[name] for _, r in runs if name in r]
+        return statistics.median(values) if values else None
+
+    def fmt(x, ratio=False):
+        if x is None:
+            return ""
+        if ratio:
+            return f"{x:.2f}"
+        return f"{x:.0f}" if x >= 100 else f"{x:.1f}" if x >= 10 else f"{x:.2f}" if x >= 1 else f"{x:.3f}"
+
+    for label, pattern in ROWS:
+        if "{lib}" not in pattern:
+            print(f"| {label} | {fmt(median(pattern))} | | | | |")
+            continue
+        cells = {lib: median(pattern.format(lib=lib)) for lib in LIBRARIES}
+        q = cells["quat"]
+        ratios = [fmt(cells[lib] / q, ratio=True) if q and cells[lib] else "" for lib in ("glm", "eigen")]
+        print(f"| {label} | {fmt(q)} | {fmt(cells['glm'])} | {fmt(cells['eigen'])} | "
+              f"{ratios[0]} | {ratios[1]} |")
+
+
+if __name__ == "__main__":
+    main()
