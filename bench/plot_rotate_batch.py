@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """Turns quat_bench JSON into an SVG plot of ns per point against n for rotate_batch.
 
-Usage: python3 bench/plot_rotate_batch.py RESULTS.json [OUTPUT.svg]
+Usage: python3 bench/plot_rotate_batch.py RESULTS.json [RESULTS2.json ...] [OUTPUT.svg]
   RESULTS.json from: quat_bench --benchmark_filter=^rotate_batch/ --benchmark_format=json > RESULTS.json
   (or --benchmark_out=RESULTS.json --benchmark_out_format=json); OUTPUT defaults to
   docs/images/rotate_batch.svg. Plots the float entries rotate_batch/<library>/<representation>/float/<n>,
-  ns per point = CPU time per iteration / n, on log-log axes. Python 3 standard library only.
+  ns per point = CPU time per iteration / n, on log-log axes; with several runs, the median of each
+  point. Python 3 standard library only.
 """
 import json
 import math
+import statistics
 import sys
 
 COLORS = {"quat": "#1f77b4", "glm": "#d62728", "eigen": "#2ca02c", "memcpy": "#7f7f7f"}
@@ -29,15 +31,30 @@ def series(data):
     return {k: sorted(v) for k, v in out.items()}
 
 
+def median_series(paths):
+    runs = []
+    for path in paths:
+        with open(path) as f:
+            runs.append(series(json.load(f)))
+    keys = set().union(*runs)
+    out = {}
+    for key in keys:
+        per_n = {}
+        for run in runs:
+            for n, t in run.get(key, []):
+                per_n.setdefault(n, []).append(t)
+        out[key] = sorted((n, statistics.median(ts)) for n, ts in per_n.items())
+    return out
+
+
 def main():
-    if len(sys.argv) < 2:
+    args = sys.argv[1:]
+    if not args:
         sys.exit(__doc__)
-    with open(sys.argv[1]) as f:
-        data = json.load(f)
-    output = sys.argv[2] if len(sys.argv) > 2 else "docs/images/rotate_batch.svg"
-    lines = series(data)
+    output = args.pop() if len(args) > 1 and args[-1].endswith(".svg") else "docs/images/rotate_batch.svg"
+    lines = median_series(args)
     if not lines:
-        sys.exit("no rotate_batch/.../float/<n> entries in " + sys.argv[1])
+        sys.exit("no rotate_batch/.../float/<n> entries in " + ", ".join(args))
     ns = [n for v in lines.values() for n, _ in v]
     ts = [t for v in lines.values() for _, t in v]
     x0, x1 = math.log10(min(ns)), math.log10(max(ns))
