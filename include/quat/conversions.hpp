@@ -27,25 +27,27 @@ template <class T>
 }
 
 /// Unit quaternion with w >= 0 of the rotation matrix m, exact for every rotation including 180°
-/// turns: Shepperd's method (J. Guidance and Control 1(3), 1978) takes the square root of the
-/// largest of 1 + trace and the diagonal, so it never divides by a small number.
+/// turns: Shepperd's method (J. Guidance and Control 1(3), 1978) builds q from the largest of
+/// 1 + trace and the diagonal, so it never divides by a small number.
 /// Precondition: m is a rotation; for other matrices use try_to_quaternion or nearest_rotation.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> to_quaternion(const rotation_matrix<T>& m) noexcept {
+    // Each branch forms 4 |c| q, where c is the largest component (4 w^2 = 1 + trace,
+    // 4 x^2 = 1 + m00 - m11 - m22, ...), from sums of entries alone; normalize then removes the
+    // factor, so the square root and the division that recover |c| are never needed.
     const T trace = m(0, 0) + m(1, 1) + m(2, 2);
     quaternion<T> q{};
     if (trace >= m(0, 0) && trace >= m(1, 1) && trace >= m(2, 2)) {
-        const T r = detail::sqrt(T(1) + trace), s = T(0.5) / r;
-        q = {r / T(2), (m(2, 1) - m(1, 2)) * s, (m(0, 2) - m(2, 0)) * s, (m(1, 0) - m(0, 1)) * s};
+        q = {T(1) + trace, m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)};
     } else if (m(0, 0) >= m(1, 1) && m(0, 0) >= m(2, 2)) {
-        const T r = detail::sqrt(T(1) + m(0, 0) - m(1, 1) - m(2, 2)), s = T(0.5) / r;
-        q = {(m(2, 1) - m(1, 2)) * s, r / T(2), (m(0, 1) + m(1, 0)) * s, (m(0, 2) + m(2, 0)) * s};
+        q = {m(2, 1) - m(1, 2), T(1) + m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0),
+             m(0, 2) + m(2, 0)};
     } else if (m(1, 1) >= m(2, 2)) {
-        const T r = detail::sqrt(T(1) - m(0, 0) + m(1, 1) - m(2, 2)), s = T(0.5) / r;
-        q = {(m(0, 2) - m(2, 0)) * s, (m(0, 1) + m(1, 0)) * s, r / T(2), (m(1, 2) + m(2, 1)) * s};
+        q = {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), T(1) - m(0, 0) + m(1, 1) - m(2, 2),
+             m(1, 2) + m(2, 1)};
     } else {
-        const T r = detail::sqrt(T(1) - m(0, 0) - m(1, 1) + m(2, 2)), s = T(0.5) / r;
-        q = {(m(1, 0) - m(0, 1)) * s, (m(0, 2) + m(2, 0)) * s, (m(1, 2) + m(2, 1)) * s, r / T(2)};
+        q = {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1),
+             T(1) - m(0, 0) - m(1, 1) + m(2, 2)};
     }
     return normalize(q.w < T(0) ? -q : q);
 }
