@@ -881,8 +881,6 @@ template <class T>
 // ---- begin quat/interpolation.hpp ----
 // Interpolation between rotations: slerp (constant angular velocity) and nlerp (cheap, normalized).
 
-#include <limits>
-
 
 namespace quat {
 
@@ -893,9 +891,7 @@ namespace quat {
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             T t) noexcept {
-    // A select, not a branch: with arbitrary inputs the sign is a coin toss that a branch
-    // predictor loses half the time.
-    const quaternion<T> near = b * (dot(a, b) < T(0) ? T(-1) : T(1));
+    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     if (t == T(0)) return a;
     if (t == T(1)) return near;
     if (t < T(0) || t > T(1)) {
