@@ -108,3 +108,15 @@ if(QUAT_TEST_VALGRIND)
         PASS_REGULAR_EXPRESSION "ERROR SUMMARY: 0 errors from 0 contexts"
         FAIL_REGULAR_EXPRESSION "ERROR SUMMARY: [1-9]")
 endif()
+
+if(QUAT_BUILD_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    # Users build with -O1 -fsanitize=address (the sanitizers' recommended setting) and -Werror;
+    # there clang cannot honour the batch loops' vectorize pragmas and would warn (-Wpass-failed).
+    # This compiles the batch tests that way, with the library's headers as user code sees them.
+    add_test(NAME clang_o1_sanitize_werror
+             COMMAND "${CMAKE_CXX_COMPILER}" -std=c++17 -O1 -fsanitize=address,undefined
+                     -Wall -Wextra -Wpedantic -Werror -I "${PROJECT_SOURCE_DIR}/include"
+                     -I "${PROJECT_SOURCE_DIR}/tests" -c "${PROJECT_SOURCE_DIR}/tests/test_batch.cpp"
+                     -o "${PROJECT_BINARY_DIR}/clang_o1_sanitize_werror.o")
+    set_tests_properties(clang_o1_sanitize_werror PROPERTIES LABELS "ci;lint")
+endif()

@@ -64,6 +64,13 @@ template <class T, std::size_t N>
 inline constexpr std::size_t batch_block = 256;
 inline constexpr std::size_t batch_block_slerp = 128;
 
+// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
+// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
+
 template <class T>
 void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
                   std::size_t n) noexcept {
@@ -140,6 +147,10 @@ void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* 
         oz[i] = m20 * px + m21 * py + m22 * pz;
     }
 }
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 
 template <class T, class Input, class Output>
 using if_point_arrays = std::enable_if_t<
