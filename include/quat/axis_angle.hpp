@@ -1,5 +1,6 @@
 // Rotations given as a unit axis and an angle.
-#pragma once
+#ifndef QUAT_AXIS_ANGLE_HPP_INCLUDED
+#define QUAT_AXIS_ANGLE_HPP_INCLUDED
 
 #include "vec3.hpp"
 
@@ -17,3 +18,5 @@ struct axis_angle {
 };
 
 }  // namespace quat
+
+#endif  // QUAT_AXIS_ANGLE_HPP_INCLUDED

@@ -8,7 +8,8 @@
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
 // Aliasing: an output may be exactly the input (in place) or not overlap it at all; a partial
 // overlap gives unspecified values.
-#pragma once
+#ifndef QUAT_BATCH_HPP_INCLUDED
+#define QUAT_BATCH_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
@@ -356,3 +357,5 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
 }
 
 }  // namespace quat
+
+#endif  // QUAT_BATCH_HPP_INCLUDED

@@ -1,5 +1,6 @@
 // quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
-#pragma once
+#ifndef QUAT_CONFIG_HPP_INCLUDED
+#define QUAT_CONFIG_HPP_INCLUDED
 
 #define QUAT_VERSION_MAJOR 1
 #define QUAT_VERSION_MINOR 0
@@ -11,3 +12,5 @@
 #include <cassert>
 #define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
 #endif
+
+#endif  // QUAT_CONFIG_HPP_INCLUDED

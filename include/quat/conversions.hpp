@@ -1,6 +1,7 @@
 // Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
 // Euler-angle conversions live in euler.hpp.
-#pragma once
+#ifndef QUAT_CONVERSIONS_HPP_INCLUDED
+#define QUAT_CONVERSIONS_HPP_INCLUDED
 
 #include <limits>
 #include <optional>
@@ -154,3 +155,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_CONVERSIONS_HPP_INCLUDED

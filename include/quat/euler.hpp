@@ -1,5 +1,6 @@
 // Euler angles: the 12 axis sequences, intrinsic or extrinsic, and conversions to and from them.
-#pragma once
+#ifndef QUAT_EULER_HPP_INCLUDED
+#define QUAT_EULER_HPP_INCLUDED
 
 #include <cstddef>
 
@@ -222,3 +223,5 @@ template <class T, sequence S, frame F>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_EULER_HPP_INCLUDED

@@ -1,6 +1,7 @@
 // Approximate slerp without trigonometry: a short polynomial in cos(angle), after Eberly 2011,
 // "A fast and accurate algorithm for computing SLERP" (J. Graphics, GPU, and Game Tools 15(3)).
-#pragma once
+#ifndef QUAT_FAST_SLERP_HPP_INCLUDED
+#define QUAT_FAST_SLERP_HPP_INCLUDED
 
 #include "detail/math.hpp"
 #include "quaternion.hpp"
@@ -65,3 +66,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_FAST_SLERP_HPP_INCLUDED

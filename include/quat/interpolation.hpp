@@ -1,5 +1,6 @@
 // Interpolation between rotations: slerp (constant angular velocity) and nlerp (cheap, normalized).
-#pragma once
+#ifndef QUAT_INTERPOLATION_HPP_INCLUDED
+#define QUAT_INTERPOLATION_HPP_INCLUDED
 
 #include "detail/math.hpp"
 #include "quaternion.hpp"
@@ -53,3 +54,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_INTERPOLATION_HPP_INCLUDED

@@ -1,5 +1,6 @@
 // The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
-#pragma once
+#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
+#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
 
 #include <optional>
 
@@ -112,3 +113,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_NEAREST_ROTATION_HPP_INCLUDED

@@ -14,7 +14,8 @@
 //   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the product.
 // - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
 //   and return an empty std::optional instead of NaN.
-#pragma once
+#ifndef QUAT_QUAT_HPP_INCLUDED
+#define QUAT_QUAT_HPP_INCLUDED
 
 #include "axis_angle.hpp"
 #include "batch.hpp"
@@ -27,3 +28,5 @@
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
 #include "vec3.hpp"
+
+#endif  // QUAT_QUAT_HPP_INCLUDED

@@ -1,5 +1,6 @@
 // Quaternions w + xi + yj + zk (scalar first, Hamilton's ij = k) and their algebra.
-#pragma once
+#ifndef QUAT_QUATERNION_HPP_INCLUDED
+#define QUAT_QUATERNION_HPP_INCLUDED
 
 #include <optional>
 
@@ -172,3 +173,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_QUATERNION_HPP_INCLUDED

@@ -1,5 +1,6 @@
 // 3x3 rotation matrices acting on column vectors.
-#pragma once
+#ifndef QUAT_ROTATION_MATRIX_HPP_INCLUDED
+#define QUAT_ROTATION_MATRIX_HPP_INCLUDED
 
 #include "config.hpp"
 #include "detail/math.hpp"
@@ -119,3 +120,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_ROTATION_MATRIX_HPP_INCLUDED

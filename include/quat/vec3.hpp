@@ -1,5 +1,6 @@
 // 3D vectors: the points and axes that rotations act on.
-#pragma once
+#ifndef QUAT_VEC3_HPP_INCLUDED
+#define QUAT_VEC3_HPP_INCLUDED
 
 #include <optional>
 
@@ -103,3 +104,5 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_VEC3_HPP_INCLUDED

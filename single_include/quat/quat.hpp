@@ -42,12 +42,18 @@
 //   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the product.
 // - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
 //   and return an empty std::optional instead of NaN.
+#ifndef QUAT_QUAT_HPP_INCLUDED
+#define QUAT_QUAT_HPP_INCLUDED
 
 // ---- begin quat/axis_angle.hpp ----
 // Rotations given as a unit axis and an angle.
+#ifndef QUAT_AXIS_ANGLE_HPP_INCLUDED
+#define QUAT_AXIS_ANGLE_HPP_INCLUDED
 
 // ---- begin quat/vec3.hpp ----
 // 3D vectors: the points and axes that rotations act on.
+#ifndef QUAT_VEC3_HPP_INCLUDED
+#define QUAT_VEC3_HPP_INCLUDED
 
 #include <optional>
 
@@ -58,6 +64,8 @@
 // long double implementations (correct to a few ulp of double for the argument ranges rotations
 // use: |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the
 // user's sqrt, sin, cos, atan2, asin and abs.
+#ifndef QUAT_DETAIL_MATH_HPP_INCLUDED
+#define QUAT_DETAIL_MATH_HPP_INCLUDED
 
 #include <cmath>
 #include <limits>
@@ -283,6 +291,8 @@ template <class T>
 }
 
 }  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_MATH_HPP_INCLUDED
 // ---- end quat/detail/math.hpp ----
 
 namespace quat {
@@ -383,6 +393,8 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_VEC3_HPP_INCLUDED
 // ---- end quat/vec3.hpp ----
 
 namespace quat {
@@ -399,6 +411,8 @@ struct axis_angle {
 };
 
 }  // namespace quat
+
+#endif  // QUAT_AXIS_ANGLE_HPP_INCLUDED
 // ---- end quat/axis_angle.hpp ----
 // ---- begin quat/batch.hpp ----
 // Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
@@ -411,6 +425,8 @@ struct axis_angle {
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
 // Aliasing: an output may be exactly the input (in place) or not overlap it at all; a partial
 // overlap gives unspecified values.
+#ifndef QUAT_BATCH_HPP_INCLUDED
+#define QUAT_BATCH_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
@@ -423,6 +439,8 @@ struct axis_angle {
 
 // ---- begin quat/config.hpp ----
 // quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
+#ifndef QUAT_CONFIG_HPP_INCLUDED
+#define QUAT_CONFIG_HPP_INCLUDED
 
 #define QUAT_VERSION_MAJOR 1
 #define QUAT_VERSION_MINOR 0
@@ -434,16 +452,22 @@ struct axis_angle {
 #include <cassert>
 #define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
 #endif
+
+#endif  // QUAT_CONFIG_HPP_INCLUDED
 // ---- end quat/config.hpp ----
 // ---- begin quat/conversions.hpp ----
 // Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
 // Euler-angle conversions live in euler.hpp.
+#ifndef QUAT_CONVERSIONS_HPP_INCLUDED
+#define QUAT_CONVERSIONS_HPP_INCLUDED
 
 #include <limits>
 #include <optional>
 
 // ---- begin quat/quaternion.hpp ----
 // Quaternions w + xi + yj + zk (scalar first, Hamilton's ij = k) and their algebra.
+#ifndef QUAT_QUATERNION_HPP_INCLUDED
+#define QUAT_QUATERNION_HPP_INCLUDED
 
 #include <optional>
 
@@ -613,9 +637,13 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_QUATERNION_HPP_INCLUDED
 // ---- end quat/quaternion.hpp ----
 // ---- begin quat/rotation_matrix.hpp ----
 // 3x3 rotation matrices acting on column vectors.
+#ifndef QUAT_ROTATION_MATRIX_HPP_INCLUDED
+#define QUAT_ROTATION_MATRIX_HPP_INCLUDED
 
 
 namespace quat {
@@ -732,6 +760,8 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_ROTATION_MATRIX_HPP_INCLUDED
 // ---- end quat/rotation_matrix.hpp ----
 
 namespace quat {
@@ -877,9 +907,13 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_CONVERSIONS_HPP_INCLUDED
 // ---- end quat/conversions.hpp ----
 // ---- begin quat/interpolation.hpp ----
 // Interpolation between rotations: slerp (constant angular velocity) and nlerp (cheap, normalized).
+#ifndef QUAT_INTERPOLATION_HPP_INCLUDED
+#define QUAT_INTERPOLATION_HPP_INCLUDED
 
 
 namespace quat {
@@ -930,6 +964,8 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_INTERPOLATION_HPP_INCLUDED
 // ---- end quat/interpolation.hpp ----
 
 namespace quat {
@@ -1262,9 +1298,13 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
 }
 
 }  // namespace quat
+
+#endif  // QUAT_BATCH_HPP_INCLUDED
 // ---- end quat/batch.hpp ----
 // ---- begin quat/euler.hpp ----
 // Euler angles: the 12 axis sequences, intrinsic or extrinsic, and conversions to and from them.
+#ifndef QUAT_EULER_HPP_INCLUDED
+#define QUAT_EULER_HPP_INCLUDED
 
 #include <cstddef>
 
@@ -1481,10 +1521,14 @@ template <class T, sequence S, frame F>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_EULER_HPP_INCLUDED
 // ---- end quat/euler.hpp ----
 // ---- begin quat/fast_slerp.hpp ----
 // Approximate slerp without trigonometry: a short polynomial in cos(angle), after Eberly 2011,
 // "A fast and accurate algorithm for computing SLERP" (J. Graphics, GPU, and Game Tools 15(3)).
+#ifndef QUAT_FAST_SLERP_HPP_INCLUDED
+#define QUAT_FAST_SLERP_HPP_INCLUDED
 
 
 namespace quat {
@@ -1547,9 +1591,13 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_FAST_SLERP_HPP_INCLUDED
 // ---- end quat/fast_slerp.hpp ----
 // ---- begin quat/nearest_rotation.hpp ----
 // The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
+#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
+#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
 
 #include <optional>
 
@@ -1658,5 +1706,9 @@ template <class T>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_NEAREST_ROTATION_HPP_INCLUDED
 // ---- end quat/nearest_rotation.hpp ----
+
+#endif  // QUAT_QUAT_HPP_INCLUDED
 // ---- end quat/quat.hpp ----

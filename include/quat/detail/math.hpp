@@ -4,7 +4,8 @@
 // long double implementations (correct to a few ulp of double for the argument ranges rotations
 // use: |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the
 // user's sqrt, sin, cos, atan2, asin and abs.
-#pragma once
+#ifndef QUAT_DETAIL_MATH_HPP_INCLUDED
+#define QUAT_DETAIL_MATH_HPP_INCLUDED
 
 #include <cmath>
 #include <limits>
@@ -230,3 +231,5 @@ template <class T>
 }
 
 }  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_MATH_HPP_INCLUDED

@@ -1,7 +1,8 @@
 // Opt-in conversions between quat and Eigen (not included by quat.hpp; needs Eigen's headers).
 // Eigen::Quaternion is Hamilton with q v q* like quat, so values carry over unchanged; only the
 // layout differs (coeffs() is x, y, z, w; the constructor takes w, x, y, z).
-#pragma once
+#ifndef QUAT_INTEROP_EIGEN_HPP_INCLUDED
+#define QUAT_INTEROP_EIGEN_HPP_INCLUDED
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -56,3 +57,5 @@ template <class T, int Options, int MaxRows, int MaxCols>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_INTEROP_EIGEN_HPP_INCLUDED

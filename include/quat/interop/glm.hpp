@@ -1,7 +1,8 @@
 // Opt-in conversions between quat and GLM (not included by quat.hpp; needs GLM's headers).
 // GLM's conventions: glm::qua is Hamilton with q v q* like quat, so values carry over unchanged;
 // only the layout differs (GLM stores x, y, z, w and glm::mat3 is column-major, m[col][row]).
-#pragma once
+#ifndef QUAT_INTEROP_GLM_HPP_INCLUDED
+#define QUAT_INTEROP_GLM_HPP_INCLUDED
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
@@ -63,3 +64,5 @@ template <class T, glm::qualifier Q>
 }
 
 }  // namespace quat
+
+#endif  // QUAT_INTEROP_GLM_HPP_INCLUDED
