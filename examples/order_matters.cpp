@@ -15,7 +15,7 @@ using view3d::v3;
 
 namespace {
 
-constexpr double pi = detail::pi<double>;
+constexpr double pi = quat::pi;
 
 double rotation_angle(const quatd& from, const quatd& to) {
     return to_axis_angle(conjugate(from) * to).angle;

@@ -98,7 +98,7 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
     CHECK(none.axis == vec3<T>{1, 0, 0});
     // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
     const quaternion<T> quarter =
-        quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::detail::pi<T> / 2});
+        quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::pi_v<T> / 2});
     CHECK(quarter.w == Approx(std::sqrt(0.5)));
     CHECK(quarter.z == Approx(std::sqrt(0.5)));
 }
@@ -144,5 +144,5 @@ TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles t
     CHECK(quat::from_rotation_vector(vec3<T>{0, 0, 0}) == quaternion<T>::identity());
     CHECK(quat::to_rotation_vector(quaternion<T>::identity()) == vec3<T>{0, 0, 0});
     const vec3<T> half_turn = quat::to_rotation_vector(quaternion<T>{0, 0, 1, 0});
-    CHECK(half_turn.y == Approx(quat::detail::pi<T>));
+    CHECK(half_turn.y == Approx(quat::pi_v<T>));
 }

@@ -22,7 +22,10 @@ static_assert(!std::is_convertible_v<euler<double, sequence::zyx, frame::intrins
                                      euler<double, sequence::zyx, frame::extrinsic>>);
 static_assert(std::is_same_v<euler<double>, euler<double, sequence::zyx, frame::intrinsic>>,
               "the thesis's R = Rz Ry Rx is the default");
-static_assert(std::is_aggregate_v<euler<float>>);
+static_assert(std::is_trivially_default_constructible_v<euler<float>>, "a plain struct");
+static_assert(std::is_constructible_v<euler<double>, euler<float>> &&
+                  !std::is_convertible_v<euler<float>, euler<double>>,
+              "precisions convert explicitly only");
 
 namespace {
 
@@ -90,7 +93,7 @@ TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in
         using E = decltype(convention);
         constexpr sequence S = E::axis_sequence;
         constexpr frame F = E::rotation_frame;
-        const T pi = quat::detail::pi<T>;
+        const T pi = quat::pi_v<T>;
         for (int n = 0; n < 2000; ++n) {
             const quaternion<T> q = random.unit_quaternion<T>();
             const E e = quat::to_euler<S, F>(q);
@@ -111,7 +114,7 @@ TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in
 
 TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e-12", "[euler]") {
     quat::test::random_rotations random;
-    const double pi = quat::detail::pi<double>;
+    const double pi = quat::pi;
     for_each_convention<double>([&](auto convention) {
         using E = decltype(convention);
         constexpr sequence S = E::axis_sequence;
@@ -142,7 +145,7 @@ TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e
 TEST_CASE("gimbal lock: two different Euler triples give one rotation, and extract_euler says so",
           "[euler]") {
     using E = euler<double>;  // R = Rz(yaw) Ry(pitch) Rx(roll)
-    const double pitch = quat::detail::pi<double> / 2;
+    const double pitch = quat::pi / 2;
     // With pitch = 90°, yaw and roll turn about the same world axis: only yaw - roll matters.
     const E a{{0.7, pitch, 0.2}}, b{{0.9, pitch, 0.4}};
     CHECK(quat::angle_between(quat::to_quaternion(a), quat::to_quaternion(b)) <= 1e-15);

@@ -17,7 +17,9 @@ namespace {
 constexpr quatd one{1, 0, 0, 0}, i{0, 1, 0, 0}, j{0, 0, 1, 0}, k{0, 0, 0, 1};
 }  // namespace
 
-static_assert(std::is_aggregate_v<quatd>);
+static_assert(std::is_trivially_default_constructible_v<quatd>, "a plain struct");
+static_assert(std::is_constructible_v<quatd, quat::quatf> && !std::is_convertible_v<quat::quatf, quatd>,
+              "precisions convert explicitly only");
 static_assert(std::is_trivially_copyable_v<quat::quatf>);
 static_assert(std::is_nothrow_default_constructible_v<quatd>);
 static_assert(quatd::identity() == one);
@@ -123,5 +125,5 @@ TEMPLATE_TEST_CASE("angle_between ignores sign and is accurate for nearby rotati
     const quaternion<T> turn{std::cos(tiny / 2), std::sin(tiny / 2), 0, 0};
     CHECK(quat::angle_between(q, q * turn) == Approx(tiny).epsilon(1e-3));
     const quaternion<T> half{0, 1, 0, 0};
-    CHECK(quat::angle_between(quaternion<T>::identity(), half) == Approx(quat::detail::pi<T>));
+    CHECK(quat::angle_between(quaternion<T>::identity(), half) == Approx(quat::pi_v<T>));
 }

@@ -15,7 +15,10 @@ constexpr matrix quarter_turn_z = matrix::from_columns({0, 1, 0}, {-1, 0, 0}, {0
 constexpr matrix quarter_turn_x = matrix::from_rows({1, 0, 0}, {0, 0, -1}, {0, 1, 0});     // y -> z
 }  // namespace
 
-static_assert(std::is_aggregate_v<matrix>);
+static_assert(std::is_trivially_default_constructible_v<matrix>, "a plain struct");
+static_assert(std::is_constructible_v<matrix, quat::rotation_matrix<float>> &&
+                  !std::is_convertible_v<quat::rotation_matrix<float>, matrix>,
+              "precisions convert explicitly only");
 static_assert(std::is_trivially_copyable_v<matrix>);
 static_assert(quarter_turn_z(1, 0) == 1 && quarter_turn_z(0, 1) == -1, "m(row, col)");
 static_assert(quat::rotate(quarter_turn_z, vec3<double>{1, 0, 0}) == vec3<double>{0, 1, 0},

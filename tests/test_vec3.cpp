@@ -8,7 +8,10 @@
 
 using quat::vec3;
 
-static_assert(std::is_aggregate_v<vec3<double>>);
+static_assert(std::is_trivially_default_constructible_v<vec3<double>>, "a plain struct");
+static_assert(std::is_constructible_v<vec3<double>, vec3<float>> &&
+                  !std::is_convertible_v<vec3<float>, vec3<double>>,
+              "precisions convert explicitly only");
 static_assert(std::is_trivially_copyable_v<vec3<float>>);
 static_assert(quat::cross(vec3<double>{1, 0, 0}, vec3<double>{0, 1, 0}) == vec3<double>{0, 0, 1},
               "right-handed: x cross y = z");

@@ -6,8 +6,15 @@
 //
 // Arrays are passed either as pointer + count or as any contiguous container or view with data()
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
-// Aliasing: an output may be exactly the input (in place) or not overlap it at all; a partial
-// overlap gives unspecified values.
+// Aliasing: an output may be exactly the input (in place) or not overlap it at all. A partial
+// overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (one pointer-range
+// check per call); with NDEBUG the values written are unspecified.
+//
+// One definition across instruction sets: the functions here are compiled differently under
+// different -m flags (vector width, the AVX-512 streaming branch), so they live in an inline
+// namespace named after the widest of AVX-512F, AVX2 and AVX the translation unit is compiled for.
+// Two translation units built with different flags then call different functions, and the linker
+// never substitutes one for the other. soa_points, a type, stays outside: it is the same everywhere.
 #ifndef QUAT_BATCH_HPP_INCLUDED
 #define QUAT_BATCH_HPP_INCLUDED
 
@@ -16,12 +23,9 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
-#endif
-
 #include "config.hpp"
 #include "conversions.hpp"
+#include "detail/streaming_store.hpp"
 #include "interpolation.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
@@ -39,7 +43,18 @@ struct soa_points {
     std::size_t count;  ///< number of points in each array
 };
 
-namespace detail {
+}  // namespace quat
+
+namespace quat::detail {
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#else
+inline namespace isa_baseline {
+#endif
 
 // std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
 // translation unit that includes quat.hpp: half its compile time.
@@ -58,6 +73,25 @@ template <class Container>
 template <class T, std::size_t N>
 [[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
     return N;
+}
+
+template <class T, class Input, class Output>
+using if_point_arrays = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())),
+                          const vec3<T>*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
+
+// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) are one and the same or do not
+// overlap. Compared as integers: relational operators on unrelated pointers are unspecified.
+[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                           std::size_t b_bytes) noexcept {
+    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
+    return (x == y && a_bytes == b_bytes) || x + a_bytes <= y || y + b_bytes <= x;
+}
+[[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                   std::size_t b_bytes) noexcept {
+    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
+    return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
 }
 
 // Points (or slerp parameters) per block where a block is computed into a local buffer first:
@@ -98,23 +132,6 @@ inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
 
 // Rotates block by block into a local buffer, then streams the buffer to memory. The points are
 // written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
-// Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE).
-inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
-    std::size_t i = 0;
-#if defined(__SSE__) || defined(_M_X64)
-    for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % 16 != 0; ++i) to[i] = from[i];
-    for (; i + 4 <= n; i += 4) _mm_stream_ps(to + i, _mm_loadu_ps(from + i));
-#endif
-    for (; i < n; ++i) to[i] = from[i];
-}
-
-// Makes the streamed stores visible before returning, like ordinary stores.
-inline void stream_fence() noexcept {
-#if defined(__SSE__) || defined(_M_X64)
-    _mm_sfence();
-#endif
-}
-
 inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input,
                              vec3<float>* output, std::size_t count) noexcept {
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
@@ -153,122 +170,15 @@ void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* 
 #pragma clang diagnostic pop
 #endif
 
-template <class T, class Input, class Output>
-using if_point_arrays = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())),
-                          const vec3<T>*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
-
-}  // namespace detail
-
-/// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
-/// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
+// Each output array is one of the input arrays or overlaps none of them.
 template <class T>
-void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
-            std::size_t count) noexcept {
-#if defined(__AVX512F__)
-    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
-    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
-    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
-    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
-    if constexpr (std::is_same_v<T, float>) {
-        if (count * sizeof(vec3<float>) >= detail::streaming_bytes) {
-            detail::rotate_streaming(m, input, output, count);
-            return;
-        }
-    }
-#endif
-    // Each point is read before it is written, so output == input is safe here; g++ and clang
-    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
-    detail::rotate_block(m, input, output, count);
+[[nodiscard]] bool soa_same_or_disjoint(soa_points<const T> input, soa_points<T> output) noexcept {
+    const std::size_t bytes = input.count * sizeof(T);
+    for (const T* out : {output.x, output.y, output.z})
+        for (const T* in : {input.x, input.y, input.z})
+            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
+    return true;
 }
-
-/// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
-/// point costs 9 multiply-adds. Aliasing as for the matrix overload.
-template <class T>
-void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
-            std::size_t count) noexcept {
-    rotate(to_matrix(q), input, output, count);
-}
-
-/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
-/// any input. Precondition: output.count >= input.count.
-template <class T>
-void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T> output) noexcept {
-    QUAT_ASSERT(output.count >= input.count, "output shorter than input");
-    if constexpr (std::is_same_v<T, float>) {
-        if (input.count * 3 * sizeof(float) >= detail::streaming_bytes) {
-            // Out of cache: rotate a block into local arrays, then stream them (as for AoS).
-            constexpr std::size_t block = detail::batch_block;
-            float rx[block], ry[block], rz[block];
-            for (std::size_t start = 0; start < input.count; start += block) {
-                const std::size_t n = input.count - start < block ? input.count - start : block;
-                detail::rotate_block(m, input.x + start, input.y + start, input.z + start, rx, ry,
-                                     rz, n);
-                detail::stream_floats(output.x + start, rx, n);
-                detail::stream_floats(output.y + start, ry, n);
-                detail::stream_floats(output.z + start, rz, n);
-            }
-            detail::stream_fence();
-            return;
-        }
-    }
-    detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
-}
-
-/// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
-template <class T>
-void rotate(const quaternion<T>& q, soa_points<const T> input, soa_points<T> output) noexcept {
-    rotate(to_matrix(q), input, output);
-}
-
-/// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
-/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input).
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
-void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input), "output shorter than input");
-    rotate(q, detail::data_of(input), detail::data_of(output), detail::size_of(input));
-}
-/// Container form of the array-of-structs rotation by m.
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
-void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input), "output shorter than input");
-    rotate(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
-}
-
-/// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
-/// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
-/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
-/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
-/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        quaternion<T> product = quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
-                                quaternion<T>::identity(), quaternion<T>::identity()};
-    for (std::size_t i = 0; i < run; ++i)
-        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
-    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
-    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
-}
-
-/// compose over any contiguous container or view of quaternion<T>.
-template <class Range,
-          class T = std::remove_cv_t<
-              std::remove_pointer_t<decltype(detail::data_of(std::declval<const Range&>()))>>,
-          class = std::enable_if_t<std::is_same_v<T, quaternion<decltype(T{}.w)>>>>
-[[nodiscard]] constexpr T compose(const Range& factors) noexcept {
-    return compose(detail::data_of(factors), detail::size_of(factors));
-}
-
-namespace detail {
 
 // sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
 // term is below epsilon / 100 at pi/2 (through x^13 for float, x^21 for double). Unlike std::sin it
@@ -295,19 +205,10 @@ template <class T>
     return x * acc;
 }
 
-}  // namespace detail
-
-/// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
-/// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.
-/// Preconditions: unit a and b; output does not overlap t. For t outside [0, 1], nearly equal a and
-/// b, or non-float/double scalars, each value falls back to the scalar slerp.
+// The batch slerp for float and double: see slerp(a, b, t, output, count).
 template <class T>
-void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternion<T>* output,
-           std::size_t count) noexcept {
-    if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
-        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, t[i]);
-        return;
-    }
+void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const T* t,
+                      quaternion<T>* output, std::size_t count) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
@@ -345,6 +246,152 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternio
     }
 }
 
+}  // inline namespace isa_...
+}  // namespace quat::detail
+
+namespace quat {
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#else
+inline namespace isa_baseline {
+#endif
+
+/// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
+/// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
+template <class T>
+void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+            std::size_t count) noexcept {
+    QUAT_ASSERT(detail::same_or_disjoint(input, count * sizeof(vec3<T>), output,
+                                         count * sizeof(vec3<T>)),
+                "quat::rotate: output partially overlaps input");
+#if defined(__AVX512F__)
+    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
+    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
+    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
+    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
+    if constexpr (std::is_same_v<T, float>) {
+        if (count * sizeof(vec3<float>) >= detail::streaming_bytes) {
+            detail::rotate_streaming(m, input, output, count);
+            return;
+        }
+    }
+#endif
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    detail::rotate_block(m, input, output, count);
+}
+
+/// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
+/// point costs 9 multiply-adds. Aliasing as for the matrix overload.
+template <class T>
+void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
+            std::size_t count) noexcept {
+    rotate(to_matrix(q), input, output, count);
+}
+
+/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
+/// any input. Precondition: output.count >= input.count.
+template <class T>
+void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T> output) noexcept {
+    QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
+    QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
+                "quat::rotate: an output array partially overlaps an input array");
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= detail::streaming_bytes) {
+            // Out of cache: rotate a block into local arrays, then stream them (as for AoS).
+            constexpr std::size_t block = detail::batch_block;
+            float rx[block], ry[block], rz[block];
+            for (std::size_t start = 0; start < input.count; start += block) {
+                const std::size_t n = input.count - start < block ? input.count - start : block;
+                detail::rotate_block(m, input.x + start, input.y + start, input.z + start, rx, ry,
+                                     rz, n);
+                detail::stream_floats(output.x + start, rx, n);
+                detail::stream_floats(output.y + start, ry, n);
+                detail::stream_floats(output.z + start, rz, n);
+            }
+            detail::stream_fence();
+            return;
+        }
+    }
+    detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
+}
+
+/// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
+template <class T>
+void rotate(const quaternion<T>& q, soa_points<const T> input, soa_points<T> output) noexcept {
+    rotate(to_matrix(q), input, output);
+}
+
+/// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
+/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input).
+template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::rotate: output shorter than input");
+    rotate(q, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+}
+/// Container form of the array-of-structs rotation by m.
+template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::rotate: output shorter than input");
+    rotate(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+}
+
+/// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
+/// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
+/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
+/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
+/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
+/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
+    constexpr std::size_t lanes = 4;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        quaternion<T> product = quaternion<T>::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
+                                quaternion<T>::identity(), quaternion<T>::identity()};
+    for (std::size_t i = 0; i < run; ++i)
+        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
+    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
+    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
+}
+
+/// compose over any contiguous container or view of quaternion<T>.
+template <class Range,
+          class T = std::remove_cv_t<
+              std::remove_pointer_t<decltype(detail::data_of(std::declval<const Range&>()))>>,
+          class = std::enable_if_t<std::is_same_v<T, quaternion<decltype(T{}.w)>>>>
+[[nodiscard]] constexpr T compose(const Range& factors) noexcept {
+    return compose(detail::data_of(factors), detail::size_of(factors));
+}
+
+
+
+/// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
+/// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.
+/// Preconditions: unit a and b; output does not overlap t. For t outside [0, 1], nearly equal a and
+/// b, or non-float/double scalars, each value falls back to the scalar slerp.
+template <class T>
+void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternion<T>* output,
+           std::size_t count) noexcept {
+    QUAT_ASSERT(detail::disjoint(t, count * sizeof(T), output, count * sizeof(quaternion<T>)),
+                "quat::slerp: output overlaps t");
+    if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
+        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, t[i]);
+    } else {
+        detail::slerp_polynomial(a, b, t, output, count);
+    }
+}
+
 /// slerp at every t of a contiguous container into a contiguous output of quaternion<T>.
 /// Precondition: size(output) >= size(t).
 template <class T, class Parameters, class Output>
@@ -356,6 +403,7 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
           static_cast<quaternion<T>*>(detail::data_of(output)), detail::size_of(t));
 }
 
+}  // inline namespace isa_...
 }  // namespace quat
 
 #endif  // QUAT_BATCH_HPP_INCLUDED

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "axis_angle.hpp"
+#include "config.hpp"
 #include "detail/math.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
@@ -18,6 +19,7 @@ namespace quat {
 /// Precondition: |q| = 1 (a non-unit q gives a matrix that is not a rotation).
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const quaternion<T>& q) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::to_matrix: q is not a unit quaternion");
     const T x2 = q.x + q.x, y2 = q.y + q.y, z2 = q.z + q.z;
     const T xx = q.x * x2, yy = q.y * y2, zz = q.z * z2;
     const T xy = q.x * y2, xz = q.x * z2, yz = q.y * z2;
@@ -63,7 +65,8 @@ template <class T>
 /// or orthogonality_error(m) > tolerance. Use nearest_rotation to repair a matrix first.
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_to_quaternion(
-    const rotation_matrix<T>& m, T tolerance = default_orthogonality_tolerance<T>()) noexcept {
+    const rotation_matrix<T>& m,
+    detail::type_identity_t<T> tolerance = default_orthogonality_tolerance<T>()) noexcept {
     const T error = orthogonality_error(m);
     if (!(error <= tolerance) || !(determinant(m) > T(0))) return std::nullopt;  // NaN fails too
     return to_quaternion(m);
@@ -73,6 +76,8 @@ template <class T>
 /// Precondition: unit axis; try_to_quaternion(axis_angle) normalizes and checks untrusted input.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> to_quaternion(const axis_angle<T>& rotation) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(rotation.axis),
+                "quat::to_quaternion: the axis of an axis_angle is not a unit vector");
     const T half = rotation.angle * T(0.5), s = detail::sin(half);
     return {detail::cos(half), rotation.axis.x * s, rotation.axis.y * s, rotation.axis.z * s};
 }
@@ -88,13 +93,14 @@ template <class T>
 }
 
 /// Axis and angle in [0, pi] of the rotation q (q and -q give the same result). The identity gives
-/// axis (1, 0, 0) and angle 0. Any non-zero scale of q gives the same result.
+/// axis (1, 0, 0) and angle 0. Any non-zero scale of q gives the same result; the zero quaternion
+/// and NaN or infinite components give NaN.
 template <class T>
 [[nodiscard]] constexpr axis_angle<T> to_axis_angle(const quaternion<T>& q) noexcept {
     const quaternion<T> p = q.w < T(0) ? -q : q;
     const vec3<T> u{p.x, p.y, p.z};
     const T s = norm(u);
-    if (!(s > T(0))) return {{T(1), T(0), T(0)}, T(0)};
+    if (s == T(0) && p.w > T(0) && detail::is_finite(p.w)) return {{T(1), T(0), T(0)}, T(0)};
     return {u / s, T(2) * detail::atan2(s, p.w)};
 }
 

@@ -3,6 +3,8 @@
 #define QUAT_EULER_HPP_INCLUDED
 
 #include <cstddef>
+#include <type_traits>
+#include <utility>
 
 #include "axis_angle.hpp"
 #include "config.hpp"
@@ -33,6 +35,19 @@ struct euler {
     static constexpr quat::sequence axis_sequence = S;  ///< for generic code
     static constexpr quat::frame rotation_frame = F;    ///< for generic code
 
+    /// Angles left uninitialized, as in a plain struct; euler<T, S, F>{} is all zero.
+    euler() = default;
+    /// The angles a0, a1, a2 in radians, in the order of the sequence's letters.
+    constexpr euler(T a0, T a1, T a2) noexcept : angles{a0, a1, a2} {}
+    /// The angles from an array: euler<T>{{a0, a1, a2}}.
+    constexpr euler(const T (&values)[3]) noexcept : angles{values[0], values[1], values[2]} {}
+    /// Conversion from another precision, same convention: euler<double>{ef}. Conventions never
+    /// convert into each other implicitly or explicitly; use to_euler<S, F>(e) for that.
+    template <class U>
+    constexpr explicit euler(const euler<U, S, F>& e) noexcept
+        : angles{static_cast<T>(e.angles[0]), static_cast<T>(e.angles[1]),
+                 static_cast<T>(e.angles[2])} {}
+
     /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
     [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept {
         QUAT_ASSERT(i < 3, "Euler angle index out of range");
@@ -44,6 +59,25 @@ struct euler {
         return angles[i];
     }
 };
+
+/// Angle I of e, for structured bindings: auto [a0, a1, a2] = e;
+template <std::size_t I, class T, sequence S, frame F>
+[[nodiscard]] constexpr T& get(euler<T, S, F>& e) noexcept {
+    static_assert(I < 3, "an euler has three angles");
+    return e.angles[I];
+}
+/// Angle I of e, read-only.
+template <std::size_t I, class T, sequence S, frame F>
+[[nodiscard]] constexpr const T& get(const euler<T, S, F>& e) noexcept {
+    static_assert(I < 3, "an euler has three angles");
+    return e.angles[I];
+}
+/// Angle I of an rvalue e.
+template <std::size_t I, class T, sequence S, frame F>
+[[nodiscard]] constexpr T&& get(euler<T, S, F>&& e) noexcept {
+    static_assert(I < 3, "an euler has three angles");
+    return static_cast<T&&>(e.angles[I]);
+}
 
 /// Result of extract_euler: the angles, and whether the rotation is at gimbal lock, where only the
 /// sum or difference of the first and third angles is determined and the third angle is set to 0.
@@ -181,7 +215,7 @@ template <sequence S, frame F = frame::intrinsic, class T>
         gamma = detail::atan2(b * c - a * d, a * c + b * d);
     }
     if (!proper) {
-        beta -= detail::pi<T> / T(2);
+        beta -= detail::pi<T>() / T(2);
         gamma = -parity * gamma;
     }
     euler<T, S, F> angles{};
@@ -223,5 +257,14 @@ template <class T, sequence S, frame F>
 }
 
 }  // namespace quat
+
+/// An euler is a tuple of three angles for structured bindings.
+template <class T, quat::sequence S, quat::frame F>
+struct std::tuple_size<quat::euler<T, S, F>> : std::integral_constant<std::size_t, 3> {};
+/// Each angle has the type T.
+template <std::size_t I, class T, quat::sequence S, quat::frame F>
+struct std::tuple_element<I, quat::euler<T, S, F>> {
+    using type = T;  ///< the angle type
+};
 
 #endif  // QUAT_EULER_HPP_INCLUDED

@@ -20,11 +20,12 @@ template <class T>
 [[nodiscard]] constexpr T slerp_weight(T y, T s) noexcept {
     // b_i / b_{i-1} = s^2 u_i - v_i with u_i = 1 / (i (2i + 1)), v_i = i / (2i + 1), as constants
     // (a division by a literal is not turned into a multiplication without -ffast-math).
-    constexpr T mu = T(0.1502107483);
-    constexpr T u1 = T(1) / T(3), v1 = T(1) / T(3), u2 = T(1) / T(10), v2 = T(2) / T(5);
-    constexpr T u3 = T(1) / T(21), v3 = T(3) / T(7), u4 = T(1) / T(36), v4 = T(4) / T(9);
-    constexpr T u5 = T(1) / T(55), v5 = T(5) / T(11);
-    constexpr T u6 = (T(1) + mu) / T(78), v6 = (T(1) + mu) * T(6) / T(13);
+    // const, not constexpr: a user scalar need not be a literal type.
+    const T mu = T(0.1502107483);
+    const T u1 = T(1) / T(3), v1 = T(1) / T(3), u2 = T(1) / T(10), v2 = T(2) / T(5);
+    const T u3 = T(1) / T(21), v3 = T(3) / T(7), u4 = T(1) / T(36), v4 = T(4) / T(9);
+    const T u5 = T(1) / T(55), v5 = T(5) / T(11);
+    const T u6 = (T(1) + mu) / T(78), v6 = (T(1) + mu) * T(6) / T(13);
     const T s2 = s * s;
     // Horner from the innermost term: acc_i = 1 + (b_i / b_{i-1}) y acc_{i+1}.
     T acc = T(1) + (s2 * u6 - v6) * y;
@@ -43,7 +44,7 @@ template <class T>
 /// at t = 0 and t = 1. Precondition: unit a, b and t in [0, 1] (outside it the error grows quickly).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
-                                                 T t) noexcept {
+                                                 detail::type_identity_t<T> t) noexcept {
     const T d = dot(a, b);
     // Selections by arithmetic on 0/1 instead of branches: with random inputs a branch on the sign
     // or on t < 1/2 is mispredicted half the time, which costs more than the whole polynomial.

@@ -2,6 +2,7 @@
 #ifndef QUAT_INTERPOLATION_HPP_INCLUDED
 #define QUAT_INTERPOLATION_HPP_INCLUDED
 
+#include "config.hpp"
 #include "detail/math.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
@@ -14,17 +15,21 @@ namespace quat {
 /// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
-                                            T t) noexcept {
+                                            detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp: a or b is not a unit quaternion");
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    if (t == T(0)) return a;
-    if (t == T(1)) return near;
+    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a NaN or infinite other end
+    // visible instead of returning a clean-looking value.
+    if (t == T(0)) return a + (near - near);
+    if (t == T(1)) return near + (a - a);
     if (t < T(0) || t > T(1)) {
         // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
         // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
         const quaternion<T> relative = conjugate(a) * near;
         const vec3<T> u{relative.x, relative.y, relative.z};
         const T s = norm(u);
-        if (!(s > T(0))) return a;
+        if (s == T(0)) return detail::is_finite(t) ? a : a * t;  // no motion; a bad t stays visible
         const T half_turn = t * detail::atan2(s, relative.w);
         const vec3<T> v = u / s * detail::sin(half_turn);
         return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
@@ -38,7 +43,8 @@ template <class T>
     const quaternion<T> sum = a + near;
     const quaternion<T> difference = near - a;
     const T chord = detail::sqrt(squared_norm(difference));
-    if (chord == T(0)) return a;  // a == near: nothing to interpolate (NaN goes on below)
+    // a == near: nothing to interpolate, but a non-finite t still gives NaN (other NaN goes on below).
+    if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
     const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
     return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
            difference * (detail::sin(u) / chord);
@@ -48,7 +54,7 @@ template <class T>
 /// cheaper. Precondition: unit a and b; the sign flip keeps the sum non-zero for t in [0, 1].
 template <class T>
 [[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b,
-                                            T t) noexcept {
+                                            detail::type_identity_t<T> t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     return normalize(a + (near - a) * t);
 }

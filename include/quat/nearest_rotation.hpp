@@ -27,7 +27,7 @@ struct horn_solution {
 // unconditionally convergent, quadratically at the end, a handful of sweeps for a 4x4.
 template <class T>
 [[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& input) noexcept {
-    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    const T nan = std::numeric_limits<T>::quiet_NaN();
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (!detail::is_finite(input(i, j))) return {{nan, nan, nan, nan}, nan};

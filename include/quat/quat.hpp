@@ -20,6 +20,7 @@
 #include "axis_angle.hpp"
 #include "batch.hpp"
 #include "config.hpp"
+#include "constants.hpp"
 #include "conversions.hpp"
 #include "euler.hpp"
 #include "fast_slerp.hpp"

@@ -2,13 +2,34 @@
 #ifndef QUAT_QUATERNION_HPP_INCLUDED
 #define QUAT_QUATERNION_HPP_INCLUDED
 
+#include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "config.hpp"
 #include "detail/math.hpp"
 #include "vec3.hpp"
 
 namespace quat {
+
+namespace detail {
+
+/// The debug check of a unit quaternion or axis v: |v|^2 within 1/4096 of 1, which a forgotten
+/// normalization misses and accumulated rounding does not. NaN and infinities pass: they propagate to
+/// the result instead (NaN in, NaN out). Only float, double and long double are checked, so a user
+/// scalar (a counting or automatic-differentiation type) needs nothing more in debug builds.
+template <class V>
+[[nodiscard]] constexpr bool is_near_unit(const V& v) noexcept {
+    using T = decltype(squared_norm(v));
+    if constexpr (std::is_floating_point_v<T>) {
+        const T s = squared_norm(v);
+        return !is_finite(s) || abs(s - T(1)) <= T(1) / T(4096);
+    } else {
+        return true;
+    }
+}
+
+}  // namespace detail
 
 /// Quaternion w + xi + yj + zk, scalar first, Hamilton product (ij = k, jk = i, ki = j).
 /// A unit quaternion represents the active rotation v -> q v q*; q and -q are the same rotation.
@@ -18,6 +39,17 @@ struct quaternion {
     /// @{
     T w, x, y, z;
     /// @}
+
+    /// Components left uninitialized, as in a plain struct; quaternion<T>{} is zero.
+    quaternion() = default;
+    /// The quaternion w + xi + yj + zk.
+    constexpr quaternion(T w_value, T x_value, T y_value, T z_value) noexcept
+        : w(w_value), x(x_value), y(y_value), z(z_value) {}
+    /// Conversion from another precision, component by component: quatd{qf}.
+    template <class U>
+    constexpr explicit quaternion(const quaternion<U>& q) noexcept
+        : w(static_cast<T>(q.w)), x(static_cast<T>(q.x)), y(static_cast<T>(q.y)),
+          z(static_cast<T>(q.z)) {}
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
     [[nodiscard]] static constexpr quaternion identity() noexcept {
@@ -55,20 +87,48 @@ template <class T>
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
             a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
-/// Product with a scalar, component-wise.
+/// Product with a scalar, component-wise; s converts to T (q * 2 for a quatf).
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& q, T s) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator*(const quaternion<T>& q,
+                                                detail::type_identity_t<T> s) noexcept {
     return {q.w * s, q.x * s, q.y * s, q.z * s};
 }
-/// Product with a scalar, component-wise.
+/// Product with a scalar, component-wise; s converts to T.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator*(T s, const quaternion<T>& q) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator*(detail::type_identity_t<T> s,
+                                                const quaternion<T>& q) noexcept {
     return q * s;
 }
-/// Component-wise division by s; s == 0 gives IEEE infinities or NaN.
+/// Component-wise division by s (converted to T); s == 0 gives IEEE infinities or NaN.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> operator/(const quaternion<T>& q, T s) noexcept {
+[[nodiscard]] constexpr quaternion<T> operator/(const quaternion<T>& q,
+                                                detail::type_identity_t<T> s) noexcept {
     return {q.w / s, q.x / s, q.y / s, q.z / s};
+}
+/// q = q + r.
+template <class T>
+constexpr quaternion<T>& operator+=(quaternion<T>& q, const quaternion<T>& r) noexcept {
+    return q = q + r;
+}
+/// q = q - r.
+template <class T>
+constexpr quaternion<T>& operator-=(quaternion<T>& q, const quaternion<T>& r) noexcept {
+    return q = q - r;
+}
+/// q = q * r: as rotations, r is applied first, then the old q.
+template <class T>
+constexpr quaternion<T>& operator*=(quaternion<T>& q, const quaternion<T>& r) noexcept {
+    return q = q * r;
+}
+/// q = q * s, component-wise.
+template <class T>
+constexpr quaternion<T>& operator*=(quaternion<T>& q, detail::type_identity_t<T> s) noexcept {
+    return q = q * s;
+}
+/// q = q / s, component-wise.
+template <class T>
+constexpr quaternion<T>& operator/=(quaternion<T>& q, detail::type_identity_t<T> s) noexcept {
+    return q = q / s;
 }
 
 /// Exact component-wise equality; q == -q is false although both are one rotation
@@ -159,6 +219,7 @@ template <class T>
 /// Precondition: |q| = 1 (a non-unit q also scales and skews v).
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
     const vec3<T> u{q.x, q.y, q.z};
     const vec3<T> t = cross(u, v) * T(2);
     return v + t * q.w + cross(u, t);
@@ -166,10 +227,54 @@ template <class T>
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
 /// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
+/// NaN when a or b has a NaN or infinite component.
 template <class T>
 [[nodiscard]] constexpr T angle_between(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    return T(4) * detail::atan2(norm(a - near), norm(a + near));
+    const T chord = norm(a - near), sum = norm(a + near);
+    // Two infinite norms would give atan2(inf, inf) = pi/4, a plausible-looking angle of pi.
+    if (!detail::is_finite(chord + sum)) return std::numeric_limits<T>::quiet_NaN();
+    return T(4) * detail::atan2(chord, sum);
+}
+
+/// True when unit a and b are the same rotation within angle_tolerance radians: compares the angle
+/// between them, so q and -q are equal. False when either holds NaN or an infinity.
+template <class T>
+[[nodiscard]] constexpr bool approx_equal(const quaternion<T>& a, const quaternion<T>& b,
+                                          detail::type_identity_t<T> angle_tolerance) noexcept {
+    return angle_between(a, b) <= angle_tolerance;
+}
+
+/// True when ||q| - 1| <= tolerance; false for NaN or infinite components.
+template <class T>
+[[nodiscard]] constexpr bool is_unit(const quaternion<T>& q,
+                                     detail::type_identity_t<T> tolerance) noexcept {
+    return detail::abs(norm(q) - T(1)) <= tolerance;
+}
+
+/// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
+/// An integer angle gives a quatd.
+template <class A>
+[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_x(A angle) noexcept {
+    using T = detail::real_t<A>;
+    const T half = static_cast<T>(angle) * T(0.5);
+    return {detail::cos(half), detail::sin(half), T(0), T(0)};
+}
+
+/// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
+template <class A>
+[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_y(A angle) noexcept {
+    using T = detail::real_t<A>;
+    const T half = static_cast<T>(angle) * T(0.5);
+    return {detail::cos(half), T(0), detail::sin(half), T(0)};
+}
+
+/// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
+template <class A>
+[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
+    using T = detail::real_t<A>;
+    const T half = static_cast<T>(angle) * T(0.5);
+    return {detail::cos(half), T(0), T(0), detail::sin(half)};
 }
 
 }  // namespace quat

@@ -17,6 +17,23 @@ struct rotation_matrix {
     T elements[3][3];
     /// @}
 
+    /// Elements left uninitialized, as in a plain struct; rotation_matrix<T>{} is zero.
+    rotation_matrix() = default;
+    /// The matrix with the given rows: rotation_matrix<T>{{{m00, m01, m02}, {m10, ...}, {...}}}.
+    constexpr rotation_matrix(const T (&rows)[3][3]) noexcept
+        : elements{{rows[0][0], rows[0][1], rows[0][2]},
+                   {rows[1][0], rows[1][1], rows[1][2]},
+                   {rows[2][0], rows[2][1], rows[2][2]}} {}
+    /// Conversion from another precision, element by element: rotation_matrix<float>{md}.
+    template <class U>
+    constexpr explicit rotation_matrix(const rotation_matrix<U>& m) noexcept
+        : elements{{static_cast<T>(m.elements[0][0]), static_cast<T>(m.elements[0][1]),
+                    static_cast<T>(m.elements[0][2])},
+                   {static_cast<T>(m.elements[1][0]), static_cast<T>(m.elements[1][1]),
+                    static_cast<T>(m.elements[1][2])},
+                   {static_cast<T>(m.elements[2][0]), static_cast<T>(m.elements[2][1]),
+                    static_cast<T>(m.elements[2][2])}} {}
+
     /// Element at (row, col), both in [0, 3).
     [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
@@ -67,6 +84,12 @@ template <class T>
     return {{{entry(0, 0), entry(0, 1), entry(0, 2)},
              {entry(1, 0), entry(1, 1), entry(1, 2)},
              {entry(2, 0), entry(2, 1), entry(2, 2)}}};
+}
+
+/// a = a * b: as rotations, b is applied first, then the old a.
+template <class T>
+constexpr rotation_matrix<T>& operator*=(rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+    return a = a * b;
 }
 
 /// Exact element-wise equality.

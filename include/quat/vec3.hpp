@@ -2,6 +2,7 @@
 #ifndef QUAT_VEC3_HPP_INCLUDED
 #define QUAT_VEC3_HPP_INCLUDED
 
+#include <limits>
 #include <optional>
 
 #include "detail/math.hpp"
@@ -15,6 +16,15 @@ struct vec3 {
     /// @{
     T x, y, z;
     /// @}
+
+    /// Components left uninitialized, as in a plain struct; vec3<T>{} is the zero vector.
+    vec3() = default;
+    /// The vector (x, y, z).
+    constexpr vec3(T x_value, T y_value, T z_value) noexcept : x(x_value), y(y_value), z(z_value) {}
+    /// Conversion from another precision, component by component: vec3<float>{vd}.
+    template <class U>
+    constexpr explicit vec3(const vec3<U>& v) noexcept
+        : x(static_cast<T>(v.x)), y(static_cast<T>(v.y)), z(static_cast<T>(v.z)) {}
 };
 
 /// Negation.
@@ -32,20 +42,40 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-/// Product with a scalar, component-wise.
+/// Product with a scalar, component-wise; s converts to T (v * 2 for a vec3<float>).
 template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const vec3<T>& v, T s) noexcept {
+[[nodiscard]] constexpr vec3<T> operator*(const vec3<T>& v, detail::type_identity_t<T> s) noexcept {
     return {v.x * s, v.y * s, v.z * s};
 }
-/// Product with a scalar, component-wise.
+/// Product with a scalar, component-wise; s converts to T.
 template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(T s, const vec3<T>& v) noexcept {
+[[nodiscard]] constexpr vec3<T> operator*(detail::type_identity_t<T> s, const vec3<T>& v) noexcept {
     return v * s;
 }
-/// Component-wise division by s; s == 0 gives IEEE infinities or NaN.
+/// Component-wise division by s (converted to T); s == 0 gives IEEE infinities or NaN.
 template <class T>
-[[nodiscard]] constexpr vec3<T> operator/(const vec3<T>& v, T s) noexcept {
+[[nodiscard]] constexpr vec3<T> operator/(const vec3<T>& v, detail::type_identity_t<T> s) noexcept {
     return {v.x / s, v.y / s, v.z / s};
+}
+/// v = v + w.
+template <class T>
+constexpr vec3<T>& operator+=(vec3<T>& v, const vec3<T>& w) noexcept {
+    return v = v + w;
+}
+/// v = v - w.
+template <class T>
+constexpr vec3<T>& operator-=(vec3<T>& v, const vec3<T>& w) noexcept {
+    return v = v - w;
+}
+/// v = v * s.
+template <class T>
+constexpr vec3<T>& operator*=(vec3<T>& v, detail::type_identity_t<T> s) noexcept {
+    return v = v * s;
+}
+/// v = v / s.
+template <class T>
+constexpr vec3<T>& operator/=(vec3<T>& v, detail::type_identity_t<T> s) noexcept {
+    return v = v / s;
 }
 /// Exact component-wise equality.
 template <class T>

@@ -220,9 +220,26 @@ template <class T>
     return x == x && abs(x) <= std::numeric_limits<T>::max();
 }
 
-/// pi in the scalar type T.
+/// pi in the scalar type T; a function, not a variable template, so that a scalar type without
+/// constexpr constructors works too (the public constants are quat::pi and quat::pi_v<T>).
 template <class T>
-inline constexpr T pi = T(3.14159265358979323846264338327950288L);
+[[nodiscard]] constexpr T pi() noexcept {
+    return T(3.14159265358979323846264338327950288L);
+}
+
+/// T itself, in a context where it is not deduced (std::type_identity_t in C++20): a scalar beside a
+/// quat type converts to that type's T instead of deducing a second, conflicting T.
+template <class T>
+struct type_identity {
+    using type = T;
+};
+template <class T>
+using type_identity_t = typename type_identity<T>::type;
+
+/// The scalar type of a factory called with an angle of type T: double for integers (as std::sin
+/// does), T otherwise.
+template <class T>
+using real_t = std::conditional_t<std::is_integral_v<T>, double, T>;
 
 /// The larger of two values (NaN-propagation is not needed where it is used).
 template <class T>

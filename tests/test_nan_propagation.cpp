@@ -1,0 +1,199 @@
+// NaN in, NaN out: every public function, given a NaN or an infinite component, returns something
+// visibly bad (a NaN or infinite component, false, or an empty optional), never a finite value that
+// looks like an answer. Each check names the function it covers.
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <quat/quat.hpp>
+
+#include "support/catch.hpp"
+
+namespace {
+
+using quat::axis_angle;
+using quat::quaternion;
+using quat::rotation_matrix;
+using quat::sequence;
+using quat::vec3;
+
+template <class T>
+bool bad(T x) {
+    return !std::isfinite(x);
+}
+template <class T>
+bool bad(const vec3<T>& v) {
+    return bad(v.x) || bad(v.y) || bad(v.z);
+}
+template <class T>
+bool bad(const quaternion<T>& q) {
+    return bad(q.w) || bad(q.x) || bad(q.y) || bad(q.z);
+}
+template <class T>
+bool bad(const rotation_matrix<T>& m) {
+    for (int i = 0; i < 3; ++i)
+        if (bad(quat::row(m, i))) return true;
+    return false;
+}
+template <class T>
+bool bad(const axis_angle<T>& a) {
+    return bad(a.axis) || bad(a.angle);
+}
+template <class T, sequence S, quat::frame F>
+bool bad(const quat::euler<T, S, F>& e) {
+    return bad(e[0]) || bad(e[1]) || bad(e[2]);
+}
+
+// Inputs with one bad component in a position that is not multiplied by zero on the way.
+template <class T>
+struct inputs {
+    T value;
+    quaternion<T> q{T(0.5), value, T(0.5), T(0.5)};
+    vec3<T> v{T(0.25), value, T(-0.5)};
+    quaternion<T> unit = quat::normalize(quaternion<T>{T(0.9), T(0.1), T(-0.3), T(0.2)});
+    vec3<T> good_vector{T(0.3), T(-0.2), T(0.7)};
+    rotation_matrix<T> m = [this] {
+        rotation_matrix<T> r = quat::to_matrix(unit);
+        r(1, 2) = value;
+        return r;
+    }();
+    quat::euler<T> e{T(0.3), value, T(-0.2)};
+    axis_angle<T> rotation{quat::normalize(vec3<T>{T(1), T(2), T(2)}), value};
+};
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infinite input", "[nan]",
+                   float, double) {
+    using T = TestType;
+    for (const T value : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                          -std::numeric_limits<T>::infinity()}) {
+        INFO("bad component: " << value);
+        const inputs<T> in{value};
+        const auto& q = in.q;
+        const auto& v = in.v;
+        const auto& m = in.m;
+        const auto& unit = in.unit;
+
+        // vec3.hpp
+        CHECK(bad(-v));
+        CHECK(bad(v + in.good_vector));
+        CHECK(bad(v - in.good_vector));
+        CHECK(bad(in.good_vector * value));
+        CHECK(bad(in.good_vector / (value == value ? T(0) : value)));  // x / 0 and x / NaN
+        CHECK(bad(quat::dot(v, in.good_vector)));
+        CHECK(bad(quat::cross(v, in.good_vector)));
+        CHECK(bad(quat::squared_norm(v)));
+        CHECK(bad(quat::norm(v)));
+        CHECK(bad(quat::normalize(v)));
+        CHECK_FALSE(quat::try_normalize(v).has_value());
+
+        // quaternion.hpp
+        CHECK(bad(-q));
+        CHECK(bad(q + unit));
+        CHECK(bad(q - unit));
+        CHECK(bad(q * unit));
+        CHECK(bad(unit * q));
+        CHECK(bad(unit * value));
+        CHECK(bad(quat::conjugate(q)));
+        CHECK(bad(quat::dot(q, unit)));
+        CHECK(bad(quat::squared_norm(q)));
+        CHECK(bad(quat::norm(q)));
+        CHECK(bad(quat::normalize(q)));
+        CHECK_FALSE(quat::try_normalize(q).has_value());
+        CHECK(bad(quat::inverse(q)));
+        CHECK_FALSE(quat::try_inverse(q).has_value());
+        CHECK(bad(quat::rotate(q, in.good_vector)));
+        CHECK(bad(quat::rotate(unit, v)));
+        CHECK(bad(quat::angle_between(q, unit)));
+        CHECK(bad(quat::angle_between(unit, q)));
+        CHECK_FALSE(quat::approx_equal(q, unit, T(10)));
+        CHECK_FALSE(quat::is_unit(q, T(10)));
+        CHECK(bad(quat::rotation_x(value)));
+        CHECK(bad(quat::rotation_y(value)));
+        CHECK(bad(quat::rotation_z(value)));
+        if (value != value) CHECK_FALSE(q == q);
+
+        // rotation_matrix.hpp
+        CHECK(bad(m * quat::to_matrix(unit)));
+        CHECK(bad(quat::to_matrix(unit) * m));
+        CHECK(bad(quat::rotate(m, in.good_vector)));
+        CHECK(bad(quat::rotate(quat::to_matrix(unit), v)));
+        CHECK(bad(quat::transpose(m)));
+        CHECK(bad(quat::determinant(m)));
+        CHECK(bad(quat::orthogonality_error(m)));
+
+        // conversions.hpp
+        CHECK(bad(quat::to_matrix(q)));
+        CHECK(bad(quat::to_quaternion(m)));
+        CHECK_FALSE(quat::try_to_quaternion(m).has_value());
+        CHECK(bad(quat::to_quaternion(in.rotation)));
+        CHECK_FALSE(quat::try_to_quaternion(in.rotation).has_value());
+        CHECK_FALSE(quat::try_to_quaternion(axis_angle<T>{v, T(1)}).has_value());
+        CHECK(bad(quat::to_axis_angle(q)));
+        CHECK(bad(quat::to_axis_angle(quaternion<T>{value, T(0), T(0), T(0)})));
+        CHECK(bad(quat::to_axis_angle(m)));
+        CHECK(bad(quat::to_matrix(in.rotation)));
+        CHECK(bad(quat::from_rotation_vector(v)));
+        CHECK(bad(quat::to_rotation_vector(q)));
+
+        // euler.hpp
+        CHECK(bad(quat::to_quaternion(in.e)));
+        CHECK(bad(quat::to_matrix(in.e)));
+        CHECK(bad(quat::to_axis_angle(in.e)));
+        CHECK(bad(quat::extract_euler<sequence::zyx>(q).angles));
+        CHECK(bad(quat::extract_euler<sequence::zxz, quat::frame::extrinsic>(q).angles));
+        CHECK(bad(quat::to_euler<sequence::xyz>(q)));
+        CHECK(bad(quat::to_euler<sequence::xyz>(m)));
+        CHECK(bad(quat::to_euler<sequence::xyz>(in.rotation)));
+        CHECK(bad(quat::to_euler<sequence::yzy>(in.e)));
+
+        // nearest_rotation.hpp
+        CHECK(bad(quat::nearest_rotation(m)));
+        CHECK_FALSE(quat::try_nearest_rotation(m).has_value());
+
+        // interpolation.hpp and fast_slerp.hpp: a bad end point or a bad parameter
+        const quaternion<T> other = quat::normalize(quaternion<T>{T(0.2), T(0.7), T(0.1), T(-0.4)});
+        for (const T t : {T(0), T(0.25), T(1), T(2)}) {
+            CHECK(bad(quat::slerp(unit, q, t)));
+            CHECK(bad(quat::slerp(q, unit, t)));
+            CHECK(bad(quat::nlerp(unit, q, t)));
+            CHECK(bad(quat::slerp_fast(q, unit, t)));
+        }
+        CHECK(bad(quat::slerp(unit, other, value)));
+        CHECK(bad(quat::slerp(unit, unit, value)));  // no motion to scale, but t is still bad
+        CHECK(bad(quat::nlerp(unit, other, value)));
+        CHECK(bad(quat::slerp_fast(unit, other, value)));
+
+        // batch.hpp
+        std::vector<vec3<T>> points(40, in.good_vector), rotated(40);
+        points[7] = v;
+        quat::rotate(unit, points, rotated);
+        CHECK(bad(rotated[7]));
+        CHECK_FALSE(bad(rotated[8]));  // the others are untouched by it
+        quat::rotate(m, points.data(), rotated.data(), points.size());
+        CHECK(bad(rotated[0]));
+        std::vector<T> x(40, T(1)), y(40, T(2)), z(40, T(3)), ox(40), oy(40), oz(40);
+        y[3] = value;
+        quat::rotate(unit, quat::soa_points<const T>{x.data(), y.data(), z.data(), 40},
+                     quat::soa_points<T>{ox.data(), oy.data(), oz.data(), 40});
+        CHECK(bad(vec3<T>{ox[3], oy[3], oz[3]}));
+        std::vector<quaternion<T>> factors(20, unit);
+        factors[11] = q;
+        CHECK(bad(quat::compose(factors)));
+        std::vector<T> ts(20, T(0.5));
+        ts[5] = value;
+        std::vector<quaternion<T>> slerped(20);
+        quat::slerp(unit, other, ts, slerped);
+        CHECK(bad(slerped[5]));
+        quat::slerp(unit, q, ts.data(), slerped.data(), 4);
+        CHECK(bad(slerped[0]));
+    }
+}
+
+TEST_CASE("the zero quaternion has no axis: to_axis_angle gives NaN", "[nan]") {
+    CHECK(bad(quat::to_axis_angle(quat::quatd{0, 0, 0, 0})));
+    CHECK(quat::to_axis_angle(quat::quatd{2, 0, 0, 0}).angle == 0.0);  // any positive scale of 1
+}
