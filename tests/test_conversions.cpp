@@ -97,8 +97,7 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
     CHECK(none.angle == 0);
     CHECK(none.axis == vec3<T>{1, 0, 0});
     // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
-    const quaternion<T> quarter =
-        quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::pi_v<T> / 2});
+    const quaternion<T> quarter = quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::pi_v<T> / 2});
     CHECK(quarter.w == Approx(std::sqrt(0.5)));
     CHECK(quarter.z == Approx(std::sqrt(0.5)));
 }

@@ -171,3 +171,42 @@ TEST_CASE("the default convention is the thesis's yaw-pitch-roll, R = Rz Ry Rx",
     CHECK(converted[0] == Approx(1.1));
     CHECK(converted[2] == Approx(0.3));
 }
+
+namespace {
+
+template <sequence S, frame F>
+void check_structured_bindings() {
+    euler<double, S, F> e{0.25, -0.5, 1.5};
+    auto [a0, a1, a2] = e;
+    CHECK((a0 == 0.25 && a1 == -0.5 && a2 == 1.5));
+    auto& [r0, r1, r2] = e;
+    r1 = 2;
+    CHECK(e[1] == 2);
+    (void)r0;
+    (void)r2;
+    static_assert(std::tuple_size_v<euler<double, S, F>> == 3);
+    static_assert(std::is_same_v<std::tuple_element_t<2, euler<float, S, F>>, float>);
+    const euler<float, S, F> single{e};  // explicit precision change keeps the convention
+    CHECK(single[0] == 0.25f);
+    CHECK(single[1] == 2.0f);
+    static_assert(!std::is_convertible_v<euler<double, S, F>, euler<float, S, F>>);
+}
+
+template <std::size_t... I>
+void check_all_structured_bindings(std::index_sequence<I...>) {
+    constexpr sequence all[12] = {sequence::xyz, sequence::xzy, sequence::yxz, sequence::yzx,
+                                  sequence::zxy, sequence::zyx, sequence::xyx, sequence::xzx,
+                                  sequence::yxy, sequence::yzy, sequence::zxz, sequence::zyz};
+    (check_structured_bindings < all[I / 2], I % 2 == 0 ? frame::intrinsic : frame::extrinsic > (),
+     ...);
+}
+
+}  // namespace
+
+TEST_CASE("auto [a0, a1, a2] = e works for every Euler convention", "[euler][first-use]") {
+    check_all_structured_bindings(std::make_index_sequence<24>{});
+    constexpr euler<double> from_array{{1.0, 2.0, 3.0}};
+    static_assert(from_array[2] == 3.0, "euler<T>{{a0, a1, a2}} still initializes from an array");
+    static_assert(!std::is_constructible_v<euler<double, sequence::xyz>, euler<double>>,
+                  "conventions never convert into each other");
+}

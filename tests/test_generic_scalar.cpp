@@ -1,14 +1,16 @@
 // The templates work with a user-defined scalar. This is the exact list of what quat asks of T:
 // - construction from an integer or floating literal, explicit: T(2), T(0.5), T(3.14...L);
 //   value initialization T{} and copying;
-// - unary -, binary + - * / and the comparisons < <= > >= == != (returning bool);
+// - unary -, binary + - * /, compound += and -=, and the comparisons < <= > >= == != (returning
+//   bool);
 // - std::numeric_limits<T>: epsilon(), min(), max(), infinity(), quiet_NaN();
 // - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for built-ins).
-// Operations must not throw (quat's functions are noexcept). The counting scalar of quat_bench is
-// one such type.
+// Nothing needs to be constexpr: user::runtime_real below has no constexpr member at all. Operations
+// must not throw (quat's functions are noexcept). The counting scalar of quat_bench is one such type.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <quat/quat.hpp>
 
@@ -33,7 +35,6 @@ constexpr real operator*(real a, real b) noexcept { return real(a.value * b.valu
 constexpr real operator/(real a, real b) noexcept { return real(a.value / b.value); }
 constexpr real& operator+=(real& a, real b) noexcept { return a = a + b; }
 constexpr real& operator-=(real& a, real b) noexcept { return a = a - b; }
-constexpr real& operator*=(real& a, real b) noexcept { return a = a * b; }
 constexpr bool operator<(real a, real b) noexcept { return a.value < b.value; }
 constexpr bool operator<=(real a, real b) noexcept { return a.value <= b.value; }
 constexpr bool operator>(real a, real b) noexcept { return a.value > b.value; }
@@ -46,6 +47,50 @@ inline real cos(real a) noexcept { return real(std::cos(a.value)); }
 inline real atan2(real y, real x) noexcept { return real(std::atan2(y.value, x.value)); }
 inline real asin(real a) noexcept { return real(std::asin(a.value)); }
 inline real abs(real a) noexcept { return real(std::abs(a.value)); }
+
+/// The same list with nothing constexpr: a type that is not a literal type (it has a
+/// user-provided destructor), like an arbitrary-precision or automatic-differentiation scalar.
+struct runtime_real {
+    double value;
+
+    runtime_real() noexcept : value(0) {}
+    explicit runtime_real(int v) noexcept : value(v) {}
+    explicit runtime_real(double v) noexcept : value(v) {}
+    explicit runtime_real(long double v) noexcept : value(static_cast<double>(v)) {}
+    runtime_real(const runtime_real&) noexcept = default;
+    runtime_real& operator=(const runtime_real&) noexcept = default;
+    ~runtime_real() {}  // NOLINT(modernize-use-equals-default): makes the type non-literal
+};
+
+inline runtime_real operator-(runtime_real a) noexcept { return runtime_real(-a.value); }
+inline runtime_real operator+(runtime_real a, runtime_real b) noexcept {
+    return runtime_real(a.value + b.value);
+}
+inline runtime_real operator-(runtime_real a, runtime_real b) noexcept {
+    return runtime_real(a.value - b.value);
+}
+inline runtime_real operator*(runtime_real a, runtime_real b) noexcept {
+    return runtime_real(a.value * b.value);
+}
+inline runtime_real operator/(runtime_real a, runtime_real b) noexcept {
+    return runtime_real(a.value / b.value);
+}
+inline runtime_real& operator+=(runtime_real& a, runtime_real b) noexcept { return a = a + b; }
+inline runtime_real& operator-=(runtime_real& a, runtime_real b) noexcept { return a = a - b; }
+inline bool operator<(runtime_real a, runtime_real b) noexcept { return a.value < b.value; }
+inline bool operator<=(runtime_real a, runtime_real b) noexcept { return a.value <= b.value; }
+inline bool operator>(runtime_real a, runtime_real b) noexcept { return a.value > b.value; }
+inline bool operator>=(runtime_real a, runtime_real b) noexcept { return a.value >= b.value; }
+inline bool operator==(runtime_real a, runtime_real b) noexcept { return a.value == b.value; }
+inline bool operator!=(runtime_real a, runtime_real b) noexcept { return a.value != b.value; }
+inline runtime_real sqrt(runtime_real a) noexcept { return runtime_real(std::sqrt(a.value)); }
+inline runtime_real sin(runtime_real a) noexcept { return runtime_real(std::sin(a.value)); }
+inline runtime_real cos(runtime_real a) noexcept { return runtime_real(std::cos(a.value)); }
+inline runtime_real atan2(runtime_real y, runtime_real x) noexcept {
+    return runtime_real(std::atan2(y.value, x.value));
+}
+inline runtime_real asin(runtime_real a) noexcept { return runtime_real(std::asin(a.value)); }
+inline runtime_real abs(runtime_real a) noexcept { return runtime_real(std::abs(a.value)); }
 
 }  // namespace user
 
@@ -69,14 +114,31 @@ struct std::numeric_limits<user::real> {
     }
 };
 
+template <>
+struct std::numeric_limits<user::runtime_real> {
+    static constexpr bool is_specialized = true;
+    static user::runtime_real epsilon() noexcept {
+        return user::runtime_real(std::numeric_limits<double>::epsilon());
+    }
+    static user::runtime_real min() noexcept {
+        return user::runtime_real(std::numeric_limits<double>::min());
+    }
+    static user::runtime_real max() noexcept {
+        return user::runtime_real(std::numeric_limits<double>::max());
+    }
+    static user::runtime_real infinity() noexcept {
+        return user::runtime_real(std::numeric_limits<double>::infinity());
+    }
+    static user::runtime_real quiet_NaN() noexcept {
+        return user::runtime_real(std::numeric_limits<double>::quiet_NaN());
+    }
+};
+
 namespace {
 
-using R = user::real;
-
-R r(double v) { return R(v); }
-
-// The same computation in double and in user::real must agree: user::real performs exactly the
-// double operations, but an optimizer may constant-fold one side's <cmath> calls, so allow 4 eps.
+// The same computation in double and in the user scalar must agree: the user scalar performs
+// exactly the double operations, but an optimizer may constant-fold one side's <cmath> calls, so
+// allow 4 eps.
 template <class Q, class D>
 void check_same(const Q& got, const D& expected) {
     const double tol = 4 * std::numeric_limits<double>::epsilon();
@@ -86,22 +148,32 @@ void check_same(const Q& got, const D& expected) {
     CHECK(got.z.value == Approx(expected.z).epsilon(tol).margin(tol));
 }
 
-bool same(R got, double expected) {
+template <class R>
+bool same(const R& got, double expected) {
     return std::abs(got.value - expected) <=
            4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(expected));
 }
 
 }  // namespace
 
-TEST_CASE("every operation instantiates with a user-defined scalar and matches double",
-          "[generic]") {
+TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and matches double",
+                   "[generic]", user::real, user::runtime_real) {
     using namespace quat;
+    using R = TestType;
+    const auto r = [](double v) { return R(v); };
     const quaternion<R> a = normalize(quaternion<R>{r(0.3), r(-0.2), r(0.9), r(0.1)});
     const quaternion<R> b{r(0.5), r(0.5), r(-0.5), r(0.5)};
     const quatd ad = normalize(quatd{0.3, -0.2, 0.9, 0.1}), bd{0.5, 0.5, -0.5, 0.5};
     check_same(a, ad);
     check_same(a * b, ad * bd);
     check_same(a + b - a * r(2.0) / r(3.0), ad + bd - ad * 2.0 / 3.0);
+    quaternion<R> accumulated = a;
+    accumulated *= b;
+    accumulated += a;
+    accumulated -= b;
+    accumulated *= r(0.5);
+    accumulated /= r(3);
+    check_same(accumulated, ((ad * bd + ad - bd) * 0.5) / 3.0);
     check_same(conjugate(a), conjugate(ad));
     check_same(inverse(a), inverse(ad));
     check_same(*try_inverse(a), *try_inverse(ad));
@@ -109,20 +181,32 @@ TEST_CASE("every operation instantiates with a user-defined scalar and matches d
     CHECK(same(norm(a), norm(ad)));
     CHECK(same(dot(a, b), dot(ad, bd)));
     CHECK(same(angle_between(a, b), angle_between(ad, bd)));
+    CHECK(approx_equal(a, -a, r(1e-9)));
+    CHECK(is_unit(a, r(1e-9)));
+    check_same(rotation_x(r(0.7)), rotation_x(0.7));
+    check_same(rotation_y(r(0.7)), rotation_y(0.7));
+    check_same(rotation_z(r(0.7)), rotation_z(0.7));
+    check_same(quaternion<R>{quat::quatf{ad}}, quatd{quat::quatf{ad}});
     CHECK(a == a);
     CHECK(a != b);
 
-    const vec3<R> v{r(1), r(2), r(3)};
+    vec3<R> v{r(1), r(2), r(3)};
     const vec3<double> vd{1, 2, 3};
     CHECK(same(rotate(a, v).y, rotate(ad, vd).y));
     CHECK(same(normalize(v).z, normalize(vd).z));
     CHECK(try_normalize(v).has_value());
     CHECK(same(cross(v, v * r(2)).x, 0));
+    v += v;
+    v -= vec3<R>{r(1), r(1), r(1)};
+    v *= r(3);
+    v /= r(2);
+    CHECK(same(v.z, (3.0 * 2 - 1) * 3 / 2));
 
     const rotation_matrix<R> m = to_matrix(a);
     const rotation_matrix<double> md = to_matrix(ad);
     CHECK(same(m(1, 2), md(1, 2)));
-    CHECK(same(rotate(m * transpose(m), v).x, rotate(md * transpose(md), vd).x));
+    CHECK(same(rotate(m * transpose(m), v).x,
+               rotate(md * transpose(md), vec3<double>{1.5, 4.5, 7.5}).x));
     CHECK(same(determinant(m), determinant(md)));
     CHECK(same(orthogonality_error(m), orthogonality_error(md)));
     check_same(to_quaternion(m), to_quaternion(md));
@@ -138,11 +222,13 @@ TEST_CASE("every operation instantiates with a user-defined scalar and matches d
     CHECK(same(to_matrix(aa)(2, 0), to_matrix(aad)(2, 0)));
     CHECK(same(to_axis_angle(m).angle, to_axis_angle(md).angle));
 
-    check_same(from_rotation_vector(v), from_rotation_vector(vd));
+    check_same(from_rotation_vector(v), from_rotation_vector(vec3<double>{1.5, 4.5, 7.5}));
     CHECK(same(to_rotation_vector(a).x, to_rotation_vector(ad).x));
 
-    const euler<R, sequence::xzx, frame::extrinsic> e{{r(0.1), r(0.2), r(0.3)}};
-    const euler<double, sequence::xzx, frame::extrinsic> ed{{0.1, 0.2, 0.3}};
+    const euler<R, sequence::xzx, frame::extrinsic> e{r(0.1), r(0.2), r(0.3)};
+    const euler<double, sequence::xzx, frame::extrinsic> ed{0.1, 0.2, 0.3};
+    const auto [e0, e1, e2] = e;
+    CHECK((same(e0, 0.1) && same(e1, 0.2) && same(e2, 0.3)));
     check_same(to_quaternion(e), to_quaternion(ed));
     CHECK(same(to_matrix(e)(0, 2), to_matrix(ed)(0, 2)));
     CHECK(same(to_axis_angle(e).angle, to_axis_angle(ed).angle));
@@ -152,7 +238,27 @@ TEST_CASE("every operation instantiates with a user-defined scalar and matches d
     CHECK(same(to_euler<sequence::zyx>(e)[2], to_euler<sequence::zyx>(ed)[2]));
     CHECK(extract_euler<sequence::xyz>(a).gimbal_lock ==
           extract_euler<sequence::xyz>(ad).gimbal_lock);
+    CHECK(same(extract_euler<sequence::zxz>(a).angles[1],
+               extract_euler<sequence::zxz>(ad).angles[1]));
 
     check_same(slerp(a, b, r(0.3)), slerp(ad, bd, 0.3));
+    check_same(slerp(a, b, r(1.7)), slerp(ad, bd, 1.7));
     check_same(nlerp(a, b, r(0.3)), nlerp(ad, bd, 0.3));
+    check_same(slerp_fast(a, b, r(0.3)), slerp_fast(ad, bd, 0.3));
+
+    // The batch functions take the plain loops (no vector polynomial) for a user scalar.
+    std::vector<vec3<R>> points(5, vec3<R>{r(1), r(2), r(3)}), rotated(5);
+    rotate(a, points, rotated);
+    CHECK(same(rotated[4].y, rotate(ad, vd).y));
+    std::vector<R> xs(5, r(1)), ys(5, r(2)), zs(5, r(3)), ox(5), oy(5), oz(5);
+    rotate(a, soa_points<const R>{xs.data(), ys.data(), zs.data(), 5},
+           soa_points<R>{ox.data(), oy.data(), oz.data(), 5});
+    CHECK(same(oy[2], rotate(ad, vd).y));
+    const std::vector<quaternion<R>> factors(20, a);
+    const std::vector<quatd> factors_d(20, ad);
+    check_same(compose(factors), compose(factors_d));
+    const std::vector<R> ts{r(0), r(0.3), r(1)};
+    std::vector<quaternion<R>> slerped(3);
+    slerp(a, b, ts, slerped);
+    check_same(slerped[1], slerp(ad, bd, 0.3));
 }

@@ -42,3 +42,37 @@ TEMPLATE_TEST_CASE("try_normalize rejects the zero vector and non-finite input",
     REQUIRE(unit.has_value());
     CHECK(*unit == vec3<T>{0, 0, 1});
 }
+
+TEST_CASE("a scalar beside a vec3 converts to its precision", "[vec3][first-use]") {
+    const vec3<float> v{1.5f, -2.25f, 0.1f};
+    CHECK(v * 2 == v * 2.0f);
+    CHECK(2 * v == 2.0f * v);
+    CHECK(v * 0.1 == v * 0.1f);  // a double literal rounds to float first, like float(0.1)
+    CHECK(0.1 * v == 0.1f * v);
+    CHECK(v / 3 == v / 3.0f);
+    static_assert(std::is_same_v<decltype(v * 2.0), vec3<float>>, "no promotion to double");
+}
+
+TEST_CASE("compound assignment on vec3", "[vec3][first-use]") {
+    vec3<double> v{1, 2, 3};
+    const vec3<double> w{0.5, -1, 4};
+    v += w;
+    CHECK(v == vec3<double>{1.5, 1, 7});
+    v -= w;
+    CHECK(v == vec3<double>{1, 2, 3});
+    v *= 2;
+    CHECK(v == vec3<double>{2, 4, 6});
+    v /= 4;
+    CHECK(v == vec3<double>{0.5, 1, 1.5});
+    static_assert(std::is_same_v<decltype(v += w), vec3<double>&>);
+}
+
+TEST_CASE("vec3 converts explicitly between precisions, component by component",
+          "[vec3][first-use]") {
+    const vec3<double> d{0.1, -1e-3, 1e30};
+    const vec3<float> f{d};
+    CHECK(f == vec3<float>{0.1f, -1e-3f, 1e30f});
+    CHECK(vec3<double>{f}.x == static_cast<double>(0.1f));
+    constexpr vec3<float> folded{vec3<double>{1, 2, 3}};
+    static_assert(folded == vec3<float>{1, 2, 3});
+}

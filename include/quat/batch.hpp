@@ -185,11 +185,11 @@ template <class T>
 // vectorizes.
 template <class T>
 struct sine_series {
-    static constexpr int terms = sizeof(T) <= 4 ? 7 : 11;
+    static constexpr std::size_t terms = sizeof(T) <= 4 ? 7 : 11;
     T coefficient[terms];
     constexpr sine_series() noexcept : coefficient{} {
         long double c = 1.0L;
-        for (int k = 0; k < terms; ++k) {
+        for (std::size_t k = 0; k < terms; ++k) {
             coefficient[k] = static_cast<T>(c);
             c = -c / static_cast<long double>((2 * k + 2) * (2 * k + 3));
         }
@@ -201,7 +201,8 @@ template <class T>
     constexpr sine_series<T> series{};
     const T x2 = x * x;
     T acc = series.coefficient[sine_series<T>::terms - 1];
-    for (int k = sine_series<T>::terms - 2; k >= 0; --k) acc = acc * x2 + series.coefficient[k];
+    for (std::size_t k = sine_series<T>::terms - 1; k-- > 0;)
+        acc = acc * x2 + series.coefficient[k];
     return x * acc;
 }
 
@@ -265,9 +266,9 @@ inline namespace isa_baseline {
 template <class T>
 void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
             std::size_t count) noexcept {
-    QUAT_ASSERT(detail::same_or_disjoint(input, count * sizeof(vec3<T>), output,
-                                         count * sizeof(vec3<T>)),
-                "quat::rotate: output partially overlaps input");
+    QUAT_ASSERT(
+        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
+        "quat::rotate: output partially overlaps input");
 #if defined(__AVX512F__)
     // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
     // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
@@ -373,8 +374,6 @@ template <class Range,
 [[nodiscard]] constexpr T compose(const Range& factors) noexcept {
     return compose(detail::data_of(factors), detail::size_of(factors));
 }
-
-
 
 /// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
 /// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.

@@ -32,8 +32,8 @@ struct euler {
     T angles[3];
     /// @}
 
-    static constexpr quat::sequence axis_sequence = S;  ///< for generic code
-    static constexpr quat::frame rotation_frame = F;    ///< for generic code
+    static constexpr ::quat::sequence axis_sequence = S;  ///< for generic code
+    static constexpr ::quat::frame rotation_frame = F;    ///< for generic code
 
     /// Angles left uninitialized, as in a plain struct; euler<T, S, F>{} is all zero.
     euler() = default;
@@ -259,11 +259,11 @@ template <class T, sequence S, frame F>
 }  // namespace quat
 
 /// An euler is a tuple of three angles for structured bindings.
-template <class T, quat::sequence S, quat::frame F>
-struct std::tuple_size<quat::euler<T, S, F>> : std::integral_constant<std::size_t, 3> {};
+template <class T, ::quat::sequence S, ::quat::frame F>
+struct std::tuple_size<::quat::euler<T, S, F>> : std::integral_constant<std::size_t, 3> {};
 /// Each angle has the type T.
-template <std::size_t I, class T, quat::sequence S, quat::frame F>
-struct std::tuple_element<I, quat::euler<T, S, F>> {
+template <std::size_t I, class T, ::quat::sequence S, ::quat::frame F>
+struct std::tuple_element<I, ::quat::euler<T, S, F>> {
     using type = T;  ///< the angle type
 };
 

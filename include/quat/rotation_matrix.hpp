@@ -88,7 +88,8 @@ template <class T>
 
 /// a = a * b: as rotations, b is applied first, then the old a.
 template <class T>
-constexpr rotation_matrix<T>& operator*=(rotation_matrix<T>& a, const rotation_matrix<T>& b) noexcept {
+constexpr rotation_matrix<T>& operator*=(rotation_matrix<T>& a,
+                                         const rotation_matrix<T>& b) noexcept {
     return a = a * b;
 }
 

@@ -11,7 +11,8 @@
 #include <vector>
 
 #define QUAT_ASSERT(condition, message) \
-    ((condition) ? void(0) : (std::fprintf(stderr, "%s\n", message), std::fflush(stderr), std::_Exit(3)))
+    ((condition) ? void(0)              \
+                 : (std::fprintf(stderr, "%s\n", message), std::fflush(stderr), std::_Exit(3)))
 
 #include <quat/quat.hpp>
 
@@ -36,8 +37,8 @@ int valid() {
     quat::euler<double> e{0.1, 0.2, 0.3};
     sink = sink + e[2];
     std::vector<vec3<double>> points(300, v), out(300);
-    quat::rotate(unit, points, points);  // in place
-    quat::rotate(unit, points, out);     // disjoint
+    quat::rotate(unit, points, points);                           // in place
+    quat::rotate(unit, points, out);                              // disjoint
     quat::rotate(unit, points.data(), points.data() + 150, 150);  // adjacent halves
     std::vector<double> x(64, 1), y(64, 2), z(64, 3);
     quat::rotate(unit, quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
@@ -72,7 +73,8 @@ int run(const char* name) {
     if (std::strcmp(name, "batch_overlap") == 0)
         quat::rotate(quat::to_matrix(quatd::identity()), points.data(), points.data() + 1, 63);
     if (std::strcmp(name, "batch_soa_overlap") == 0)
-        quat::rotate(quatd::identity(), quat::soa_points<const double>{x.data(), y.data(), z.data(), 60},
+        quat::rotate(quatd::identity(),
+                     quat::soa_points<const double>{x.data(), y.data(), z.data(), 60},
                      quat::soa_points<double>{x.data() + 2, y.data(), z.data(), 60});
     if (std::strcmp(name, "batch_short_output") == 0) {
         std::vector<vec3<double>> out(10);

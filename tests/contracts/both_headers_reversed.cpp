@@ -8,6 +8,7 @@
 double from_include_then_single();
 
 int main() {
-    const double y = quat::to_quaternion(quat::euler<double>{0, 0, 0}).w + from_include_then_single();
+    const double y =
+        quat::to_quaternion(quat::euler<double>{0, 0, 0}).w + from_include_then_single();
     return y == 3.0 ? 0 : 1;
 }

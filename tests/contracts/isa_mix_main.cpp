@@ -35,7 +35,8 @@ bool rotates_correctly(rotate_function rotate, const char* name) {
 
 int main() {
     if (baseline_rotate() == avx512_rotate()) {
-        std::printf("FAIL: the baseline and AVX-512 translation units share one quat::rotate<float>\n");
+        std::printf(
+            "FAIL: the baseline and AVX-512 translation units share one quat::rotate<float>\n");
         return 1;
     }
     bool ok = rotates_correctly(baseline_rotate(), "baseline");

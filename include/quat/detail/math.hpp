@@ -142,7 +142,8 @@ struct sine_cosine {
 template <class T>
 [[nodiscard]] constexpr T sqrt(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated()) return static_cast<T>(compile_time::sqrt(x));
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::sqrt(static_cast<compile_time::real>(x)));
         return std::sqrt(x);
     } else {
         using std::sqrt;
@@ -154,7 +155,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T sin(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated()) return static_cast<T>(compile_time::sin_cos(x).sin);
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::sin_cos(static_cast<compile_time::real>(x)).sin);
         return std::sin(x);
     } else {
         using std::sin;
@@ -166,7 +168,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T cos(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated()) return static_cast<T>(compile_time::sin_cos(x).cos);
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::sin_cos(static_cast<compile_time::real>(x)).cos);
         return std::cos(x);
     } else {
         using std::cos;
@@ -178,7 +181,9 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T atan2(T y, T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated()) return static_cast<T>(compile_time::atan2(y, x));
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::atan2(static_cast<compile_time::real>(y),
+                                                      static_cast<compile_time::real>(x)));
         return std::atan2(y, x);
     } else {
         using std::atan2;
@@ -191,7 +196,7 @@ template <class T>
 [[nodiscard]] constexpr T asin(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated()) {
-            const compile_time::real r = x;
+            const auto r = static_cast<compile_time::real>(x);
             if (!(r >= -1 && r <= 1)) return std::numeric_limits<T>::quiet_NaN();
             return static_cast<T>(compile_time::atan2(r, compile_time::sqrt((1 - r) * (1 + r))));
         }

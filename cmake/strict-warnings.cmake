@@ -1,0 +1,46 @@
+# Users compile with more warnings than quat's own build: every public header must compile alone,
+# and every function template must instantiate, cleanly under these flags with each compiler and
+# language standard given. Run by the strict_warnings CTest test:
+#   cmake -DCOMPILERS="g++;clang++" -DSOURCE_DIR=<quat> -DEXTRA_INCLUDES="<dirs>"
+#         -DWORK_DIR=<dir> -P strict-warnings.cmake
+set(_flags -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wdouble-promotion -Wshadow
+           -Wold-style-cast -Werror -fsyntax-only)
+set(_includes "-I${SOURCE_DIR}/include")
+foreach(_dir IN LISTS EXTRA_INCLUDES)
+    # A compiler's own default directories must not become -isystem (it breaks #include_next).
+    if(_dir AND NOT _dir MATCHES "^/usr(/local)?/include/?$")
+        list(APPEND _includes "-isystem${_dir}")
+    endif()
+endforeach()
+
+file(GLOB_RECURSE _headers RELATIVE "${SOURCE_DIR}/include" "${SOURCE_DIR}/include/quat/*.hpp")
+list(SORT _headers)
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(_units "${SOURCE_DIR}/tests/warnings/instantiate.cpp")
+foreach(_header IN LISTS _headers)
+    string(MAKE_C_IDENTIFIER "${_header}" _name)
+    set(_unit "${WORK_DIR}/${_name}.cpp")
+    file(WRITE "${_unit}" "#include <${_header}>\n")
+    list(APPEND _units "${_unit}")
+endforeach()
+
+set(_failures 0)
+set(_checked 0)
+foreach(_compiler IN LISTS COMPILERS)
+    foreach(_standard 17 20)
+        foreach(_unit IN LISTS _units)
+            execute_process(COMMAND "${_compiler}" -std=c++${_standard} ${_flags} ${_includes}
+                                    "${_unit}"
+                            RESULT_VARIABLE _result OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
+            math(EXPR _checked "${_checked} + 1")
+            if(NOT _result EQUAL 0)
+                math(EXPR _failures "${_failures} + 1")
+                message("FAIL ${_compiler} -std=c++${_standard} ${_unit}\n${_out}")
+            endif()
+        endforeach()
+    endforeach()
+endforeach()
+message("strict warnings: ${_checked} compilations, ${_failures} failed")
+if(_failures GREATER 0)
+    message(FATAL_ERROR "quat must compile cleanly with: ${_flags}")
+endif()
