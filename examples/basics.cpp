@@ -11,7 +11,6 @@ using namespace quat;
 
 namespace {
 
-constexpr double pi = quat::pi;
 constexpr double degree = pi / 180;
 
 void print(const char* name, const quatd& q) {

@@ -19,7 +19,6 @@ using view3d::v3;
 
 namespace {
 
-constexpr double pi = quat::pi;
 constexpr double degree = pi / 180;
 
 /// Arc of radius r (pixels) about c from angle a0 to a1 (radians, counter-clockwise on screen).

@@ -18,7 +18,6 @@ using view3d::v3;
 
 namespace {
 
-constexpr double pi = quat::pi;
 constexpr double degree = pi / 180;
 using ypr = euler<double>;  // sequence::zyx, frame::intrinsic: {yaw, pitch, roll}
 

@@ -23,7 +23,6 @@ using view3d::v3;
 
 namespace {
 
-constexpr double pi = quat::pi;
 constexpr double degree = pi / 180;
 using ypr = euler<double>;  // intrinsic z-y-x {yaw, pitch, roll}
 

@@ -15,7 +15,6 @@ using view3d::v3;
 
 namespace {
 
-constexpr double pi = quat::pi;
 
 double rotation_angle(const quatd& from, const quatd& to) {
     return to_axis_angle(conjugate(from) * to).angle;
