@@ -52,6 +52,39 @@ if(QUAT_TEST_CONSUMERS)
 
     quat_add_consumer_test(add_subdirectory_consumer "${PROJECT_SOURCE_DIR}/tests/add_subdirectory"
                            "-DQUAT_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+
+    # `cmake -S . -B build && cmake --install build` with no option, GLM, Eigen, Catch2, Google
+    # Benchmark, Doxygen and Python hidden: nothing of the developer build may run or be looked for.
+    add_test(NAME install_without_developer_tools
+             COMMAND "${CMAKE_COMMAND}" "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                     "-DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/install-without-developer-tools"
+                     "-DGENERATOR=${CMAKE_GENERATOR}" "-DMAKE_PROGRAM=${CMAKE_MAKE_PROGRAM}"
+                     "-DCXX_COMPILER=${CMAKE_CXX_COMPILER}"
+                     -P "${PROJECT_SOURCE_DIR}/cmake/test-install-without-developer-tools.cmake")
+    set_tests_properties(install_without_developer_tools PROPERTIES LABELS "ci;consumer")
+endif()
+
+# README "With GLM in the same file": after `using namespace glm;` the unqualified `quat::` is
+# ambiguous (glm::quat against namespace quat), which is why the README writes `::quat::`. This
+# compiles the unqualified spelling and passes only if the compiler reports that ambiguity; the
+# documented spellings are compiled by tests/test_glm_namespace.cpp. clang only: g++ 12 does not
+# diagnose the ambiguity ([namespace.udir]/6 makes it ill-formed) and accepts the code.
+if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    if(CMAKE_CXX_STANDARD)
+        set(_quat_glm_flags "-std=c++${CMAKE_CXX_STANDARD}")
+    else()
+        set(_quat_glm_flags "-std=c++17")
+    endif()
+    # -isystem /usr/include would break the standard library's #include_next; name only other dirs.
+    if(NOT QUAT_GLM_INCLUDE_DIR IN_LIST CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES)
+        list(APPEND _quat_glm_flags -isystem "${QUAT_GLM_INCLUDE_DIR}")
+    endif()
+    add_test(NAME glm_unqualified_quat_is_ambiguous
+             COMMAND "${CMAKE_CXX_COMPILER}" ${_quat_glm_flags} -fsyntax-only
+                     -I "${PROJECT_SOURCE_DIR}/include"
+                     "${PROJECT_SOURCE_DIR}/tests/compile_fail/glm_unqualified_quat.cpp")
+    set_tests_properties(glm_unqualified_quat_is_ambiguous PROPERTIES
+        LABELS "ci" PASS_REGULAR_EXPRESSION "reference to [^ ]*quat[^ ]* is ambiguous")
 endif()
 
 if(QUAT_TEST_SINGLE_INCLUDE)

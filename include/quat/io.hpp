@@ -1,0 +1,341 @@
+// Printing quat's types: operator<< for streams and, where <format> exists, std::formatter.
+// Opt-in: quat.hpp does not include this header, and no other quat header includes <ostream>.
+//
+// One format for every type: its name and brace initializer, components in declaration order.
+//   vec3{1, -2, 0.5}
+//   quaternion{1, 0, 0, 0}                                    w, x, y, z
+//   rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}          rows: m(0, 0), m(0, 1), ...
+//   axis_angle{vec3{0, 0, 1}, 1.5}                            axis, angle
+//   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
+//   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
+//   zyx   intrinsic                                           sequence and frame: their names
+//
+// operator<< works like std::complex's: the stream's flags, precision and locale apply to every
+// component (so at std::setprecision(std::numeric_limits<T>::max_digits10) the text reads back to
+// the same values), then the whole text is inserted at once, so width, fill and adjustment apply to
+// all of it. A scalar type only needs its own operator<<.
+//
+// std::format (C++20 libraries that define __cpp_lib_format) prints each component as
+// std::format("{}", component) does, the shortest text that reads back exactly (for long double,
+// as far as the library does: libc++ 19 formats it as a double). A format spec is the scalar's
+// ("{:.3f}", "{:e}", "{:+}", "{:>8}", "{:L}") and applies to each component, width included;
+// sequence and frame take a string spec ("{:>9}"). gimbal_lock is always true or false.
+// quat/interop/fmt.hpp gives fmt::format the same behaviour.
+#ifndef QUAT_IO_HPP_INCLUDED
+#define QUAT_IO_HPP_INCLUDED
+
+#include <cstddef>
+#include <ostream>
+#include <sstream>
+#include <string_view>
+
+#if __has_include(<version>)
+#include <version>
+#endif
+#if defined(__cpp_lib_format) && __has_include(<format>)
+#include <format>
+#endif
+
+#include "axis_angle.hpp"
+#include "euler.hpp"
+#include "quaternion.hpp"
+#include "rotation_matrix.hpp"
+#include "vec3.hpp"
+
+namespace quat {
+
+namespace detail {
+
+template <class Enum>
+struct enum_name {
+    Enum value;
+    std::string_view name;
+};
+
+inline constexpr enum_name<sequence> sequence_names[] = {
+    {sequence::xyz, "xyz"}, {sequence::xzy, "xzy"}, {sequence::yxz, "yxz"}, {sequence::yzx, "yzx"},
+    {sequence::zxy, "zxy"}, {sequence::zyx, "zyx"}, {sequence::xyx, "xyx"}, {sequence::xzx, "xzx"},
+    {sequence::yxy, "yxy"}, {sequence::yzy, "yzy"}, {sequence::zxz, "zxz"}, {sequence::zyz, "zyz"}};
+inline constexpr enum_name<frame> frame_names[] = {{frame::intrinsic, "intrinsic"},
+                                                   {frame::extrinsic, "extrinsic"}};
+
+[[nodiscard]] constexpr std::string_view spelling(sequence s) noexcept {
+    for (const auto& entry : sequence_names)
+        if (entry.value == s) return entry.name;
+    return "sequence?";  // not an enumerator
+}
+
+[[nodiscard]] constexpr std::string_view spelling(frame f) noexcept {
+    for (const auto& entry : frame_names)
+        if (entry.value == f) return entry.name;
+    return "frame?";  // not an enumerator
+}
+
+// The layout of each type, written once for streams, std::format and fmt: a printer p offers
+// p.text(ascii) for the fixed text and p.value(component) for each scalar.
+
+// "{a, b, ...}"
+template <class Printer, class T, class... Rest>
+void write_braced(Printer& p, const T& first, const Rest&... rest) {
+    p.text("{");
+    p.value(first);
+    ((p.text(", "), p.value(rest)), ...);
+    p.text("}");
+}
+
+template <class Printer>
+void write_layout(Printer& p, sequence s) {
+    p.text(spelling(s));
+}
+
+template <class Printer>
+void write_layout(Printer& p, frame f) {
+    p.text(spelling(f));
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const vec3<T>& v) {
+    p.text("vec3");
+    write_braced(p, v.x, v.y, v.z);
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const quaternion<T>& q) {
+    p.text("quaternion");
+    write_braced(p, q.w, q.x, q.y, q.z);
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const rotation_matrix<T>& m) {
+    p.text("rotation_matrix{");
+    for (int row = 0; row < 3; ++row) {
+        if (row > 0) p.text(", ");
+        write_braced(p, m(row, 0), m(row, 1), m(row, 2));
+    }
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const axis_angle<T>& rotation) {
+    p.text("axis_angle{");
+    write_layout(p, rotation.axis);
+    p.text(", ");
+    p.value(rotation.angle);
+    p.text("}");
+}
+
+template <class Printer, class T, sequence S, frame F>
+void write_layout(Printer& p, const euler<T, S, F>& e) {
+    p.text("euler<");
+    p.text(spelling(S));
+    p.text(", ");
+    p.text(spelling(F));
+    p.text(">");
+    write_braced(p, e[0], e[1], e[2]);
+}
+
+template <class Printer, class T, sequence S, frame F>
+void write_layout(Printer& p, const euler_extraction<T, S, F>& extraction) {
+    p.text("euler_extraction{");
+    write_layout(p, extraction.angles);
+    p.text(extraction.gimbal_lock ? ", true}" : ", false}");
+}
+
+// Writes to a stream that carries the flags, precision and locale of the user's stream.
+template <class CharT, class Traits>
+struct stream_printer {
+    std::basic_ostream<CharT, Traits>& out;
+
+    void text(std::string_view ascii) {
+        for (char c : ascii) out.put(out.widen(c));
+    }
+    template <class T>
+    void value(const T& component) {
+        out << component;
+    }
+};
+
+// std::complex's recipe: format into a local stream with os's flags, precision and locale (its
+// width is 0), then insert the whole text, to which os's width, fill and adjustment apply.
+template <class CharT, class Traits, class Value>
+std::basic_ostream<CharT, Traits>& print_to_stream(std::basic_ostream<CharT, Traits>& os,
+                                                   const Value& value) {
+    std::basic_ostringstream<CharT, Traits> text;
+    text.flags(os.flags());
+    text.imbue(os.getloc());
+    text.precision(os.precision());
+    stream_printer<CharT, Traits> printer{text};
+    write_layout(printer, value);
+    return os << text.str();
+}
+
+// Writes to a std::format or fmt context, each component through Formatter, which parsed the spec.
+template <class Formatter, class Context>
+struct format_printer {
+    const Formatter& component_formatter;
+    Context& context;
+
+    void text(std::string_view ascii) {
+        auto out = context.out();
+        for (char c : ascii) *out++ = static_cast<typename Context::char_type>(c);
+        context.advance_to(out);
+    }
+    template <class T>
+    void value(const T& component) {
+        context.advance_to(component_formatter.format(component, context));
+    }
+};
+
+// The formatter of a quat value type for std::format and fmt: ComponentFormatter, the scalar's own
+// formatter, parses the spec once and formats every component with it.
+template <class Value, class ComponentFormatter>
+struct value_formatter {
+    ComponentFormatter component_formatter;
+
+    template <class ParseContext>
+    constexpr auto parse(ParseContext& context) {
+        return component_formatter.parse(context);
+    }
+    template <class FormatContext>
+    auto format(const Value& value, FormatContext& context) const {
+        format_printer<ComponentFormatter, FormatContext> printer{component_formatter, context};
+        write_layout(printer, value);
+        return context.out();
+    }
+};
+
+// The formatter of sequence and frame: their names through StringFormatter, the formatter of
+// std::basic_string_view<CharT>, so string specs such as width and fill apply.
+template <class Enum, class StringFormatter>
+struct name_formatter {
+    StringFormatter string_formatter;
+
+    template <class ParseContext>
+    constexpr auto parse(ParseContext& context) {
+        return string_formatter.parse(context);
+    }
+    template <class FormatContext>
+    auto format(Enum value, FormatContext& context) const {
+        using CharT = typename FormatContext::char_type;
+        constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
+        const std::string_view ascii = spelling(value);
+        const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
+        CharT name[longest]{};
+        for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
+        return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
+    }
+};
+
+}  // namespace detail
+
+/// Prints the axis sequence's name, e.g. zyx.
+template <class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os, sequence s) {
+    return detail::print_to_stream(os, s);
+}
+
+/// Prints the frame's name: intrinsic or extrinsic.
+template <class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os, frame f) {
+    return detail::print_to_stream(os, f);
+}
+
+/// Prints vec3{x, y, z}: the stream's flags, precision and locale apply to each component, its
+/// width to the whole text.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const vec3<T>& v) {
+    return detail::print_to_stream(os, v);
+}
+
+/// Prints quaternion{w, x, y, z}, scalar first; stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const quaternion<T>& q) {
+    return detail::print_to_stream(os, q);
+}
+
+/// Prints rotation_matrix{{m00, m01, m02}, {m10, m11, m12}, {m20, m21, m22}}, row by row; stream
+/// settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const rotation_matrix<T>& m) {
+    return detail::print_to_stream(os, m);
+}
+
+/// Prints axis_angle{vec3{x, y, z}, angle}; stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const axis_angle<T>& rotation) {
+    return detail::print_to_stream(os, rotation);
+}
+
+/// Prints euler<S, F>{e[0], e[1], e[2]} with the convention's names, e.g. euler<zyx, intrinsic>{...};
+/// stream settings as for vec3.
+template <class T, sequence S, frame F, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const euler<T, S, F>& e) {
+    return detail::print_to_stream(os, e);
+}
+
+/// Prints euler_extraction{euler<S, F>{...}, gimbal_lock} with gimbal_lock as true or false;
+/// stream settings as for vec3.
+template <class T, sequence S, frame F, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const euler_extraction<T, S, F>& extraction) {
+    return detail::print_to_stream(os, extraction);
+}
+
+}  // namespace quat
+
+#if defined(__cpp_lib_format) && __has_include(<format>)
+
+// std::format support: the format above, each component formatted by std::formatter<T, CharT> with
+// the spec given ("{}" is the shortest text that reads back exactly).
+
+/// Formats vec3{x, y, z}; the spec is T's and applies to each component.
+template <class T, class CharT>
+struct std::formatter<::quat::vec3<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
+
+/// Formats quaternion{w, x, y, z}; the spec is T's and applies to each component.
+template <class T, class CharT>
+struct std::formatter<::quat::quaternion<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
+
+/// Formats rotation_matrix{{m00, m01, m02}, ...} by rows; the spec applies to each element.
+template <class T, class CharT>
+struct std::formatter<::quat::rotation_matrix<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
+
+/// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
+template <class T, class CharT>
+struct std::formatter<::quat::axis_angle<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
+
+/// Formats euler<S, F>{e[0], e[1], e[2]}; the spec applies to each angle.
+template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
+struct std::formatter<::quat::euler<T, S, F>, CharT>
+    : ::quat::detail::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
+
+/// Formats euler_extraction{euler<S, F>{...}, gimbal_lock}; the spec applies to each angle.
+template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
+struct std::formatter<::quat::euler_extraction<T, S, F>, CharT>
+    : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {
+};
+
+/// Formats the sequence's name; the spec is a string's (width, fill, alignment).
+template <class CharT>
+struct std::formatter<::quat::sequence, CharT>
+    : ::quat::detail::name_formatter<::quat::sequence,
+                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+
+/// Formats the frame's name; the spec is a string's (width, fill, alignment).
+template <class CharT>
+struct std::formatter<::quat::frame, CharT>
+    : ::quat::detail::name_formatter<::quat::frame,
+                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+
+#endif  // __cpp_lib_format
+
+#endif  // QUAT_IO_HPP_INCLUDED
