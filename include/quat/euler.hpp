@@ -258,13 +258,17 @@ template <class T, sequence S, frame F>
 
 }  // namespace quat
 
+namespace std {
+
 /// An euler is a tuple of three angles for structured bindings.
 template <class T, ::quat::sequence S, ::quat::frame F>
-struct std::tuple_size<::quat::euler<T, S, F>> : std::integral_constant<std::size_t, 3> {};
+struct tuple_size<::quat::euler<T, S, F>> : integral_constant<size_t, 3> {};
 /// Each angle has the type T.
-template <std::size_t I, class T, ::quat::sequence S, ::quat::frame F>
-struct std::tuple_element<I, ::quat::euler<T, S, F>> {
+template <size_t I, class T, ::quat::sequence S, ::quat::frame F>
+struct tuple_element<I, ::quat::euler<T, S, F>> {
     using type = T;  ///< the angle type
 };
+
+}  // namespace std
 
 #endif  // QUAT_EULER_HPP_INCLUDED

@@ -315,48 +315,52 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
 // std::format support: the format above, each component formatted by std::formatter<T, CharT> with
 // the spec given ("{}" is the shortest text that reads back exactly).
 
+namespace std {
+
 /// Formats vec3{x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
-struct std::formatter<::quat::vec3<T>, CharT>
+struct formatter<::quat::vec3<T>, CharT>
     : ::quat::detail::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
 
 /// Formats quaternion{w, x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
-struct std::formatter<::quat::quaternion<T>, CharT>
+struct formatter<::quat::quaternion<T>, CharT>
     : ::quat::detail::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
 
 /// Formats rotation_matrix{{m00, m01, m02}, ...} by rows; the spec applies to each element.
 template <class T, class CharT>
-struct std::formatter<::quat::rotation_matrix<T>, CharT>
+struct formatter<::quat::rotation_matrix<T>, CharT>
     : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
 
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class CharT>
-struct std::formatter<::quat::axis_angle<T>, CharT>
+struct formatter<::quat::axis_angle<T>, CharT>
     : ::quat::detail::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
 
 /// Formats euler<S, F>{e[0], e[1], e[2]}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
-struct std::formatter<::quat::euler<T, S, F>, CharT>
+struct formatter<::quat::euler<T, S, F>, CharT>
     : ::quat::detail::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
 
 /// Formats euler_extraction{euler<S, F>{...}, gimbal_lock}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
-struct std::formatter<::quat::euler_extraction<T, S, F>, CharT>
+struct formatter<::quat::euler_extraction<T, S, F>, CharT>
     : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {
 };
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
-struct std::formatter<::quat::sequence, CharT>
+struct formatter<::quat::sequence, CharT>
     : ::quat::detail::name_formatter<::quat::sequence,
                                      std::formatter<std::basic_string_view<CharT>, CharT>> {};
 
 /// Formats the frame's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
-struct std::formatter<::quat::frame, CharT>
+struct formatter<::quat::frame, CharT>
     : ::quat::detail::name_formatter<::quat::frame,
                                      std::formatter<std::basic_string_view<CharT>, CharT>> {};
+
+}  // namespace std
 
 #endif  // __cpp_lib_format
 

@@ -15,51 +15,55 @@
 
 #include "../io.hpp"
 
+namespace fmt {
+
 /// Formats vec3{x, y, z}; the spec is T's and applies to each component.
 template <class T, class Char>
-struct fmt::formatter<::quat::vec3<T>, Char>
+struct formatter<::quat::vec3<T>, Char>
     : ::quat::detail::value_formatter<::quat::vec3<T>, fmt::formatter<T, Char>> {};
 
 /// Formats quaternion{w, x, y, z}; the spec is T's and applies to each component.
 template <class T, class Char>
-struct fmt::formatter<::quat::quaternion<T>, Char>
+struct formatter<::quat::quaternion<T>, Char>
     : ::quat::detail::value_formatter<::quat::quaternion<T>, fmt::formatter<T, Char>> {};
 
 /// Formats rotation_matrix{{m00, m01, m02}, ...} by rows; the spec applies to each element.
 template <class T, class Char>
-struct fmt::formatter<::quat::rotation_matrix<T>, Char>
+struct formatter<::quat::rotation_matrix<T>, Char>
     : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, fmt::formatter<T, Char>> {};
 
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class Char>
-struct fmt::formatter<::quat::axis_angle<T>, Char>
+struct formatter<::quat::axis_angle<T>, Char>
     : ::quat::detail::value_formatter<::quat::axis_angle<T>, fmt::formatter<T, Char>> {};
 
 /// Formats euler<S, F>{e[0], e[1], e[2]}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class Char>
-struct fmt::formatter<::quat::euler<T, S, F>, Char>
+struct formatter<::quat::euler<T, S, F>, Char>
     : ::quat::detail::value_formatter<::quat::euler<T, S, F>, fmt::formatter<T, Char>> {};
 
 /// euler is tuple-like (for structured bindings); fmt/ranges.h must not format it as a tuple too.
 template <class T, ::quat::sequence S, ::quat::frame F>
-struct fmt::is_tuple_like<::quat::euler<T, S, F>> : std::false_type {};
+struct is_tuple_like<::quat::euler<T, S, F>> : std::false_type {};
 
 /// Formats euler_extraction{euler<S, F>{...}, gimbal_lock}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class Char>
-struct fmt::formatter<::quat::euler_extraction<T, S, F>, Char>
+struct formatter<::quat::euler_extraction<T, S, F>, Char>
     : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, fmt::formatter<T, Char>> {
 };
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class Char>
-struct fmt::formatter<::quat::sequence, Char>
+struct formatter<::quat::sequence, Char>
     : ::quat::detail::name_formatter<::quat::sequence,
                                      fmt::formatter<std::basic_string_view<Char>, Char>> {};
 
 /// Formats the frame's name; the spec is a string's (width, fill, alignment).
 template <class Char>
-struct fmt::formatter<::quat::frame, Char>
+struct formatter<::quat::frame, Char>
     : ::quat::detail::name_formatter<::quat::frame,
                                      fmt::formatter<std::basic_string_view<Char>, Char>> {};
+
+}  // namespace fmt
 
 #endif  // QUAT_INTEROP_FMT_HPP_INCLUDED
