@@ -1,5 +1,6 @@
-// rotate_point (latency of one rotation) and rotate_batch (throughput over n points, in and out of
-// cache), with a memcpy of the same bytes as the memory-bound floor.
+// rotate_point (latency of one rotation), rotate_pairs (throughput when every point has its own
+// quaternion) and rotate_batch (throughput over n points, in and out of cache), with a memcpy of the
+// same bytes as the memory-bound floor.
 #include <algorithm>
 #include <cstring>
 
@@ -19,6 +20,27 @@ void rotate_point(benchmark::State& state) {
         benchmark::DoNotOptimize(v);
     }
     state.SetItemsProcessed(state.iterations());
+}
+
+// Each point by its own quaternion, all independent (throughput): unlike rotate_point (one q, one
+// dependency chain) and rotate_batch (one matrix per batch), every operation rotate spends on q
+// itself is paid per point and nothing hides behind a latency.
+template <class Lib>
+void rotate_pairs(benchmark::State& state, long long count) {
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    std::vector<typename Lib::quaternion> qs(n);
+    std::vector<typename Lib::vector> in(n), out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        qs[i] = Lib::make_quaternion(random.rotation());
+        in[i] = Lib::make_vector(random.vector());
+    }
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = Lib::rotate(qs[i], in[i]);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
 }
 
 template <class T>
@@ -99,6 +121,8 @@ void register_library() {
                                  rotate_point<L, quaternion_rep>);
     benchmark::RegisterBenchmark(name("rotate_point", L::name, "matrix", type).c_str(),
                                  rotate_point<L, matrix_rep>);
+    benchmark::RegisterBenchmark(name("rotate_pairs", L::name, "quaternion", type, 1024).c_str(),
+                                 rotate_pairs<L>, 1024);
     if (!std::is_same_v<T, float>) return;  // the batch targets are float
     for (const long long n : batch_sizes<T>()) {
         benchmark::RegisterBenchmark(name("rotate_batch", L::name, "quaternion", type, n).c_str(),

@@ -14,6 +14,8 @@ import sys
 ROWS = [
     ("rotate_point, quaternion (latency)", "rotate_point/{lib}/quaternion/float"),
     ("rotate_point, matrix (latency)", "rotate_point/{lib}/matrix/float"),
+    ("rotate_pairs, each point its own quaternion, n = 1024",
+     "rotate_pairs/{lib}/quaternion/float/1024"),
     ("rotate_batch, quaternion, n = 1024", "rotate_batch/{lib}/quaternion/float/1024"),
     ("rotate_batch, matrix, n = 1024", "rotate_batch/{lib}/matrix/float/1024"),
     ("rotate_batch, quaternion, struct of arrays, n = 1024",

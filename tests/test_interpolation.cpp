@@ -29,10 +29,13 @@ quaternion<long double> reference_slerp(const quaternion<T>& a, const quaternion
                                         relative.z * k};
 }
 
+// Twice the rotation angle between q and r: angle_between already returns the rotation angle (itself
+// twice the 4D angle between the quaternions), so the factor 2 makes each bound below
+// (tolerance<T>::slerp_angle) a bound of half that size on the rotation angle: stricter, not looser.
 template <class T>
 long double distance(const quaternion<T>& q, const quaternion<long double>& r) {
     const quaternion<long double> ql{q.w, q.x, q.y, q.z};
-    return 2 * quat::angle_between(ql, r);  // generous: rotation angle is 2x the 4D angle
+    return 2 * quat::angle_between(ql, r);
 }
 
 }  // namespace

@@ -162,7 +162,7 @@ TEST_CASE("4. division algebras: quaternions are associative, octonions are not"
     CHECK(smallest_octonion > 1e-3);
 }
 
-TEST_CASE("5. cost: v + w t + u x t (t = 2 u x v) needs fewer operations than q (0, v) q*",
+TEST_CASE("5. cost: rotate(q, v) needs fewer operations than q (0, v) q*",
           "[thesis]") {
     const quat::quaternion<counted> q{0.5, 0.5, 0.5, 0.5};
     const quat::vec3<counted> v{1.0, 2.0, 3.0};
@@ -185,7 +185,8 @@ TEST_CASE("5. cost: v + w t + u x t (t = 2 u x v) needs fewer operations than q 
     // Two general Hamilton products: 2 x (16 multiplications, 12 additions).
     CHECK(naive_mul == 32);
     CHECK(naive_add == 24);
-    // Measured with this counting scalar: 18 multiplications and 12 additions.
-    CHECK(fast_mul <= 18);
-    CHECK(fast_add <= 12);
+    // Measured with this counting scalar: 25 multiplications and 23 additions (M v, M from q with
+    // s = 2 (2 - |q|^2); v + w t + u x t would take 18 and 12 but keeps |v| only to 5.4 eps).
+    CHECK(fast_mul <= 25);
+    CHECK(fast_add <= 23);
 }

@@ -48,7 +48,9 @@ struct quaternion {
     /// Conversion from another precision, component by component: quatd{qf}.
     template <class U>
     constexpr explicit quaternion(const quaternion<U>& q) noexcept
-        : w(static_cast<T>(q.w)), x(static_cast<T>(q.x)), y(static_cast<T>(q.y)),
+        : w(static_cast<T>(q.w)),
+          x(static_cast<T>(q.x)),
+          y(static_cast<T>(q.y)),
           z(static_cast<T>(q.z)) {}
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
@@ -214,15 +216,23 @@ template <class T>
     return conjugate(q) / s;
 }
 
-/// Rotates v by the unit quaternion q: q (0, v) q*, computed as v + w t + u x t with t = 2 u x v
-/// (u the vector part): 18 multiplications and 12 additions against 32 and 24 for two Hamilton products.
-/// Precondition: |q| = 1 (a non-unit q also scales and skews v).
+/// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
+/// s = 2 (2 - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few
+/// eps off unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7
+/// in double; quat_accuracy). 25 multiplications, 23 additions (16 and 17 on q alone, beside the work
+/// on v). Precondition: |q|^2 = 1 + d with d small; the result is off by at most 2 d^2 |v|.
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
-    const vec3<T> u{q.x, q.y, q.z};
-    const vec3<T> t = cross(u, v) * T(2);
-    return v + t * q.w + cross(u, t);
+    const T n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
+    const T xs = q.x * s, ys = q.y * s, zs = q.z * s;
+    const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
+    const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
+    const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
+    return {(T(1) - (yy + zz)) * v.x + (xy - wz) * v.y + (xz + wy) * v.z,
+            (xy + wz) * v.x + (T(1) - (xx + zz)) * v.y + (yz - wx) * v.z,
+            (xz - wy) * v.x + (yz + wx) * v.y + (T(1) - (xx + yy)) * v.z};
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.

@@ -188,20 +188,51 @@ error_stats measure_log(const std::vector<v3<T>>& inputs) {
     return s;
 }
 
-/// rotate by a correctly rounded unit quaternion; error = ||r| - |v|| / |v| in eps.
+/// Where rotate's quaternion comes from.
+enum class rotate_input {
+    unit_rounded_once,  // the best unit quaternion T can hold (|q|^2 - 1 below 1 eps)
+    normalized,         // Lib::normalize of an arbitrary quaternion, as users usually get one
+};
+
+/// A quaternion with components uniform in [-1, 1] times one scale 10^e, e uniform in [-3, 3],
+/// rounded to T: no rotation in particular and far from unit length.
+template <class T>
+q4<T> arbitrary_quaternion(rng& g) {
+    for (;;) {
+        const q4<double> p{g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-1, 1), g.uniform(-1, 1)};
+        if (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3] < 1e-4) continue;
+        const double scale = std::pow(10.0, g.uniform(-3, 3));
+        return narrow<T>(q4<double>{scale * p[0], scale * p[1], scale * p[2], scale * p[3]});
+    }
+}
+
+/// rotate(q, v): length error ||r| - |v|| / |v| and direction error (angle in radians between r
+/// and the reference rotation of v by q / |q| evaluated in high precision), both in eps. The
+/// reference is the rotation the stored q represents, so normalize's own rounding of the direction
+/// is not charged to rotate, while a rotate that ignores |q| != 1 is.
 template <class Lib, class T>
-error_stats measure_rotate(rng& g, int n) {
-    error_stats s;
+void measure_rotate(rng& g, int n, rotate_input input, error_stats& length,
+                    error_stats& direction) {
     for (int i = 0; i < n; ++i) {
-        const q4<T> q = g.template unit_quaternion<T>();
+        const q4<T> q = input == rotate_input::unit_rounded_once
+                            ? g.template unit_quaternion<T>()
+                            : Lib::normalize(arbitrary_quaternion<T>(g));
         const v3<double> dir = g.unit_vector();
         const double scale = std::pow(10.0, g.uniform(-3, 3));
         const v3<T> v = narrow<T>(v3<double>{scale * dir[0], scale * dir[1], scale * dir[2]});
-        const real nv = norm(widen(v));
-        if (s.add(in_eps<T>(r_abs(norm(widen(Lib::rotate(q, v))) - nv) / nv)))
-            s.worst_case = describe(q) + ", v = " + describe(v);
+        const hv got = widen(Lib::rotate(q, v));
+        const hq unit = normalized(widen(q));
+        const hv wide = widen(v);
+        const hq image = mul(mul(unit, hq{0, wide[0], wide[1], wide[2]}), conj(unit));
+        const hv ref{image[1], image[2], image[3]};
+        const real nv = norm(wide);
+        const hv c{got[1] * ref[2] - got[2] * ref[1], got[2] * ref[0] - got[0] * ref[2],
+                   got[0] * ref[1] - got[1] * ref[0]};
+        const real d = got[0] * ref[0] + got[1] * ref[1] + got[2] * ref[2];
+        const std::string what = describe(q) + ", v = " + describe(v);
+        if (length.add(in_eps<T>(r_abs(norm(got) - nv) / nv))) length.worst_case = what;
+        if (direction.add(in_eps<T>(r_atan2(norm(c), d)))) direction.worst_case = what;
     }
-    return s;
 }
 
 }  // namespace accuracy
