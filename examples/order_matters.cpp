@@ -15,7 +15,6 @@ using view3d::v3;
 
 namespace {
 
-
 double rotation_angle(const quatd& from, const quatd& to) {
     return to_axis_angle(conjugate(from) * to).angle;
 }

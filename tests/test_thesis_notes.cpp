@@ -162,8 +162,7 @@ TEST_CASE("4. division algebras: quaternions are associative, octonions are not"
     CHECK(smallest_octonion > 1e-3);
 }
 
-TEST_CASE("5. cost: rotate(q, v) needs fewer operations than q (0, v) q*",
-          "[thesis]") {
+TEST_CASE("5. cost: rotate(q, v) needs fewer operations than q (0, v) q*", "[thesis]") {
     const quat::quaternion<counted> q{0.5, 0.5, 0.5, 0.5};
     const quat::vec3<counted> v{1.0, 2.0, 3.0};
 
