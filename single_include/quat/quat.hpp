@@ -1184,7 +1184,8 @@ namespace quat {
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
 /// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
 /// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
-/// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b.
+/// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b
+/// (checked in debug builds). A NaN or infinite a, b or t gives a non-finite result.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             detail::type_identity_t<T> t) noexcept {
@@ -1215,7 +1216,7 @@ template <class T>
     const quaternion<T> sum = a + near;
     const quaternion<T> difference = near - a;
     const T chord = detail::sqrt(squared_norm(difference));
-    // a == near: nothing to interpolate, but a non-finite t still gives NaN (other NaN goes on below).
+    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on below).
     if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
     const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
     return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
