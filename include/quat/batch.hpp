@@ -81,17 +81,17 @@ using if_point_arrays = std::enable_if_t<
                           const vec3<T>*> &&
     std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
 
-// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) are one and the same or do not
-// overlap. Compared as integers: relational operators on unrelated pointers are unspecified.
-[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                           std::size_t b_bytes) noexcept {
-    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
-    return (x == y && a_bytes == b_bytes) || x + a_bytes <= y || y + b_bytes <= x;
-}
+// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
 [[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
                                    std::size_t b_bytes) noexcept {
     const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
     return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
+}
+// True when the two ranges are one and the same (an in-place call) or do not overlap.
+[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                           std::size_t b_bytes) noexcept {
+    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
 }
 
 // Points (or slerp parameters) per block where a block is computed into a local buffer first:

@@ -20,13 +20,7 @@ namespace quat {
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const quaternion<T>& q) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::to_matrix: q is not a unit quaternion");
-    const T x2 = q.x + q.x, y2 = q.y + q.y, z2 = q.z + q.z;
-    const T xx = q.x * x2, yy = q.y * y2, zz = q.z * z2;
-    const T xy = q.x * y2, xz = q.x * z2, yz = q.y * z2;
-    const T wx = q.w * x2, wy = q.w * y2, wz = q.w * z2;
-    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
-             {xy + wz, T(1) - (xx + zz), yz - wx},
-             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+    return detail::scaled_matrix(q, q.x + q.x, q.y + q.y, q.z + q.z);
 }
 
 /// Unit quaternion with w >= 0 of the rotation matrix m, exact for every rotation including 180°

@@ -46,29 +46,24 @@ namespace quat {
 
 namespace detail {
 
-template <class Enum>
-struct enum_name {
-    Enum value;
-    std::string_view name;
-};
+// Names in the enumerators' order (sequence and frame count from 0 without gaps).
+inline constexpr std::string_view sequence_names[] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
+                                                      "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"};
+inline constexpr std::string_view frame_names[] = {"intrinsic", "extrinsic"};
 
-inline constexpr enum_name<sequence> sequence_names[] = {
-    {sequence::xyz, "xyz"}, {sequence::xzy, "xzy"}, {sequence::yxz, "yxz"}, {sequence::yzx, "yzx"},
-    {sequence::zxy, "zxy"}, {sequence::zyx, "zyx"}, {sequence::xyx, "xyx"}, {sequence::xzx, "xzx"},
-    {sequence::yxy, "yxy"}, {sequence::yzy, "yzy"}, {sequence::zxz, "zxz"}, {sequence::zyz, "zyz"}};
-inline constexpr enum_name<frame> frame_names[] = {{frame::intrinsic, "intrinsic"},
-                                                   {frame::extrinsic, "extrinsic"}};
+template <class Enum, std::size_t N>
+[[nodiscard]] constexpr std::string_view name_in(const std::string_view (&names)[N], Enum value,
+                                                 std::string_view unknown) noexcept {
+    const auto index = static_cast<std::size_t>(value);  // a negative value wraps to a huge index
+    return index < N ? names[index] : unknown;
+}
 
 [[nodiscard]] constexpr std::string_view spelling(sequence s) noexcept {
-    for (const auto& entry : sequence_names)
-        if (entry.value == s) return entry.name;
-    return "sequence?";  // not an enumerator
+    return name_in(sequence_names, s, "sequence?");
 }
 
 [[nodiscard]] constexpr std::string_view spelling(frame f) noexcept {
-    for (const auto& entry : frame_names)
-        if (entry.value == f) return entry.name;
-    return "frame?";  // not an enumerator
+    return name_in(frame_names, f, "frame?");
 }
 
 // The layout of each type, written once for streams, std::format and fmt: a printer p offers

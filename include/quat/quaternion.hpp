@@ -8,6 +8,7 @@
 
 #include "config.hpp"
 #include "detail/math.hpp"
+#include "rotation_matrix.hpp"
 #include "vec3.hpp"
 
 namespace quat {
@@ -216,6 +217,24 @@ template <class T>
     return conjugate(q) / s;
 }
 
+namespace detail {
+
+/// The matrix of q with the vector part's factor 2 already applied by the caller: entries
+/// 1 - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
+/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys,
+                                                         T zs) noexcept {
+    const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
+    const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
+    const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
+    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
+             {xy + wz, T(1) - (xx + zz), yz - wx},
+             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+}
+
+}  // namespace detail
+
 /// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
 /// s = 2 (2 - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few
 /// eps off unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7
@@ -224,15 +243,9 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
-    const T n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    const T n2 = squared_norm(q);
     const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
-    const T xs = q.x * s, ys = q.y * s, zs = q.z * s;
-    const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
-    const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
-    const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
-    return {(T(1) - (yy + zz)) * v.x + (xy - wz) * v.y + (xz + wy) * v.z,
-            (xy + wz) * v.x + (T(1) - (xx + zz)) * v.y + (yz - wx) * v.z,
-            (xz - wy) * v.x + (yz + wx) * v.y + (T(1) - (xx + yy)) * v.z};
+    return rotate(detail::scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
@@ -262,29 +275,35 @@ template <class T>
     return detail::abs(norm(q) - T(1)) <= tolerance;
 }
 
+namespace detail {
+
+// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
+template <int Axis, class A>
+[[nodiscard]] constexpr quaternion<real_t<A>> axis_rotation(A angle) noexcept {
+    using T = real_t<A>;
+    const T half = static_cast<T>(angle) * T(0.5), s = detail::sin(half);
+    return {detail::cos(half), Axis == 0 ? s : T(0), Axis == 1 ? s : T(0), Axis == 2 ? s : T(0)};
+}
+
+}  // namespace detail
+
 /// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
 /// An integer angle gives a quatd.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_x(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), detail::sin(half), T(0), T(0)};
+    return detail::axis_rotation<0>(angle);
 }
 
 /// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_y(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), T(0), detail::sin(half), T(0)};
+    return detail::axis_rotation<1>(angle);
 }
 
 /// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), T(0), T(0), detail::sin(half)};
+    return detail::axis_rotation<2>(angle);
 }
 
 }  // namespace quat

@@ -543,6 +543,153 @@ struct axis_angle {
 #include <optional>
 #include <type_traits>
 
+// ---- begin quat/rotation_matrix.hpp ----
+// 3x3 rotation matrices acting on column vectors.
+#ifndef QUAT_ROTATION_MATRIX_HPP_INCLUDED
+#define QUAT_ROTATION_MATRIX_HPP_INCLUDED
+
+
+namespace quat {
+
+/// 3x3 matrix stored row-major, acting on column vectors: v' = M v. Used for rotations (orthogonal,
+/// determinant +1); nearest_rotation and try_to_quaternion also accept any 3x3 matrix in it.
+template <class T>
+struct rotation_matrix {
+    /// Row-major: elements[row][col].
+    /// @{
+    T elements[3][3];
+    /// @}
+
+    /// Elements left uninitialized, as in a plain struct; rotation_matrix<T>{} is zero.
+    rotation_matrix() = default;
+    /// The matrix with the given rows: rotation_matrix<T>{{{m00, m01, m02}, {m10, ...}, {...}}}.
+    constexpr rotation_matrix(const T (&rows)[3][3]) noexcept
+        : elements{{rows[0][0], rows[0][1], rows[0][2]},
+                   {rows[1][0], rows[1][1], rows[1][2]},
+                   {rows[2][0], rows[2][1], rows[2][2]}} {}
+    /// Conversion from another precision, element by element: rotation_matrix<float>{md}.
+    template <class U>
+    constexpr explicit rotation_matrix(const rotation_matrix<U>& m) noexcept
+        : elements{{static_cast<T>(m.elements[0][0]), static_cast<T>(m.elements[0][1]),
+                    static_cast<T>(m.elements[0][2])},
+                   {static_cast<T>(m.elements[1][0]), static_cast<T>(m.elements[1][1]),
+                    static_cast<T>(m.elements[1][2])},
+                   {static_cast<T>(m.elements[2][0]), static_cast<T>(m.elements[2][1]),
+                    static_cast<T>(m.elements[2][2])}} {}
+
+    /// Element at (row, col), both in [0, 3).
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
+        return elements[row][col];
+    }
+    /// Element at (row, col), read-only.
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
+        return elements[row][col];
+    }
+
+    /// The rotation by zero angle.
+    [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
+        return {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
+    }
+    /// The matrix whose rows are r0, r1, r2.
+    [[nodiscard]] static constexpr rotation_matrix from_rows(const vec3<T>& r0, const vec3<T>& r1,
+                                                             const vec3<T>& r2) noexcept {
+        return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
+    }
+    /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
+    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0,
+                                                                const vec3<T>& c1,
+                                                                const vec3<T>& c2) noexcept {
+        return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
+    }
+};
+
+/// Row i (0, 1 or 2) of m.
+template <class T>
+[[nodiscard]] constexpr vec3<T> row(const rotation_matrix<T>& m, int i) noexcept {
+    return {m(i, 0), m(i, 1), m(i, 2)};
+}
+
+/// Column j (0, 1 or 2) of m: for a rotation, the image of axis j.
+template <class T>
+[[nodiscard]] constexpr vec3<T> column(const rotation_matrix<T>& m, int j) noexcept {
+    return {m(0, j), m(1, j), m(2, j)};
+}
+
+/// Matrix product: as rotations, a * b applies b first, then a.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a,
+                                                     const rotation_matrix<T>& b) noexcept {
+    const auto entry = [&a, &b](int i, int j) {
+        return a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
+    };
+    return {{{entry(0, 0), entry(0, 1), entry(0, 2)},
+             {entry(1, 0), entry(1, 1), entry(1, 2)},
+             {entry(2, 0), entry(2, 1), entry(2, 2)}}};
+}
+
+/// a = a * b: as rotations, b is applied first, then the old a.
+template <class T>
+constexpr rotation_matrix<T>& operator*=(rotation_matrix<T>& a,
+                                         const rotation_matrix<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Exact element-wise equality.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
+                                        const rotation_matrix<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// M v: rotates v by the rotation matrix m.
+template <class T>
+[[nodiscard]] constexpr vec3<T> rotate(const rotation_matrix<T>& m, const vec3<T>& v) noexcept {
+    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
+            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
+            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+
+/// Transpose; for a rotation, its inverse.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> transpose(const rotation_matrix<T>& m) noexcept {
+    return rotation_matrix<T>::from_columns(row(m, 0), row(m, 1), row(m, 2));
+}
+
+/// Determinant: +1 for a rotation, -1 for a reflection.
+template <class T>
+[[nodiscard]] constexpr T determinant(const rotation_matrix<T>& m) noexcept {
+    return dot(row(m, 0), cross(row(m, 1), row(m, 2)));
+}
+
+/// Largest |(M^T M - I)(i, j)|: zero for an exact rotation or reflection, NaN propagates.
+template <class T>
+[[nodiscard]] constexpr T orthogonality_error(const rotation_matrix<T>& m) noexcept {
+    T worst = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+            const T deviation =
+                detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
+            if (deviation != deviation) return deviation;  // NaN in, NaN out
+            if (worst < deviation) worst = deviation;
+        }
+    return worst;
+}
+
+}  // namespace quat
+
+#endif  // QUAT_ROTATION_MATRIX_HPP_INCLUDED
+// ---- end quat/rotation_matrix.hpp ----
 
 namespace quat {
 
@@ -750,6 +897,24 @@ template <class T>
     return conjugate(q) / s;
 }
 
+namespace detail {
+
+/// The matrix of q with the vector part's factor 2 already applied by the caller: entries
+/// 1 - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
+/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys,
+                                                         T zs) noexcept {
+    const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
+    const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
+    const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
+    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
+             {xy + wz, T(1) - (xx + zz), yz - wx},
+             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+}
+
+}  // namespace detail
+
 /// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
 /// s = 2 (2 - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few
 /// eps off unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7
@@ -758,15 +923,9 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
-    const T n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    const T n2 = squared_norm(q);
     const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
-    const T xs = q.x * s, ys = q.y * s, zs = q.z * s;
-    const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
-    const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
-    const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
-    return {(T(1) - (yy + zz)) * v.x + (xy - wz) * v.y + (xz + wy) * v.z,
-            (xy + wz) * v.x + (T(1) - (xx + zz)) * v.y + (yz - wx) * v.z,
-            (xz - wy) * v.x + (yz + wx) * v.y + (T(1) - (xx + yy)) * v.z};
+    return rotate(detail::scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
@@ -796,182 +955,41 @@ template <class T>
     return detail::abs(norm(q) - T(1)) <= tolerance;
 }
 
+namespace detail {
+
+// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
+template <int Axis, class A>
+[[nodiscard]] constexpr quaternion<real_t<A>> axis_rotation(A angle) noexcept {
+    using T = real_t<A>;
+    const T half = static_cast<T>(angle) * T(0.5), s = detail::sin(half);
+    return {detail::cos(half), Axis == 0 ? s : T(0), Axis == 1 ? s : T(0), Axis == 2 ? s : T(0)};
+}
+
+}  // namespace detail
+
 /// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
 /// An integer angle gives a quatd.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_x(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), detail::sin(half), T(0), T(0)};
+    return detail::axis_rotation<0>(angle);
 }
 
 /// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_y(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), T(0), detail::sin(half), T(0)};
+    return detail::axis_rotation<1>(angle);
 }
 
 /// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
 template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
-    using T = detail::real_t<A>;
-    const T half = static_cast<T>(angle) * T(0.5);
-    return {detail::cos(half), T(0), T(0), detail::sin(half)};
+    return detail::axis_rotation<2>(angle);
 }
 
 }  // namespace quat
 
 #endif  // QUAT_QUATERNION_HPP_INCLUDED
 // ---- end quat/quaternion.hpp ----
-// ---- begin quat/rotation_matrix.hpp ----
-// 3x3 rotation matrices acting on column vectors.
-#ifndef QUAT_ROTATION_MATRIX_HPP_INCLUDED
-#define QUAT_ROTATION_MATRIX_HPP_INCLUDED
-
-
-namespace quat {
-
-/// 3x3 matrix stored row-major, acting on column vectors: v' = M v. Used for rotations (orthogonal,
-/// determinant +1); nearest_rotation and try_to_quaternion also accept any 3x3 matrix in it.
-template <class T>
-struct rotation_matrix {
-    /// Row-major: elements[row][col].
-    /// @{
-    T elements[3][3];
-    /// @}
-
-    /// Elements left uninitialized, as in a plain struct; rotation_matrix<T>{} is zero.
-    rotation_matrix() = default;
-    /// The matrix with the given rows: rotation_matrix<T>{{{m00, m01, m02}, {m10, ...}, {...}}}.
-    constexpr rotation_matrix(const T (&rows)[3][3]) noexcept
-        : elements{{rows[0][0], rows[0][1], rows[0][2]},
-                   {rows[1][0], rows[1][1], rows[1][2]},
-                   {rows[2][0], rows[2][1], rows[2][2]}} {}
-    /// Conversion from another precision, element by element: rotation_matrix<float>{md}.
-    template <class U>
-    constexpr explicit rotation_matrix(const rotation_matrix<U>& m) noexcept
-        : elements{{static_cast<T>(m.elements[0][0]), static_cast<T>(m.elements[0][1]),
-                    static_cast<T>(m.elements[0][2])},
-                   {static_cast<T>(m.elements[1][0]), static_cast<T>(m.elements[1][1]),
-                    static_cast<T>(m.elements[1][2])},
-                   {static_cast<T>(m.elements[2][0]), static_cast<T>(m.elements[2][1]),
-                    static_cast<T>(m.elements[2][2])}} {}
-
-    /// Element at (row, col), both in [0, 3).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
-        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
-        return elements[row][col];
-    }
-    /// Element at (row, col), read-only.
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
-        QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
-        return elements[row][col];
-    }
-
-    /// The rotation by zero angle.
-    [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
-        return {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
-    }
-    /// The matrix whose rows are r0, r1, r2.
-    [[nodiscard]] static constexpr rotation_matrix from_rows(const vec3<T>& r0, const vec3<T>& r1,
-                                                             const vec3<T>& r2) noexcept {
-        return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
-    }
-    /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
-    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0,
-                                                                const vec3<T>& c1,
-                                                                const vec3<T>& c2) noexcept {
-        return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
-    }
-};
-
-/// Row i (0, 1 or 2) of m.
-template <class T>
-[[nodiscard]] constexpr vec3<T> row(const rotation_matrix<T>& m, int i) noexcept {
-    return {m(i, 0), m(i, 1), m(i, 2)};
-}
-
-/// Column j (0, 1 or 2) of m: for a rotation, the image of axis j.
-template <class T>
-[[nodiscard]] constexpr vec3<T> column(const rotation_matrix<T>& m, int j) noexcept {
-    return {m(0, j), m(1, j), m(2, j)};
-}
-
-/// Matrix product: as rotations, a * b applies b first, then a.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> operator*(const rotation_matrix<T>& a,
-                                                     const rotation_matrix<T>& b) noexcept {
-    const auto entry = [&a, &b](int i, int j) {
-        return a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
-    };
-    return {{{entry(0, 0), entry(0, 1), entry(0, 2)},
-             {entry(1, 0), entry(1, 1), entry(1, 2)},
-             {entry(2, 0), entry(2, 1), entry(2, 2)}}};
-}
-
-/// a = a * b: as rotations, b is applied first, then the old a.
-template <class T>
-constexpr rotation_matrix<T>& operator*=(rotation_matrix<T>& a,
-                                         const rotation_matrix<T>& b) noexcept {
-    return a = a * b;
-}
-
-/// Exact element-wise equality.
-template <class T>
-[[nodiscard]] constexpr bool operator==(const rotation_matrix<T>& a,
-                                        const rotation_matrix<T>& b) noexcept {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (!(a(i, j) == b(i, j))) return false;
-    return true;
-}
-/// Negation of ==.
-template <class T>
-[[nodiscard]] constexpr bool operator!=(const rotation_matrix<T>& a,
-                                        const rotation_matrix<T>& b) noexcept {
-    return !(a == b);
-}
-
-/// M v: rotates v by the rotation matrix m.
-template <class T>
-[[nodiscard]] constexpr vec3<T> rotate(const rotation_matrix<T>& m, const vec3<T>& v) noexcept {
-    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
-            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
-            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
-}
-
-/// Transpose; for a rotation, its inverse.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> transpose(const rotation_matrix<T>& m) noexcept {
-    return rotation_matrix<T>::from_columns(row(m, 0), row(m, 1), row(m, 2));
-}
-
-/// Determinant: +1 for a rotation, -1 for a reflection.
-template <class T>
-[[nodiscard]] constexpr T determinant(const rotation_matrix<T>& m) noexcept {
-    return dot(row(m, 0), cross(row(m, 1), row(m, 2)));
-}
-
-/// Largest |(M^T M - I)(i, j)|: zero for an exact rotation or reflection, NaN propagates.
-template <class T>
-[[nodiscard]] constexpr T orthogonality_error(const rotation_matrix<T>& m) noexcept {
-    T worst = T(0);
-    for (int i = 0; i < 3; ++i)
-        for (int j = i; j < 3; ++j) {
-            const T deviation =
-                detail::abs(dot(column(m, i), column(m, j)) - (i == j ? T(1) : T(0)));
-            if (deviation != deviation) return deviation;  // NaN in, NaN out
-            if (worst < deviation) worst = deviation;
-        }
-    return worst;
-}
-
-}  // namespace quat
-
-#endif  // QUAT_ROTATION_MATRIX_HPP_INCLUDED
-// ---- end quat/rotation_matrix.hpp ----
 
 namespace quat {
 
@@ -980,13 +998,7 @@ namespace quat {
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const quaternion<T>& q) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::to_matrix: q is not a unit quaternion");
-    const T x2 = q.x + q.x, y2 = q.y + q.y, z2 = q.z + q.z;
-    const T xx = q.x * x2, yy = q.y * y2, zz = q.z * z2;
-    const T xy = q.x * y2, xz = q.x * z2, yz = q.y * z2;
-    const T wx = q.w * x2, wy = q.w * y2, wz = q.w * z2;
-    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
-             {xy + wz, T(1) - (xx + zz), yz - wx},
-             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+    return detail::scaled_matrix(q, q.x + q.x, q.y + q.y, q.z + q.z);
 }
 
 /// Unit quaternion with w >= 0 of the rotation matrix m, exact for every rotation including 180°
@@ -1287,17 +1299,17 @@ using if_point_arrays = std::enable_if_t<
                           const vec3<T>*> &&
     std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
 
-// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) are one and the same or do not
-// overlap. Compared as integers: relational operators on unrelated pointers are unspecified.
-[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                           std::size_t b_bytes) noexcept {
-    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
-    return (x == y && a_bytes == b_bytes) || x + a_bytes <= y || y + b_bytes <= x;
-}
+// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
 [[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
                                    std::size_t b_bytes) noexcept {
     const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
     return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
+}
+// True when the two ranges are one and the same (an in-place call) or do not overlap.
+[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                           std::size_t b_bytes) noexcept {
+    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
 }
 
 // Points (or slerp parameters) per block where a block is computed into a local buffer first:

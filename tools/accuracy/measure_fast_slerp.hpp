@@ -17,20 +17,6 @@ namespace accuracy {
 template <class T>
 constexpr double slerp_fast_bound = sizeof(T) == sizeof(float) ? 1e-6 : 1e-8;
 
-/// Slerp of the normalized a, b along the arc from a to b as given (no choice of sign): the
-/// reference follows the arc slerp_fast chose by the sign of a . b computed in T, which differs from
-/// the exactly shorter arc only when a . b is within rounding of 0 and both arcs are equally short.
-inline hq slerp_along(const hq& a_in, const hq& b_in, real t) {
-    const hq a = normalized(a_in), b = normalized(b_in);
-    const hq d{a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]};
-    const hq s{a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]};
-    const real theta = 2 * r_atan2(norm(d), norm(s));
-    if (theta == 0) return a;
-    const real ka = r_sin((1 - t) * theta) / r_sin(theta), kb = r_sin(t * theta) / r_sin(theta);
-    return {ka * a[0] + kb * b[0], ka * a[1] + kb * b[1], ka * a[2] + kb * b[2],
-            ka * a[3] + kb * b[3]};
-}
-
 struct fast_slerp_result {
     error_stats angle;  // rad
     error_stats norm;   // ||r| - 1|, absolute
@@ -72,6 +58,8 @@ fast_slerp_result measure_fast_slerp(rng& g, int pairs_per_family) {
                 const T t = T(i) / T(64);
                 const quat::quaternion<T> f = quat::slerp_fast(qa, qb, t);
                 const hq got = widen(q4<T>{f.w, f.x, f.y, f.z});
+                // The reference follows the arc slerp_fast chose by the sign of a . b in T, which
+                // differs from the exactly shorter arc only when a . b is within rounding of 0.
                 const hq ref = slerp_along(widen(a), arc_end, real(t));
                 const std::string what = std::string("a = ") + describe(a) +
                                          ", b = " + describe(b) + ", t = " + std::to_string(i) +

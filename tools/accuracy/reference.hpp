@@ -105,11 +105,10 @@ inline hv log_map(const hq& q_in) {
     return {k * q[1], k * q[2], k * q[3]};
 }
 
-/// Shortest-arc slerp of the normalized inputs; the angle from atan2 of chord lengths.
-inline hq slerp(const hq& a_in, const hq& b_in, real t) {
-    const hq a = normalized(a_in);
-    hq b = normalized(b_in);
-    if (a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0) b = {-b[0], -b[1], -b[2], -b[3]};
+/// Slerp of the normalized a, b along the arc from a to b as given (no choice of sign); the angle
+/// from atan2 of chord lengths.
+inline hq slerp_along(const hq& a_in, const hq& b_in, real t) {
+    const hq a = normalized(a_in), b = normalized(b_in);
     const hq d{a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]};
     const hq s{a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]};
     const real theta = 2 * r_atan2(norm(d), norm(s));
@@ -118,6 +117,12 @@ inline hq slerp(const hq& a_in, const hq& b_in, real t) {
     const real kb = r_sin(t * theta) / r_sin(theta);
     return {ka * a[0] + kb * b[0], ka * a[1] + kb * b[1], ka * a[2] + kb * b[2],
             ka * a[3] + kb * b[3]};
+}
+
+/// Shortest-arc slerp of the normalized inputs.
+inline hq slerp(const hq& a, const hq& b, real t) {
+    const bool far = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0;
+    return slerp_along(a, far ? hq{-b[0], -b[1], -b[2], -b[3]} : b, t);
 }
 
 }  // namespace accuracy
