@@ -43,13 +43,16 @@ void ignore_free(const volatile void*) {}
 #else
 // Replacing the global allocation functions is the standard way to observe every allocation; the
 // replacements forward to malloc and free, which valgrind still tracks.
-void* operator new(std::size_t size) {
+[[gnu::noinline]] void* operator new(std::size_t size) {
     allocations.fetch_add(1, std::memory_order_relaxed);
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
     throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+// Never inlined: valgrind replaces the out-of-line operator new and delete of this program with its
+// own, and a delete inlined as free() would pair its new with malloc's free (g++ 12 also warns about
+// that pairing, -Wmismatched-new-delete, once both are inlined into one caller).
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 #endif
 
 TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocation]") {
