@@ -236,6 +236,8 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     CHECK(same(to_euler<sequence::zyx>(m)[0], to_euler<sequence::zyx>(md)[0]));
     CHECK(same(to_euler<sequence::yzy>(aa)[2], to_euler<sequence::yzy>(aad)[2]));
     CHECK(same(to_euler<sequence::zyx>(e)[2], to_euler<sequence::zyx>(ed)[2]));
+    CHECK(same(to_euler(a, euler<R, sequence::zyx>{r(3), r(0.1), r(-3)})[0],
+               to_euler(ad, euler<double, sequence::zyx>{3, 0.1, -3})[0]));
     CHECK(extract_euler<sequence::xyz>(a).gimbal_lock ==
           extract_euler<sequence::xyz>(ad).gimbal_lock);
     CHECK(same(extract_euler<sequence::zxz>(a).angles[1],
@@ -245,6 +247,46 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     check_same(slerp(a, b, r(1.7)), slerp(ad, bd, 1.7));
     check_same(nlerp(a, b, r(0.3)), nlerp(ad, bd, 0.3));
     check_same(slerp_fast(a, b, r(0.3)), slerp_fast(ad, bd, 0.3));
+    check_same(pow(a, r(0.3)), pow(ad, 0.3));
+    check_same(rotate_towards(a, b, r(0.2)), rotate_towards(ad, bd, 0.2));
+    CHECK(same(to_mrp(a).y, to_mrp(ad).y));
+    check_same(from_mrp(vec3<R>{r(0.1), r(-0.2), r(0.3)}), from_mrp(vec3<double>{0.1, -0.2, 0.3}));
+
+    const vec3<R> omega = body_angular_velocity(a, b, r(0.5));
+    const vec3<double> omega_d = body_angular_velocity(ad, bd, 0.5);
+    CHECK(same(omega.z, omega_d.z));
+    CHECK(same(world_angular_velocity(a, b, r(0.5)).x, world_angular_velocity(ad, bd, 0.5).x));
+    check_same(integrate_body(a, omega, r(0.5)), integrate_body(ad, omega_d, 0.5));
+    check_same(integrate_world(a, omega, r(0.5)), integrate_world(ad, omega_d, 0.5));
+    const vec3<R> from{r(1), r(-2), r(0.5)}, to{r(-0.3), r(0.1), r(2)};
+    const vec3<double> from_d{1, -2, 0.5}, to_d{-0.3, 0.1, 2};
+    check_same(rotation_between(from, to), rotation_between(from_d, to_d));
+    check_same(*try_rotation_between(from, to), *try_rotation_between(from_d, to_d));
+    check_same(look_rotation(from, to), look_rotation(from_d, to_d));
+    check_same(*try_look_rotation(from, to), *try_look_rotation(from_d, to_d));
+    const std::vector<vec3<R>> sources{from, to, cross(from, to)};
+    const std::vector<vec3<double>> sources_d{from_d, to_d, cross(from_d, to_d)};
+    std::vector<vec3<R>> targets;
+    std::vector<vec3<double>> targets_d;
+    for (const auto& s : sources) targets.push_back(rotate(a, s));
+    for (const auto& s : sources_d) targets_d.push_back(rotate(ad, s));
+    check_same(align_vectors(targets, sources).rotation,
+               align_vectors(targets_d, sources_d).rotation);
+    check_same(align_vectors(targets, sources, std::vector<R>{r(1), r(2), r(3)}).rotation,
+               align_vectors(targets_d, sources_d, std::vector<double>{1, 2, 3}).rotation);
+    CHECK(same(align_vectors_with_sensitivity(targets, sources, std::vector<R>{r(1), r(2), r(3)})
+                   .sensitivity(0, 1),
+               align_vectors_with_sensitivity(targets_d, sources_d, std::vector<double>{1, 2, 3})
+                   .sensitivity(0, 1)));
+    const std::vector<quaternion<R>> cluster{a, b, slerp(a, b, r(0.2))};
+    const std::vector<quatd> cluster_d{ad, bd, slerp(ad, bd, 0.2)};
+    check_same(mean(cluster), mean(cluster_d));
+    check_same(*try_mean(cluster, std::vector<R>{r(1), r(2), r(0.5)}),
+               *try_mean(cluster_d, std::vector<double>{1, 2, 0.5}));
+    const vec3<R> twist_axis{r(0), r(2), r(1)};
+    const vec3<double> twist_axis_d{0, 2, 1};
+    check_same(swing_twist(a, twist_axis).twist, swing_twist(ad, twist_axis_d).twist);
+    check_same(try_swing_twist(a, twist_axis)->swing, try_swing_twist(ad, twist_axis_d)->swing);
 
     // The batch functions take the plain loops (no vector polynomial) for a user scalar.
     std::vector<vec3<R>> points(5, vec3<R>{r(1), r(2), r(3)}), rotated(5);

@@ -150,6 +150,10 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::to_euler<sequence::xyz>(in.rotation)));
         CHECK(bad(quat::to_euler<sequence::yzy>(in.e)));
 
+        // continuous_euler.hpp
+        CHECK(bad(quat::to_euler(q, quat::euler<T>{T(0.1), T(0.2), T(0.3)})));
+        CHECK(bad(quat::to_euler(unit, in.e)));
+
         // nearest_rotation.hpp
         CHECK(bad(quat::nearest_rotation(m)));
         CHECK_FALSE(quat::try_nearest_rotation(m).has_value());
@@ -166,6 +170,61 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::slerp(unit, unit, value)));  // no motion to scale, but t is still bad
         CHECK(bad(quat::nlerp(unit, other, value)));
         CHECK(bad(quat::slerp_fast(unit, other, value)));
+
+        // interpolation.hpp: powers and bounded steps
+        CHECK(bad(quat::pow(q, T(0.5))));
+        CHECK(bad(quat::pow(unit, value)));
+        CHECK(bad(quat::rotate_towards(q, unit, T(0.1))));
+        CHECK(bad(quat::rotate_towards(unit, q, T(0.1))));
+        if (value != value) CHECK(bad(quat::rotate_towards(unit, other, value)));
+
+        // conversions.hpp: modified Rodrigues parameters
+        CHECK(bad(quat::to_mrp(q)));
+        CHECK(bad(quat::from_mrp(v)));
+
+        // kinematics.hpp
+        CHECK(bad(quat::body_angular_velocity(unit, q, T(0.1))));
+        CHECK(bad(quat::world_angular_velocity(q, unit, T(0.1))));
+        if (value != value) CHECK(bad(quat::body_angular_velocity(unit, other, value)));  // inf: 0
+        CHECK(bad(quat::integrate_body(unit, v, T(0.1))));
+        CHECK(bad(quat::integrate_world(q, in.good_vector, T(0.1))));
+        CHECK(bad(quat::integrate_world(unit, in.good_vector, value)));
+
+        // swing_twist.hpp
+        const auto parts = quat::swing_twist(q, in.good_vector);
+        CHECK((bad(parts.swing) || bad(parts.twist)));
+        const auto about_bad_axis = quat::swing_twist(unit, v);
+        CHECK((bad(about_bad_axis.swing) || bad(about_bad_axis.twist)));
+        CHECK_FALSE(quat::try_swing_twist(q, in.good_vector).has_value());
+        CHECK_FALSE(quat::try_swing_twist(unit, v).has_value());
+
+        // align.hpp
+        CHECK(bad(quat::rotation_between(v, in.good_vector)));
+        CHECK(bad(quat::rotation_between(in.good_vector, v)));
+        CHECK_FALSE(quat::try_rotation_between(v, in.good_vector).has_value());
+        CHECK(bad(quat::look_rotation(v, in.good_vector)));
+        CHECK(bad(quat::look_rotation(in.good_vector, v)));
+        CHECK_FALSE(quat::try_look_rotation(in.good_vector, v).has_value());
+
+        // align_vectors.hpp
+        const std::vector<vec3<T>> sources{in.good_vector, vec3<T>{T(1), T(0), T(0)}};
+        const std::vector<vec3<T>> targets{v, vec3<T>{T(0), T(1), T(0)}};
+        const auto aligned = quat::align_vectors(targets, sources);
+        CHECK((bad(aligned.rotation) && bad(aligned.rssd) && !aligned.unique));
+        CHECK(bad(quat::align_vectors(sources, targets, std::vector<T>{T(1), T(2)}).rotation));
+        CHECK(
+            bad(quat::align_vectors(sources, sources, std::vector<T>{std::abs(value), T(2)}).rssd));
+        CHECK(bad(quat::align_vectors_with_sensitivity(targets, sources, std::vector<T>{T(1), T(1)})
+                      .rotation));
+
+        // mean.hpp
+        const std::vector<quaternion<T>> cluster{unit, other, q};
+        CHECK(bad(quat::mean(cluster)));
+        CHECK_FALSE(quat::try_mean(cluster).has_value());
+        const std::vector<quaternion<T>> good_cluster{unit, other};
+        const T weight = std::abs(value);  // a negative weight is a precondition violation
+        CHECK(bad(quat::mean(good_cluster, std::vector<T>{T(1), weight})));
+        CHECK_FALSE(quat::try_mean(good_cluster, std::vector<T>{weight, T(1)}).has_value());
 
         // batch.hpp
         std::vector<vec3<T>> points(40, in.good_vector), rotated(40);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <new>
+#include <random>
 #include <vector>
 
 #include <quat/quat.hpp>
@@ -93,6 +94,19 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     quat::rotate(a, big_points, big_out);
     sink += quat::compose(factors).w;
     quat::slerp(a, b, ts, slerped);
+    // Issue 13: aligning, averaging, sampling and motion.
+    const quat::vec3<float> u{1, 2, 3}, v{-3, 1, 2};
+    sink += quat::rotation_between(u, v).w + quat::try_rotation_between(u, v)->w;
+    sink += quat::look_rotation(u, v).w + quat::try_look_rotation(u, v)->w;
+    sink += quat::align_vectors(points, out).rotation.w + quat::align_vectors(points, out, xs).rssd;
+    sink += quat::align_vectors_with_sensitivity(points, out, xs).sensitivity(0, 0);
+    sink += quat::mean(factors).w + quat::mean(factors, xs).w + quat::try_mean(factors, xs)->w;
+    std::minstd_rand engine(7);
+    sink += quat::random_rotation<float>(engine).w;
+    sink += quat::swing_twist(a, u).twist.w + quat::pow(a, 0.3f).w;
+    sink += quat::rotate_towards(a, b, 0.1f).w + quat::body_angular_velocity(a, b, 0.1f).x;
+    sink += quat::integrate_world(a, u, 0.1f).w + quat::to_mrp(a).x + quat::from_mrp(u).w;
+    sink += quat::to_euler(a, quat::euler<float>{0.1f, 0.2f, 0.3f})[0];
     const long after = allocations.load();
 
     CHECK(after == before);

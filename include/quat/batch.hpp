@@ -25,6 +25,7 @@
 
 #include "config.hpp"
 #include "conversions.hpp"
+#include "detail/containers.hpp"
 #include "detail/streaming_store.hpp"
 #include "interpolation.hpp"
 #include "quaternion.hpp"
@@ -55,25 +56,6 @@ inline namespace isa_avx {
 #else
 inline namespace isa_baseline {
 #endif
-
-// std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
-// translation unit that includes quat.hpp: half its compile time.
-template <class Container>
-[[nodiscard]] constexpr auto data_of(Container& c) noexcept -> decltype(c.data()) {
-    return c.data();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr T* data_of(T (&array)[N]) noexcept {
-    return array;
-}
-template <class Container>
-[[nodiscard]] constexpr auto size_of(const Container& c) noexcept -> decltype(c.size()) {
-    return c.size();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
-    return N;
-}
 
 template <class T, class Input, class Output>
 using if_point_arrays = std::enable_if_t<

@@ -1,4 +1,5 @@
-// Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
+// Conversions among quaternions, rotation matrices, axis-angle pairs, rotation vectors and modified
+// Rodrigues parameters.
 // Euler-angle conversions live in euler.hpp.
 #ifndef QUAT_CONVERSIONS_HPP_INCLUDED
 #define QUAT_CONVERSIONS_HPP_INCLUDED
@@ -152,6 +153,38 @@ template <class T>
     }
     // Dividing u first keeps 1/s from overflowing for a subnormal-scaled q.
     return (u / s) * (T(2) * detail::atan2(s, p.w));
+}
+
+/// Modified Rodrigues parameters of the rotation q, as scipy's Rotation.as_mrp: axis * tan(angle/4)
+/// with angle in [0, pi], so |p| <= 1; p = v / (|q| + w) after taking q's sign with w >= 0, which
+/// never cancels. A half turn (w = 0) keeps the sign of q's vector part (|p| = 1, and p and -p are
+/// the same rotation). Any non-zero scale of q gives the same result; the zero quaternion and NaN
+/// or infinite components give NaN.
+template <class T>
+[[nodiscard]] constexpr vec3<T> to_mrp(const quaternion<T>& q) noexcept {
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    return vec3<T>{p.x, p.y, p.z} / (norm(p) + p.w);
+}
+
+/// The unit quaternion ((1 - |p|^2), 2 p) / (1 + |p|^2) of the modified Rodrigues parameters p, as
+/// scipy's Rotation.from_mrp: the rotation by 4 atan(|p|) about p / |p|. Any finite p is valid:
+/// |p| > 1 is the same rotation the long way round (p and -p / |p|^2 agree up to the quaternion's
+/// sign), and a huge p gives a quaternion near -identity. NaN or infinite components give NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> from_mrp(const vec3<T>& p) noexcept {
+    const T n2 = squared_norm(p);
+    if (n2 <= std::numeric_limits<T>::max()) {
+        const T scale = T(2) / (T(1) + n2);
+        return {(T(1) - n2) / (T(1) + n2), p.x * scale, p.y * scale, p.z * scale};
+    }
+    // A NaN or infinite component: NaN in every component (x - x is NaN exactly then).
+    const T nan = (p.x - p.x) + (p.y - p.y) + (p.z - p.z);
+    if (!(nan == T(0))) return {nan, nan, nan, nan};
+    // |p|^2 overflowed: the same formula with numerator and denominator divided by |p|^2, in terms
+    // of p / |p| and 1 / |p| (0 when |p| overflows too).
+    const T length = norm(p), inverse = T(1) / length, inverse2 = inverse * inverse;
+    const vec3<T> v = p / length * (T(2) * inverse / (inverse2 + T(1)));
+    return {(inverse2 - T(1)) / (inverse2 + T(1)), v.x, v.y, v.z};
 }
 
 }  // namespace quat

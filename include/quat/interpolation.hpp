@@ -1,4 +1,5 @@
-// Interpolation between rotations: slerp (constant angular velocity) and nlerp (cheap, normalized).
+// Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle).
 #ifndef QUAT_INTERPOLATION_HPP_INCLUDED
 #define QUAT_INTERPOLATION_HPP_INCLUDED
 
@@ -58,6 +59,47 @@ template <class T>
                                             detail::type_identity_t<T> t) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     return normalize(a + (near - a) * t);
+}
+
+/// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
+/// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
+/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly.
+/// The half angle comes from atan2(|v|, w), accurate near the identity and near a half turn.
+/// Precondition: unit q (checked in debug builds). A NaN or infinite q or t gives a non-finite
+/// result. glm::pow differs for w < 0: it keeps q's sign and so takes the longer arc.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
+                                          detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    if (t == T(1)) return p;
+    const quaternion<T> identity = quaternion<T>::identity();
+    // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
+    if (t == T(0)) return identity + (p - p);
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s = norm(u);
+    if (s == T(0) && p.w > T(0)) return detail::is_finite(t) ? identity + (p - p) : identity * t;
+    const T half = t * detail::atan2(s, p.w);
+    const vec3<T> v = u / s * detail::sin(half);
+    return {detail::cos(half), v.x, v.y, v.z};
+}
+
+/// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
+/// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
+/// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
+/// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
+/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
+/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotate_towards(
+    const quaternion<T>& from, const quaternion<T>& to,
+    detail::type_identity_t<T> max_angle) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(from) && detail::is_near_unit(to),
+                "quat::rotate_towards: from or to is not a unit quaternion");
+    const T angle = angle_between(from, to);  // NaN for non-finite from or to
+    const T step = max_angle < T(0) ? T(0) : max_angle;
+    if (angle <= step) return to;
+    return slerp(from, to, step / angle);  // step / angle is in [0, 1), or NaN
 }
 
 }  // namespace quat

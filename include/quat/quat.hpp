@@ -17,17 +17,24 @@
 #ifndef QUAT_QUAT_HPP_INCLUDED
 #define QUAT_QUAT_HPP_INCLUDED
 
+#include "align.hpp"
+#include "align_vectors.hpp"
 #include "axis_angle.hpp"
 #include "batch.hpp"
 #include "config.hpp"
 #include "constants.hpp"
+#include "continuous_euler.hpp"
 #include "conversions.hpp"
 #include "euler.hpp"
 #include "fast_slerp.hpp"
 #include "interpolation.hpp"
+#include "kinematics.hpp"
+#include "mean.hpp"
 #include "nearest_rotation.hpp"
 #include "quaternion.hpp"
+#include "random.hpp"
 #include "rotation_matrix.hpp"
+#include "swing_twist.hpp"
 #include "vec3.hpp"
 
 #endif  // QUAT_QUAT_HPP_INCLUDED

@@ -45,6 +45,26 @@
 #ifndef QUAT_QUAT_HPP_INCLUDED
 #define QUAT_QUAT_HPP_INCLUDED
 
+// ---- begin quat/align.hpp ----
+// Rotations that align one direction with another: rotation_between (shortest arc) and
+// look_rotation (a camera's orientation from where it looks and which way is up).
+#ifndef QUAT_ALIGN_HPP_INCLUDED
+#define QUAT_ALIGN_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+// ---- begin quat/conversions.hpp ----
+// Conversions among quaternions, rotation matrices, axis-angle pairs, rotation vectors and modified
+// Rodrigues parameters.
+// Euler-angle conversions live in euler.hpp.
+#ifndef QUAT_CONVERSIONS_HPP_INCLUDED
+#define QUAT_CONVERSIONS_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
 // ---- begin quat/axis_angle.hpp ----
 // Rotations given as a unit axis and an angle.
 #ifndef QUAT_AXIS_ANGLE_HPP_INCLUDED
@@ -313,6 +333,72 @@ template <class T>
     return a < b ? b : a;
 }
 
+namespace compile_time {
+
+/// a b as high + low exactly (Dekker's product with Veltkamp's split, no fma), usable in constant
+/// evaluation. Precondition: |a| and |b| far enough below max() that the split does not overflow.
+template <class T>
+struct exact_product {
+    T high, low;
+};
+template <class T>
+[[nodiscard]] constexpr T split_high(T a) noexcept {
+    constexpr T factor = T((1ULL << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
+    const T scaled = factor * a;
+    return scaled - (scaled - a);
+}
+template <class T>
+[[nodiscard]] constexpr exact_product<T> two_product(T a, T b) noexcept {
+    const T p = a * b;
+    const T a_high = split_high(a), a_low = a - a_high;
+    const T b_high = split_high(b), b_low = b - b_high;
+    return {p, ((a_high * b_high - p) + a_high * b_low + a_low * b_high) + a_low * b_low};
+}
+
+}  // namespace compile_time
+
+/// True where std::fma is a fused instruction rather than a library call (FP_FAST_FMA and
+/// FP_FAST_FMAL from <cmath>, defined by compilers that target FMA hardware, e.g. -march=haswell).
+template <class T>
+inline constexpr bool fast_fma =
+#if defined(FP_FAST_FMA)
+    std::is_same_v<T, double> ||
+#endif
+#if defined(FP_FAST_FMAL)
+    std::is_same_v<T, long double> ||
+#endif
+    false;
+
+/// a b - c d without the cancellation of the naive formula, within 2 units of roundoff of the exact
+/// value however much the products cancel. float: the products are exact in double, which rounds
+/// once, then float once more. Others, where fma is an instruction: Kahan's algorithm, w = c d
+/// rounded, e = w - c d exactly, result fma(a, b, -w) + e (Jeannerod, Louvet and Muller, "Further
+/// analysis of Kahan's algorithm for the accurate computation of 2x2 determinants", Math. Comp. 82,
+/// 2013). Elsewhere, and during constant evaluation (std::fma is not constexpr), the products are
+/// split exactly (Dekker) and the high and low parts subtracted separately. Preconditions: no
+/// product overflows or underflows, |a|, |b|, |c|, |d| below max() / 2^33. A user scalar gets the
+/// plain a b - c d.
+template <class T>
+[[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        return static_cast<float>(static_cast<double>(a) * static_cast<double>(b) -
+                                  static_cast<double>(c) * static_cast<double>(d));
+    } else if constexpr (std::is_floating_point_v<T>) {
+        if constexpr (fast_fma<T>) {
+            if (!constant_evaluated()) {
+                const T w = c * d;
+                const T e = std::fma(-c, d, w);
+                return std::fma(a, b, -w) + e;
+            }
+        }
+        const compile_time::exact_product<T> ab = compile_time::two_product(a, b);
+        const compile_time::exact_product<T> cd = compile_time::two_product(c, d);
+        return (ab.high - cd.high) + (ab.low - cd.low);
+    } else {
+        return a * b - c * d;
+    }
+}
+
 }  // namespace quat::detail
 
 #endif  // QUAT_DETAIL_MATH_HPP_INCLUDED
@@ -476,32 +562,6 @@ struct axis_angle {
 
 #endif  // QUAT_AXIS_ANGLE_HPP_INCLUDED
 // ---- end quat/axis_angle.hpp ----
-// ---- begin quat/batch.hpp ----
-// Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
-// many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
-// objdump), no allocation, the same results for any scalar type. The one use of intrinsics is the
-// non-temporal store of float arrays beyond 16 MiB on x86 (struct of arrays with SSE, array of
-// structs only in AVX-512 builds, where it measured faster; plain stores elsewhere).
-//
-// Arrays are passed either as pointer + count or as any contiguous container or view with data()
-// and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
-// Aliasing: an output may be exactly the input (in place) or not overlap it at all. A partial
-// overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (one pointer-range
-// check per call); with NDEBUG the values written are unspecified.
-//
-// One definition across instruction sets: the functions here are compiled differently under
-// different -m flags (vector width, the AVX-512 streaming branch), so they live in an inline
-// namespace named after the widest of AVX-512F, AVX2 and AVX the translation unit is compiled for.
-// Two translation units built with different flags then call different functions, and the linker
-// never substitutes one for the other. soa_points, a type, stays outside: it is the same everywhere.
-#ifndef QUAT_BATCH_HPP_INCLUDED
-#define QUAT_BATCH_HPP_INCLUDED
-
-#include <cstddef>
-#include <cstdint>
-#include <limits>
-#include <type_traits>
-
 // ---- begin quat/config.hpp ----
 // quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
 #ifndef QUAT_CONFIG_HPP_INCLUDED
@@ -525,15 +585,6 @@ struct axis_angle {
 
 #endif  // QUAT_CONFIG_HPP_INCLUDED
 // ---- end quat/config.hpp ----
-// ---- begin quat/conversions.hpp ----
-// Conversions among quaternions, rotation matrices, axis-angle pairs and rotation vectors.
-// Euler-angle conversions live in euler.hpp.
-#ifndef QUAT_CONVERSIONS_HPP_INCLUDED
-#define QUAT_CONVERSIONS_HPP_INCLUDED
-
-#include <limits>
-#include <optional>
-
 // ---- begin quat/quaternion.hpp ----
 // Quaternions w + xi + yj + zk (scalar first, Hamilton's ij = k) and their algebra.
 #ifndef QUAT_QUATERNION_HPP_INCLUDED
@@ -1132,10 +1183,749 @@ template <class T>
     return (u / s) * (T(2) * detail::atan2(s, p.w));
 }
 
+/// Modified Rodrigues parameters of the rotation q, as scipy's Rotation.as_mrp: axis * tan(angle/4)
+/// with angle in [0, pi], so |p| <= 1; p = v / (|q| + w) after taking q's sign with w >= 0, which
+/// never cancels. A half turn (w = 0) keeps the sign of q's vector part (|p| = 1, and p and -p are
+/// the same rotation). Any non-zero scale of q gives the same result; the zero quaternion and NaN
+/// or infinite components give NaN.
+template <class T>
+[[nodiscard]] constexpr vec3<T> to_mrp(const quaternion<T>& q) noexcept {
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    return vec3<T>{p.x, p.y, p.z} / (norm(p) + p.w);
+}
+
+/// The unit quaternion ((1 - |p|^2), 2 p) / (1 + |p|^2) of the modified Rodrigues parameters p, as
+/// scipy's Rotation.from_mrp: the rotation by 4 atan(|p|) about p / |p|. Any finite p is valid:
+/// |p| > 1 is the same rotation the long way round (p and -p / |p|^2 agree up to the quaternion's
+/// sign), and a huge p gives a quaternion near -identity. NaN or infinite components give NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> from_mrp(const vec3<T>& p) noexcept {
+    const T n2 = squared_norm(p);
+    if (n2 <= std::numeric_limits<T>::max()) {
+        const T scale = T(2) / (T(1) + n2);
+        return {(T(1) - n2) / (T(1) + n2), p.x * scale, p.y * scale, p.z * scale};
+    }
+    // A NaN or infinite component: NaN in every component (x - x is NaN exactly then).
+    const T nan = (p.x - p.x) + (p.y - p.y) + (p.z - p.z);
+    if (!(nan == T(0))) return {nan, nan, nan, nan};
+    // |p|^2 overflowed: the same formula with numerator and denominator divided by |p|^2, in terms
+    // of p / |p| and 1 / |p| (0 when |p| overflows too).
+    const T length = norm(p), inverse = T(1) / length, inverse2 = inverse * inverse;
+    const vec3<T> v = p / length * (T(2) * inverse / (inverse2 + T(1)));
+    return {(inverse2 - T(1)) / (inverse2 + T(1)), v.x, v.y, v.z};
+}
+
 }  // namespace quat
 
 #endif  // QUAT_CONVERSIONS_HPP_INCLUDED
 // ---- end quat/conversions.hpp ----
+
+namespace quat {
+
+namespace detail {
+
+/// True when every component of v is finite and one is non-zero: a vector with a direction.
+template <class T>
+[[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
+           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
+}
+
+/// 2^e for a small |e|, exactly, in a constant expression.
+template <class T>
+[[nodiscard]] constexpr T power_of_two(int e) noexcept {
+    T result(1);
+    for (; e > 0; --e) result = result * T(2);
+    for (; e < 0; ++e) result = result * T(0.5);
+    return result;
+}
+
+/// True when |v|^2 lies where the products of align.hpp (up to |a|^2 |b|^2 and its rounding
+/// errors) neither overflow nor underflow: within 2^(+-max_exponent/4), so in double lengths from
+/// 3e-39 to 3e38 and in float from 1.5e-5 to 65536. A user scalar is trusted with any length.
+template <class T>
+[[nodiscard]] constexpr bool in_product_range(T squared_length) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T high = power_of_two<T>(std::numeric_limits<T>::max_exponent / 4);
+        return squared_length >= T(1) / high && squared_length <= high;
+    } else {
+        return true;
+    }
+}
+
+/// v times the power of two that brings its largest |component| into [1/2, 2): the same
+/// direction exactly, whatever v's length. Precondition: has_direction(v).
+template <class T>
+[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(vec3<T> v) noexcept {
+    T largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
+    // Steps of 2^32, 2^8 and 2: at most a few dozen exact multiplications even from subnormals.
+    for (const int e : {32, 8, 1}) {
+        const T up = power_of_two<T>(e), down = power_of_two<T>(-e);
+        while (largest >= up) {
+            largest = largest * down;
+            v = v * down;
+        }
+        while (largest * up < T(1)) {
+            largest = largest * up;
+            v = v * up;
+        }
+    }
+    return v;
+}
+
+/// a x b with each component from difference_of_products: relative error at most 2 units of
+/// roundoff per component, also where a and b are nearly parallel or opposite and the naive
+/// cross product keeps only rounding noise.
+template <class T>
+[[nodiscard]] constexpr vec3<T> accurate_cross(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
+            difference_of_products(a.x, b.y, a.y, b.x)};
+}
+
+/// The half turn rotation_between picks for exactly opposite directions: about
+/// normalize(from x e), e the coordinate axis of from's smallest |component| (the first of x, y,
+/// z on ties), so (1, 0, 0) turns about z, (0, 1, 0) about -z and (0, 0, 1) about y.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> half_turn_perpendicular_to(const vec3<T>& from) noexcept {
+    const T ax = abs(from.x), ay = abs(from.y), az = abs(from.z);
+    vec3<T> axis{from.y, -from.x, T(0)};                       // from x (0, 0, 1)
+    if (ax <= ay && ax <= az) axis = {T(0), from.z, -from.y};  // from x (1, 0, 0)
+    else if (ay <= az) axis = {-from.z, T(0), from.x};         // from x (0, 1, 0)
+    axis = normalize(axis);
+    return {T(0), axis.x, axis.y, axis.z};
+}
+
+/// rotation_between_in_range past 150 degrees, given s = |a| |b| - a . b: the axis from the
+/// compensated cross product, w = |c|^2 / s.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_between_nearly_opposite(const vec3<T>& a,
+                                                                       const vec3<T>& b,
+                                                                       T s) noexcept {
+    const vec3<T> c = accurate_cross(a, b);
+    const T cc = dot(c, c);
+    if (!(cc >= std::numeric_limits<T>::min())) {  // |c|^2 underflows: at most a few ulp from -a
+        if (c.x == T(0) && c.y == T(0) && c.z == T(0)) return half_turn_perpendicular_to(a);
+        const vec3<T> axis = normalize(c);  // w = |c| / sqrt(|c|^2 + s^2), and s^2 >> |c|^2
+        return {norm(c) / s, axis.x, axis.y, axis.z};
+    }
+    const T w = cc / s;
+    const T k = T(1) / sqrt(w * w + cc);
+    return {w * k, c.x * k, c.y * k, c.z * k};
+}
+
+/// rotation_between for a and b with |a|^2 and |b|^2 in_product_range.
+///
+/// With m = |a| |b|, d = a . b and c = a x b, the unnormalized quaternion (m + d, c) turns a to b
+/// (its half angle has tan = |c| / (m + d) = sin / (1 + cos)), and |(m + d, c)|^2 = (m + d)^2 +
+/// |c|^2. Where d >= 0, m + d >= m does not cancel, and an error of the naive c moves the axis by
+/// at most its size relative to m times the angle's sine: a few eps. Where d < 0, m + d cancels;
+/// it equals |c|^2 / (m - d) (because m^2 = d^2 + |c|^2), and m - d does not cancel. Near opposite,
+/// the axis is c itself, small beside the products it comes from: the naive cross product would
+/// leave only rounding noise, so it is recomputed with Kahan's compensated determinants.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_between_in_range(const vec3<T>& a,
+                                                                const vec3<T>& b) noexcept {
+    const T mm = dot(a, a) * dot(b, b);
+    const T m = sqrt(mm), d = dot(a, b);
+    const vec3<T> c = cross(a, b);
+    const T cc = dot(c, c);
+    // Past 150 degrees (|c| < m / 2 and d < 0) the naive axis error can exceed an eps.
+    if (cc < mm * T(0.25) && d < T(0)) return rotation_between_nearly_opposite(a, b, m - d);
+    // Both candidates, then a select: random input would mispredict a branch on the sign of d.
+    // (m + |d| is m - d where it is used, and never 0, so the unused candidate is finite too.)
+    const T near_parallel = m + d, near_opposite = cc / (m + abs(d));
+    const T w = d >= T(0) ? near_parallel : near_opposite;
+    const T k = T(1) / sqrt(w * w + cc);
+    return {w * k, c.x * k, c.y * k, c.z * k};
+}
+
+/// rotation_between for float, in double: there a product of two floats is exact, so the cross
+/// product keeps its digits also for nearly parallel or opposite inputs, w = |c|^2 / (m - d) avoids
+/// the cancellation of m + d, and no float length overflows or underflows (|a|^2 |b|^2 stays
+/// within 1e-180 ... 1e155). One formula and a select, no scaling, no branch to mispredict.
+[[nodiscard]] constexpr quaternion<float> rotation_between_float(const vec3<float>& from,
+                                                                 const vec3<float>& to) noexcept {
+    const vec3<double> a{from}, b{to};
+    const double m = sqrt(dot(a, a) * dot(b, b)), d = dot(a, b);
+    const vec3<double> c = cross(a, b);
+    const double cc = dot(c, c);
+    if (cc == 0.0 && d < 0.0) return half_turn_perpendicular_to(from);  // exactly opposite
+    const double w = d >= 0.0 ? m + d : cc / (m - d);
+    // A zero input makes k infinite and every component 0 * inf = NaN; an infinite or NaN one makes
+    // m non-finite, and m - m (else 0) then turns every component into NaN too.
+    const double k = 1.0 / sqrt(w * w + cc) + (m - m);
+    return {static_cast<float>(w * k), static_cast<float>(c.x * k), static_cast<float>(c.y * k),
+            static_cast<float>(c.z * k)};
+}
+
+/// What look_rotation found: the rotation, or why there is none.
+enum class look_status { ok, parallel, invalid };
+
+/// look_rotation's work, with the fallback left to the caller.
+template <class T>
+struct look_result {
+    quaternion<T> rotation;
+    look_status status;
+};
+
+/// look_rotation for forward and up with |forward|^2 and |up|^2 in_product_range: the rotation
+/// matrix with columns right = forward x up / |.|, up' = back x right and back = -forward / |.|
+/// (the images of x, y and z), converted by Shepperd's method.
+template <class T>
+[[nodiscard]] constexpr look_result<T> look_rotation_in_range(const vec3<T>& forward,
+                                                              const vec3<T>& up) noexcept {
+    const T ff = dot(forward, forward), fu = ff * dot(up, up);
+    vec3<T> c = cross(forward, up);
+    T cc = dot(c, c);
+    // Within 15 degrees of parallel the naive cross product's error grows past an eps.
+    if (cc < fu * T(0.0625)) {
+        c = accurate_cross(forward, up);
+        cc = dot(c, c);
+    }
+    const T eps = std::numeric_limits<T>::epsilon();
+    if (!(cc > eps * eps * fu)) return {quaternion<T>::identity(), look_status::parallel};
+    const vec3<T> right = c / sqrt(cc);
+    const vec3<T> back = forward / -sqrt(ff);
+    const vec3<T> true_up = cross(back, right);
+    return {to_quaternion(rotation_matrix<T>::from_columns(right, true_up, back)), look_status::ok};
+}
+
+/// look_rotation for any input: scales out of range lengths by powers of two first.
+template <class T>
+[[nodiscard]] constexpr look_result<T> look_rotation_checked(const vec3<T>& forward,
+                                                             const vec3<T>& up) noexcept {
+    if (in_product_range(dot(forward, forward)) && in_product_range(dot(up, up)))
+        return look_rotation_in_range(forward, up);
+    if (!has_direction(forward) || !has_direction(up))
+        return {quaternion<T>::identity(), look_status::invalid};
+    return look_rotation_in_range(scaled_by_power_of_two(forward), scaled_by_power_of_two(up));
+}
+
+}  // namespace detail
+
+/// The shortest-arc unit quaternion turning the direction of `from` into the direction of `to`:
+/// the rotation by the angle between them about from x to. Any non-zero finite lengths (scaled by
+/// powers of two, exactly, where the products would overflow or underflow; float is computed in
+/// double, where none does); within 4 eps of the exact rotation also where the two are nearly
+/// parallel or opposite. Exactly opposite directions give the half turn about normalize(from x e),
+/// e the coordinate axis of from's smallest |component| (first of x, y, z on ties): (1, 0, 0) to
+/// (-1, 0, 0) turns about z. A zero or non-finite input gives NaN in every component;
+/// try_rotation_between checks instead.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_between(const vec3<T>& from,
+                                                       const vec3<T>& to) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        return detail::rotation_between_float(from, to);
+    } else {
+        if (detail::in_product_range(dot(from, from)) && detail::in_product_range(dot(to, to)))
+            return detail::rotation_between_in_range(from, to);
+        if (!detail::has_direction(from) || !detail::has_direction(to)) {
+            const T nan = std::numeric_limits<T>::quiet_NaN();
+            return {nan, nan, nan, nan};
+        }
+        return detail::rotation_between_in_range(detail::scaled_by_power_of_two(from),
+                                                 detail::scaled_by_power_of_two(to));
+    }
+}
+
+/// rotation_between(from, to), or std::nullopt when either vector is zero or has a NaN or
+/// infinite component.
+template <class T>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_rotation_between(
+    const vec3<T>& from, const vec3<T>& to) noexcept {
+    if (!detail::has_direction(from) || !detail::has_direction(to)) return std::nullopt;
+    return rotation_between(from, to);
+}
+
+/// The orientation of a camera looking along `forward` with `up` above it, in OpenGL's convention
+/// (the camera looks down its -z axis, y up, x right): the unit quaternion R with R (0, 0, -1)
+/// along forward, R (0, 1, 0) in the half-plane of up beside forward, R (1, 0, 0) along
+/// forward x up; glm::quatLookAtRH(normalize(forward), up) is the same rotation. Any non-zero
+/// finite lengths. Where up is parallel to forward (|forward x up| <= eps |forward| |up|, angle
+/// below eps) the result is rotation_between((0, 0, -1), forward). A zero or non-finite input
+/// gives NaN in every component; try_look_rotation checks instead. Other conventions (Unity's
+/// +z forward, aerospace x forward and z down) are one fixed product away: docs/conventions.md.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> look_rotation(const vec3<T>& forward,
+                                                    const vec3<T>& up) noexcept {
+    const detail::look_result<T> r = detail::look_rotation_checked(forward, up);
+    if (r.status == detail::look_status::ok) return r.rotation;
+    if (r.status == detail::look_status::parallel)
+        return rotation_between(vec3<T>{T(0), T(0), T(-1)}, forward);
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    return {nan, nan, nan, nan};
+}
+
+/// look_rotation(forward, up), or std::nullopt when up is parallel to forward (as look_rotation
+/// decides it) or either vector is zero or has a NaN or infinite component.
+template <class T>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_look_rotation(const vec3<T>& forward,
+                                                                       const vec3<T>& up) noexcept {
+    if (!detail::has_direction(forward) || !detail::has_direction(up)) return std::nullopt;
+    const detail::look_result<T> r = detail::look_rotation_checked(forward, up);
+    if (r.status != detail::look_status::ok) return std::nullopt;
+    return r.rotation;
+}
+
+}  // namespace quat
+
+#endif  // QUAT_ALIGN_HPP_INCLUDED
+// ---- end quat/align.hpp ----
+// ---- begin quat/align_vectors.hpp ----
+// Wahba's problem: the rotation that best aligns one set of vectors with another, as scipy's
+// Rotation.align_vectors finds it, with the residual and scipy's sensitivity matrix.
+#ifndef QUAT_ALIGN_VECTORS_HPP_INCLUDED
+#define QUAT_ALIGN_VECTORS_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+// ---- begin quat/detail/containers.hpp ----
+// The arrays quat's functions over many elements accept: any contiguous container or view with
+// data() and size() members (std::vector, std::array, std::span), and C arrays.
+#ifndef QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+#define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+
+#include <cstddef>
+
+namespace quat::detail {
+
+// std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
+// translation unit that includes quat.hpp: half its compile time.
+template <class Container>
+[[nodiscard]] constexpr auto data_of(Container& c) noexcept -> decltype(c.data()) {
+    return c.data();
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr T* data_of(T (&array)[N]) noexcept {
+    return array;
+}
+template <class Container>
+[[nodiscard]] constexpr auto size_of(const Container& c) noexcept -> decltype(c.size()) {
+    return c.size();
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
+    return N;
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+// ---- end quat/detail/containers.hpp ----
+// ---- begin quat/detail/symmetric_eigen.hpp ----
+// Eigenvalues and eigenvectors of a symmetric 4x4 matrix: the one solver behind nearest_rotation,
+// align_vectors and mean, whose answers are eigenvectors of such a matrix read as quaternions.
+#ifndef QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+#define QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+
+
+namespace quat::detail {
+
+// align_vectors and mean sum their matrices over the input in blocks of this many elements, each
+// block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
+// number of blocks instead of with the count.
+inline constexpr std::size_t summation_block = 256;
+
+// Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
+// sweeps), each with its unit eigenvector; components w, x, y, z are rows 0 to 3 of the matrix.
+template <class T>
+struct symmetric_eigen4 {
+    T values[4];
+    quaternion<T> vectors[4];
+};
+
+// Cyclic Jacobi rotations (Golub & Van Loan, Matrix Computations, 8.5): unconditionally
+// convergent, quadratically at the end, a handful of sweeps for a 4x4; each eigenvalue comes out
+// within a few eps of the matrix's norm. Expects finite elements of moderate size (callers scale
+// so the largest is about 1: the sums of squares below would overflow near sqrt(max)); a
+// non-finite element gives NaN values and vectors.
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    T k[4][4] = {};
+    for (int p = 0; p < 4; ++p)
+        for (int q = 0; q < 4; ++q) {
+            if (!detail::is_finite(matrix[p][q]))
+                return {{nan, nan, nan, nan},
+                        {{nan, nan, nan, nan},
+                         {nan, nan, nan, nan},
+                         {nan, nan, nan, nan},
+                         {nan, nan, nan, nan}}};
+            k[p][q] = matrix[p][q];
+        }
+    T v[4][4] = {{T(1), T(0), T(0), T(0)},
+                 {T(0), T(1), T(0), T(0)},
+                 {T(0), T(0), T(1), T(0)},
+                 {T(0), T(0), T(0), T(1)}};
+    for (int sweep = 0; sweep < 32; ++sweep) {
+        T off = T(0), total = T(0);
+        for (int p = 0; p < 4; ++p)
+            for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
+        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total))
+            break;
+        for (int p = 0; p < 3; ++p)
+            for (int q = p + 1; q < 4; ++q) {
+                if (k[p][q] == T(0)) continue;
+                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
+                const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
+                const T t = (theta < T(0) ? T(-1) : T(1)) /
+                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
+                const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
+                for (int r = 0; r < 4; ++r) {  // k <- k J
+                    const T kp = k[r][p], kq = k[r][q];
+                    k[r][p] = c * kp - s * kq;
+                    k[r][q] = s * kp + c * kq;
+                }
+                for (int r = 0; r < 4; ++r) {  // k <- J^T k
+                    const T kp = k[p][r], kq = k[q][r];
+                    k[p][r] = c * kp - s * kq;
+                    k[q][r] = s * kp + c * kq;
+                }
+                for (int r = 0; r < 4; ++r) {  // v <- v J: columns are the eigenvectors
+                    const T vp = v[r][p], vq = v[r][q];
+                    v[r][p] = c * vp - s * vq;
+                    v[r][q] = s * vp + c * vq;
+                }
+            }
+    }
+    // Insertion sort, descending; a strict comparison keeps equal eigenvalues in diagonal order.
+    int order[4] = {0, 1, 2, 3};
+    for (int i = 1; i < 4; ++i)
+        for (int j = i; j > 0 && k[order[j]][order[j]] > k[order[j - 1]][order[j - 1]]; --j) {
+            const int swapped = order[j];
+            order[j] = order[j - 1];
+            order[j - 1] = swapped;
+        }
+    symmetric_eigen4<T> result{};
+    for (int n = 0; n < 4; ++n) {
+        const int column = order[n];
+        result.values[n] = k[column][column];
+        result.vectors[n] = {v[0][column], v[1][column], v[2][column], v[3][column]};
+    }
+    return result;
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+// ---- end quat/detail/symmetric_eigen.hpp ----
+// ---- begin quat/nearest_rotation.hpp ----
+// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
+#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
+#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
+
+namespace quat {
+
+namespace detail {
+
+// Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
+// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique).
+template <class T>
+struct horn_solution {
+    quaternion<T> rotation;
+    T eigenvalue_gap;
+};
+
+// trace(R(q)^T m) = q^T K q for the symmetric 4x4 K below (Horn, J. Opt. Soc. Am. A 4(4), 1987;
+// Bar-Itzhack, J. Guidance 23(6), 2000), so the best q is the eigenvector of K's largest
+// eigenvalue. K is built from m / max |m(i, j)|, so its eigenvalues are relative to that element;
+// a non-finite element gives NaN.
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen4<T> horn_eigen(const rotation_matrix<T>& input) noexcept {
+    T scale = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(input(i, j)));
+    if (!(scale > T(0))) scale = T(1);  // zero matrix: every rotation is equally near
+    rotation_matrix<T> m{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m(i, j) = input(i, j) / scale;
+    const T k[4][4] = {
+        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
+        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
+        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
+        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
+    return detail::symmetric_eigen(k);
+}
+
+template <class T>
+[[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& input) noexcept {
+    const symmetric_eigen4<T> eigen = detail::horn_eigen(input);
+    const quaternion<T>& q = eigen.vectors[0];
+    return {normalize(q.w < T(0) ? -q : q), eigen.values[0] - eigen.values[1]};
+}
+
+}  // namespace detail
+
+/// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
+/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
+/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
+/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
+/// reports it. Non-finite m gives NaN elements.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
+    return to_matrix(detail::solve_horn(m).rotation);
+}
+
+/// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
+/// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
+template <class T>
+[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
+    const rotation_matrix<T>& m) noexcept {
+    const detail::horn_solution<T> result = detail::solve_horn(m);
+    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
+        return std::nullopt;
+    return to_matrix(result.rotation);
+}
+
+}  // namespace quat
+
+#endif  // QUAT_NEAREST_ROTATION_HPP_INCLUDED
+// ---- end quat/nearest_rotation.hpp ----
+
+namespace quat {
+
+/// The rotation that best aligns two sets of vectors, and how well it does (align_vectors).
+template <class T>
+struct alignment {
+    /// Unit quaternion, w >= 0, of the rotation R minimizing sum w_i |targets_i - R sources_i|^2.
+    quaternion<T> rotation;
+    /// sqrt(sum w_i |targets_i - R sources_i|^2), summed from the residuals.
+    T rssd;
+    /// False when other rotations fit as well: one pair, collinear vectors, and a few symmetric sets.
+    bool unique;
+};
+
+/// An alignment and scipy's sensitivity matrix (align_vectors_with_sensitivity).
+template <class T>
+struct alignment_with_sensitivity {
+    quaternion<T> rotation;  ///< As alignment::rotation.
+    T rssd;                  ///< As alignment::rssd.
+    bool unique;             ///< As alignment::unique.
+    /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
+    /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
+    /// for return_sensitivity=True. Not a rotation: rotation_matrix only stores it.
+    rotation_matrix<T> sensitivity;
+};
+
+namespace detail {
+
+// The T of a container of vec3<T>: declared only, for the type of its data.
+template <class T>
+T vec3_scalar(const vec3<T>*) noexcept;
+template <class Vectors>
+using vec3_scalar_t =
+    decltype(detail::vec3_scalar(detail::data_of(std::declval<const Vectors&>())));
+
+template <class T>
+struct wahba_solution {
+    alignment<T> result;
+    rotation_matrix<T> profile;  // Davenport's attitude profile matrix B = sum w_i t_i s_i^T
+    T total_weight;
+};
+
+// sum w_i t_i . (R s_i) = trace(R^T B), so R is the rotation nearest to B: the eigenvector of the
+// largest eigenvalue of Horn's (Davenport's) K of B (Davenport's q-method; Markley & Crassidis,
+// Fundamentals of Spacecraft Attitude Determination and Control, 2014, ch. 5). K's eigenvalues are
+// s0 + s1 + s2 and s0 - s1 - s2, ... for B's singular values s0 >= s1 >= |s2| (s2 < 0 when
+// det B < 0), relative to max |B(i, j)|: the optimum is unique when the gap 2 (s1 + s2) exceeds
+// sqrt(epsilon) of that.
+template <class T, class Weight>
+[[nodiscard]] constexpr wahba_solution<T> solve_wahba(const vec3<T>* targets,
+                                                      const vec3<T>* sources, std::size_t count,
+                                                      Weight weight) noexcept {
+    // Summed in blocks of summation_block pairs, each block from zero: rounding errors then grow
+    // with the block length plus the number of blocks, not with the count. For 1e6 noisy pairs in
+    // float the plain running sums put the rotation 114 eps from its long double value; blocked,
+    // 2.7 eps (double: 16.6 and 2.5 eps).
+    T b[3][3] = {}, total = T(0), lowest = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        T block[3][3] = {};
+        for (std::size_t i = start; i < end; ++i) {
+            const T w = weight(i);
+            const vec3<T> t = targets[i] * w, s = sources[i];
+            block[0][0] += t.x * s.x;
+            block[0][1] += t.x * s.y;
+            block[0][2] += t.x * s.z;
+            block[1][0] += t.y * s.x;
+            block[1][1] += t.y * s.y;
+            block[1][2] += t.y * s.z;
+            block[2][0] += t.z * s.x;
+            block[2][1] += t.z * s.y;
+            block[2][2] += t.z * s.z;
+            total += w;
+            lowest = w < lowest ? w : lowest;
+        }
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) b[r][c] += block[r][c];
+    }
+    QUAT_ASSERT(!(lowest < T(0)), "quat::align_vectors: a weight is negative");
+    const rotation_matrix<T> profile{b};
+    const symmetric_eigen4<T> eigen = detail::horn_eigen(profile);
+    const T tie = detail::sqrt(std::numeric_limits<T>::epsilon());
+    const bool unique = eigen.values[0] - eigen.values[1] > tie;  // false for NaN
+    quaternion<T> q = eigen.vectors[0];
+    if (!unique && count == 1 && eigen.values[0] > T(0)) {
+        q = rotation_between(sources[0], targets[0]);
+    } else {
+        if (!unique && detail::is_finite(eigen.values[0])) {
+            // The optimal rotations span the eigenvectors tied with the largest; of those, the one
+            // nearest the identity (the projection of 1 onto the span), which for collinear pairs
+            // is the shortest arc, as for one pair, and for B = 0 (no data) the identity. When
+            // every optimal rotation is a half turn, the projection is 0 and any of them will do.
+            quaternion<T> nearest{T(0), T(0), T(0), T(0)};
+            for (int n = 0; n < 4; ++n)
+                if (eigen.values[0] - eigen.values[n] <= tie)
+                    nearest += eigen.vectors[n] * eigen.vectors[n].w;
+            if (squared_norm(nearest) > T(0)) q = nearest;
+        }
+        q = normalize(q.w < T(0) ? -q : q);
+    }
+    // The residuals themselves: sum w (|t|^2 + |s|^2) - 2 trace(R^T B), scipy's formula, cancels
+    // down to about sqrt(epsilon) times the vectors' length when they fit exactly.
+    const rotation_matrix<T> r = to_matrix(q);
+    T squares = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        T block = T(0);
+        for (std::size_t i = start; i < end; ++i)
+            block += weight(i) * squared_norm(targets[i] - rotate(r, sources[i]));
+        squares += block;
+    }
+    return {{q, detail::sqrt(squares), unique}, profile, total};
+}
+
+// scipy's sensitivity mean(w) / zeta (kappa I + B B^T), kappa = s0 s1 + s1 s2 + s2 s0 and
+// zeta = (s0 + s1) (s1 + s2) (s2 + s0) for B's singular values signed as above, here without an
+// SVD: with lambda = s0 + s1 + s2 = trace(R^T B), kappa = (lambda^2 - |B|_F^2) / 2 and
+// zeta = lambda kappa - det B (Markley, "Attitude determination using vector observations: a fast
+// optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). B is scaled to a largest element of 1
+// first, and the scale put back at the end (sensitivity scales as 1 / |B|).
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> wahba_sensitivity(const wahba_solution<T>& solution,
+                                                             std::size_t count) noexcept {
+    T scale = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(solution.profile(i, j)));
+    if (!(scale > T(0))) scale = T(1);
+    rotation_matrix<T> b{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) b(i, j) = solution.profile(i, j) / scale;
+    const rotation_matrix<T> r = to_matrix(solution.result.rotation);
+    T lambda = T(0), frobenius = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            lambda += r(i, j) * b(i, j);
+            frobenius += b(i, j) * b(i, j);
+        }
+    const T kappa = (lambda * lambda - frobenius) / T(2);
+    const T zeta = lambda * kappa - determinant(b);
+    const T factor =
+        solution.total_weight / static_cast<T>(static_cast<double>(count)) / (scale * zeta);
+    rotation_matrix<T> sensitivity{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            sensitivity(i, j) = factor * ((i == j ? kappa : T(0)) + dot(row(b, i), row(b, j)));
+    return sensitivity;
+}
+
+}  // namespace detail
+
+/// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
+/// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
+/// reflection. targets and sources are equally long (QUAT_ASSERT) containers of vec3<T> with data()
+/// and size(), or C arrays; the vectors need not be unit, and longer ones count more, as in scipy.
+/// When the optimum is not unique (unique = false: the top two eigenvalues of Davenport's K,
+/// relative to max |B(i, j)| for B = sum targets[i] sources[i]^T, within sqrt(epsilon)), the
+/// optimal rotation nearest the identity: rotation_between(sources[0], targets[0]) for one pair,
+/// the identity for no pairs (rssd 0). A NaN or infinite component gives a NaN rotation and rssd,
+/// unique = false.
+template <class Targets, class Sources, class T = detail::vec3_scalar_t<Targets>>
+[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
+                                                   const Sources& sources) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+                "quat::align_vectors: targets and sources differ in size");
+    return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                  detail::size_of(sources), [](std::size_t) { return T(1); })
+        .result;
+}
+
+/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors):
+/// R minimizes sum weights[i] |targets[i] - R sources[i]|^2, and rssd is weighted alike. A zero
+/// weight drops its pair. Precondition: weights >= 0 (QUAT_ASSERT; unchecked, a negative weight
+/// counts against its pair, and rssd may be NaN); a NaN or infinite weight gives a NaN result.
+template <class Targets, class Sources, class Weights, class T = detail::vec3_scalar_t<Targets>>
+[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
+                                                   const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
+                    detail::size_of(weights) == detail::size_of(sources),
+                "quat::align_vectors: targets, sources and weights differ in size");
+    const auto* w = detail::data_of(weights);
+    return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                  detail::size_of(sources),
+                                  [w](std::size_t i) { return static_cast<T>(w[i]); })
+        .result;
+}
+
+/// align_vectors(targets, sources, weights) and scipy's sensitivity matrix: mean(weights) / zeta
+/// (kappa I + B B^T) with B = sum weights[i] targets[i] sources[i]^T, kappa and zeta symmetric
+/// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
+/// mean of the targets' error variances (weights inversely proportional to them), it is the
+/// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false.
+template <class Targets, class Sources, class Weights, class T = detail::vec3_scalar_t<Targets>>
+[[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    QUAT_ASSERT(
+        detail::size_of(targets) == detail::size_of(sources) &&
+            detail::size_of(weights) == detail::size_of(sources),
+        "quat::align_vectors_with_sensitivity: targets, sources and weights differ in size");
+    const auto* w = detail::data_of(weights);
+    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
+        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
+        [w](std::size_t i) { return static_cast<T>(w[i]); });
+    return {solution.result.rotation, solution.result.rssd, solution.result.unique,
+            detail::wahba_sensitivity(solution, detail::size_of(sources))};
+}
+
+}  // namespace quat
+
+#endif  // QUAT_ALIGN_VECTORS_HPP_INCLUDED
+// ---- end quat/align_vectors.hpp ----
+// ---- begin quat/batch.hpp ----
+// Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
+// many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
+// objdump), no allocation, the same results for any scalar type. The one use of intrinsics is the
+// non-temporal store of float arrays beyond 16 MiB on x86 (struct of arrays with SSE, array of
+// structs only in AVX-512 builds, where it measured faster; plain stores elsewhere).
+//
+// Arrays are passed either as pointer + count or as any contiguous container or view with data()
+// and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
+// Aliasing: an output may be exactly the input (in place) or not overlap it at all. A partial
+// overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (one pointer-range
+// check per call); with NDEBUG the values written are unspecified.
+//
+// One definition across instruction sets: the functions here are compiled differently under
+// different -m flags (vector width, the AVX-512 streaming branch), so they live in an inline
+// namespace named after the widest of AVX-512F, AVX2 and AVX the translation unit is compiled for.
+// Two translation units built with different flags then call different functions, and the linker
+// never substitutes one for the other. soa_points, a type, stays outside: it is the same everywhere.
+#ifndef QUAT_BATCH_HPP_INCLUDED
+#define QUAT_BATCH_HPP_INCLUDED
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
 // ---- begin quat/detail/streaming_store.hpp ----
 // Non-temporal stores for the batch functions: the one place quat uses x86 intrinsics.
 #ifndef QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
@@ -1186,7 +1976,8 @@ inline void stream_fence() noexcept {
 #endif  // QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
 // ---- end quat/detail/streaming_store.hpp ----
 // ---- begin quat/interpolation.hpp ----
-// Interpolation between rotations: slerp (constant angular velocity) and nlerp (cheap, normalized).
+// Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle).
 #ifndef QUAT_INTERPOLATION_HPP_INCLUDED
 #define QUAT_INTERPOLATION_HPP_INCLUDED
 
@@ -1244,6 +2035,47 @@ template <class T>
     return normalize(a + (near - a) * t);
 }
 
+/// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
+/// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
+/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly.
+/// The half angle comes from atan2(|v|, w), accurate near the identity and near a half turn.
+/// Precondition: unit q (checked in debug builds). A NaN or infinite q or t gives a non-finite
+/// result. glm::pow differs for w < 0: it keeps q's sign and so takes the longer arc.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
+                                          detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    if (t == T(1)) return p;
+    const quaternion<T> identity = quaternion<T>::identity();
+    // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
+    if (t == T(0)) return identity + (p - p);
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s = norm(u);
+    if (s == T(0) && p.w > T(0)) return detail::is_finite(t) ? identity + (p - p) : identity * t;
+    const T half = t * detail::atan2(s, p.w);
+    const vec3<T> v = u / s * detail::sin(half);
+    return {detail::cos(half), v.x, v.y, v.z};
+}
+
+/// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
+/// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
+/// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
+/// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
+/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
+/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotate_towards(
+    const quaternion<T>& from, const quaternion<T>& to,
+    detail::type_identity_t<T> max_angle) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(from) && detail::is_near_unit(to),
+                "quat::rotate_towards: from or to is not a unit quaternion");
+    const T angle = angle_between(from, to);  // NaN for non-finite from or to
+    const T step = max_angle < T(0) ? T(0) : max_angle;
+    if (angle <= step) return to;
+    return slerp(from, to, step / angle);  // step / angle is in [0, 1), or NaN
+}
+
 }  // namespace quat
 
 #endif  // QUAT_INTERPOLATION_HPP_INCLUDED
@@ -1273,25 +2105,6 @@ inline namespace isa_avx {
 #else
 inline namespace isa_baseline {
 #endif
-
-// std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
-// translation unit that includes quat.hpp: half its compile time.
-template <class Container>
-[[nodiscard]] constexpr auto data_of(Container& c) noexcept -> decltype(c.data()) {
-    return c.data();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr T* data_of(T (&array)[N]) noexcept {
-    return array;
-}
-template <class Container>
-[[nodiscard]] constexpr auto size_of(const Container& c) noexcept -> decltype(c.size()) {
-    return c.size();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
-    return N;
-}
 
 template <class T, class Input, class Output>
 using if_point_arrays = std::enable_if_t<
@@ -1643,6 +2456,14 @@ inline constexpr double pi = pi_v<double>;
 
 #endif  // QUAT_CONSTANTS_HPP_INCLUDED
 // ---- end quat/constants.hpp ----
+// ---- begin quat/continuous_euler.hpp ----
+// Continuous Euler angles: the angles of a rotation nearest to the previous frame's angles, so a
+// smooth motion gives smooth angles through +-pi and through gimbal lock.
+#ifndef QUAT_CONTINUOUS_EULER_HPP_INCLUDED
+#define QUAT_CONTINUOUS_EULER_HPP_INCLUDED
+
+#include <limits>
+
 // ---- begin quat/euler.hpp ----
 // Euler angles: the 12 axis sequences, intrinsic or extrinsic, and conversions to and from them.
 #ifndef QUAT_EULER_HPP_INCLUDED
@@ -1913,6 +2734,91 @@ struct tuple_element<I, ::quat::euler<T, S, F>> {
 
 #endif  // QUAT_EULER_HPP_INCLUDED
 // ---- end quat/euler.hpp ----
+
+namespace quat {
+
+namespace detail {
+
+// The angle equal to x modulo 2 pi that is nearest to `near`: near + (x - near) wrapped into
+// [-pi, pi] by atan2 of its sine and cosine, which needs no rounding to an integer count of turns
+// (and so works for any scalar and any magnitude); NaN or infinite input gives NaN.
+template <class T>
+[[nodiscard]] constexpr T nearest_equivalent_angle(T x, T near) noexcept {
+    const T difference = x - near;
+    return near + detail::atan2(detail::sin(difference), detail::cos(difference));
+}
+
+template <class T, sequence S, frame F>
+[[nodiscard]] constexpr euler<T, S, F> unwrapped_near(const euler<T, S, F>& e,
+                                                      const euler<T, S, F>& previous) noexcept {
+    return {nearest_equivalent_angle(e[0], previous[0]),
+            nearest_equivalent_angle(e[1], previous[1]),
+            nearest_equivalent_angle(e[2], previous[2])};
+}
+
+template <class T, sequence S, frame F>
+[[nodiscard]] constexpr T squared_distance(const euler<T, S, F>& a,
+                                           const euler<T, S, F>& b) noexcept {
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+           (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+}  // namespace detail
+
+/// Euler angles of the unit quaternion q (convention S, F) nearest to `previous`, for tracking a
+/// motion frame by frame without jumps: feed each call the previous call's result. Of the two
+/// triples of every rotation ((a, b, c) and (a + pi, pi - b, c + pi) for Tait–Bryan sequences,
+/// (a + pi, -b, c + pi) for proper Euler ones), each angle moved by whole turns to lie within pi of
+/// its previous value, the one nearer `previous` (sum of squared differences) is returned; angles
+/// are not limited to [-pi, pi], the middle one included. At or near gimbal lock, where q fixes only
+/// a + c or a - c, the third angle keeps its previous value and the first takes the rest: where
+/// extract_euler reports gimbal_lock (q does not determine the split beyond rounding, and the plain
+/// extraction's third angle of 0 is as arbitrary), and wherever else that changes the rotation by
+/// at most 2 epsilon (|middle-angle distance to the lock| times the change of the third angle). So
+/// the free angle never jumps, and the result represents q within 10 epsilon at the lock.
+/// Precondition: unit q, or any non-zero scale of it. NaN or infinite q or previous gives NaN.
+template <sequence S, frame F, class T>
+[[nodiscard]] constexpr euler<T, S, F> to_euler(const quaternion<T>& q,
+                                                const euler<T, S, F>& previous) noexcept {
+    constexpr detail::axis_triple axes = detail::axes_of(S);
+    constexpr bool proper = axes.first == axes.third;
+    const T half_turn = detail::pi<T>();
+    const euler_extraction<T, S, F> extraction = extract_euler<S, F>(q);
+    const euler<T, S, F>& e = extraction.angles;
+    const euler<T, S, F> mirror{e[0] + half_turn, proper ? -e[1] : half_turn - e[1],
+                                e[2] + half_turn};
+    const euler<T, S, F> first = detail::unwrapped_near(e, previous);
+    const euler<T, S, F> second = detail::unwrapped_near(mirror, previous);
+    euler<T, S, F> best =
+        detail::squared_distance(second, previous) < detail::squared_distance(first, previous)
+            ? second
+            : first;
+
+    // Distance of the middle angle from its lock (pi/2 modulo pi for Tait–Bryan, 0 modulo pi for
+    // proper), as the sine of that distance.
+    const T from_lock = detail::abs(proper ? detail::sin(best[1]) : detail::cos(best[1]));
+    const T third_change = previous[2] - best[2];  // within pi after unwrapping
+    if (extraction.gimbal_lock ||
+        from_lock * detail::abs(third_change) <= T(2) * std::numeric_limits<T>::epsilon()) {
+        // At the lock R depends on a + sign c only. Intrinsic R_i(a) R_j(b) R_k(c): R_j(b) turns
+        // e_k into sin(b) parity e_i (Tait–Bryan) or cos(b) e_i (proper, k = i), so sign is the
+        // sign of that factor; extrinsic R_k(c) R_j(b) R_i(a) puts R_j(b)^T e_k there instead,
+        // which flips the Tait–Bryan sign.
+        const T parity = (axes.second - axes.first + 3) % 3 == 1 ? T(1) : T(-1);
+        const T factor = proper ? detail::cos(best[1])
+                                : (F == frame::intrinsic ? parity : -parity) * detail::sin(best[1]);
+        const T sign = factor < T(0) ? T(-1) : T(1);
+        best[0] =
+            detail::nearest_equivalent_angle(best[0] + sign * (best[2] - previous[2]), previous[0]);
+        best[2] = previous[2];
+    }
+    return best;
+}
+
+}  // namespace quat
+
+#endif  // QUAT_CONTINUOUS_EULER_HPP_INCLUDED
+// ---- end quat/continuous_euler.hpp ----
 // ---- begin quat/fast_slerp.hpp ----
 // Approximate slerp without trigonometry: a short polynomial in cos(angle), after Eberly 2011,
 // "A fast and accurate algorithm for computing SLERP" (J. Graphics, GPU, and Game Tools 15(3)).
@@ -1984,121 +2890,369 @@ template <class T>
 
 #endif  // QUAT_FAST_SLERP_HPP_INCLUDED
 // ---- end quat/fast_slerp.hpp ----
-// ---- begin quat/nearest_rotation.hpp ----
-// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
-#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
-#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
-
-#include <optional>
+// ---- begin quat/kinematics.hpp ----
+// Angular velocity between two orientations, and integrating an angular velocity over a time step.
+#ifndef QUAT_KINEMATICS_HPP_INCLUDED
+#define QUAT_KINEMATICS_HPP_INCLUDED
 
 
 namespace quat {
 
 namespace detail {
 
-// Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
-// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique).
-template <class T>
-struct horn_solution {
-    quaternion<T> rotation;
-    T eigenvalue_gap;
-};
-
-// trace(R(q)^T m) = q^T K q for the symmetric 4x4 K below (Horn, J. Opt. Soc. Am. A 4(4), 1987;
-// Bar-Itzhack, J. Guidance 23(6), 2000), so the best q is the eigenvector of K's largest
-// eigenvalue. Found with cyclic Jacobi rotations (Golub & Van Loan, Matrix Computations, 8.5):
-// unconditionally convergent, quadratically at the end, a handful of sweeps for a 4x4.
-template <class T>
-[[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& input) noexcept {
-    const T nan = std::numeric_limits<T>::quiet_NaN();
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (!detail::is_finite(input(i, j))) return {{nan, nan, nan, nan}, nan};
-    T scale = T(0);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(input(i, j)));
-    if (!(scale > T(0))) scale = T(1);  // zero matrix: every rotation is equally near
-    rotation_matrix<T> m{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) m(i, j) = input(i, j) / scale;
-
-    T k[4][4] = {
-        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
-        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
-        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
-        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
-    T v[4][4] = {{T(1), T(0), T(0), T(0)},
-                 {T(0), T(1), T(0), T(0)},
-                 {T(0), T(0), T(1), T(0)},
-                 {T(0), T(0), T(0), T(1)}};
-    for (int sweep = 0; sweep < 32; ++sweep) {
-        T off = T(0), total = T(0);
-        for (int p = 0; p < 4; ++p)
-            for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
-        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total))
-            break;
-        for (int p = 0; p < 3; ++p)
-            for (int q = p + 1; q < 4; ++q) {
-                if (k[p][q] == T(0)) continue;
-                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
-                const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
-                const T t = (theta < T(0) ? T(-1) : T(1)) /
-                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
-                const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
-                for (int r = 0; r < 4; ++r) {  // k <- k J
-                    const T kp = k[r][p], kq = k[r][q];
-                    k[r][p] = c * kp - s * kq;
-                    k[r][q] = s * kp + c * kq;
-                }
-                for (int r = 0; r < 4; ++r) {  // k <- J^T k
-                    const T kp = k[p][r], kq = k[q][r];
-                    k[p][r] = c * kp - s * kq;
-                    k[q][r] = s * kp + c * kq;
-                }
-                for (int r = 0; r < 4; ++r) {  // v <- v J: columns are the eigenvectors
-                    const T vp = v[r][p], vq = v[r][q];
-                    v[r][p] = c * vp - s * vq;
-                    v[r][q] = s * vp + c * vq;
-                }
-            }
-    }
-    int best = 0;
-    for (int n = 1; n < 4; ++n)
-        if (k[n][n] > k[best][best]) best = n;
-    T second = -std::numeric_limits<T>::infinity();
-    for (int n = 0; n < 4; ++n)
-        if (n != best && k[n][n] > second) second = k[n][n];
-    const quaternion<T> q{v[0][best], v[1][best], v[2][best], v[3][best]};
-    return {normalize(q.w < T(0) ? -q : q), k[best][best] - second};
+/// The relative rotation q0* q1 (Body) or q1 q0* (not Body), with q1's sign taken nearer q0. Its
+/// vector part comes from q1 - q0 in place of q1: q0* q0 = |q0|^2 is real, so the vector parts
+/// agree exactly, but q1 - q0 is formed with one relative rounding per component, and the products
+/// then round relative to the small result instead of leaving a difference of nearly equal
+/// products (an absolute error of eps, a relative one of eps / angle, for q0 close to q1).
+template <bool Body, class T>
+[[nodiscard]] constexpr quaternion<T> relative_rotation(const quaternion<T>& q0,
+                                                        const quaternion<T>& q1) noexcept {
+    const quaternion<T> near = dot(q0, q1) < T(0) ? -q1 : q1;
+    const quaternion<T> step = near - q0;
+    const quaternion<T> v = Body ? conjugate(q0) * step : step * conjugate(q0);
+    return {dot(q0, near), v.x, v.y, v.z};
 }
 
 }  // namespace detail
 
-/// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
-/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
-/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
-/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
-/// reports it. Non-finite m gives NaN elements.
+/// Body-frame angular velocity (a gyroscope's reading, radians per unit of dt) that turns unit q0
+/// into unit q1 in time dt at a constant rate: integrate_body(q0, omega, dt) == q1 as rotations,
+/// along the shorter arc (q1 and -q1 give the same omega, |omega dt| <= pi). Relative error of a
+/// few eps even for tiny turns (|omega dt| = 1e-12). Preconditions: unit q0 and q1 (debug-checked)
+/// and dt != 0; a negative dt gives the omega that satisfies the same relation, dt == 0 gives
+/// infinite or NaN components, an infinite dt the limit 0, and any other NaN or infinite input NaN.
 template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
-    return to_matrix(detail::solve_horn(m).rotation);
+[[nodiscard]] constexpr vec3<T> body_angular_velocity(const quaternion<T>& q0,
+                                                      const quaternion<T>& q1,
+                                                      detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
+                "quat::body_angular_velocity: q0 or q1 is not a unit quaternion");
+    return to_rotation_vector(detail::relative_rotation<true>(q0, q1)) / dt;
 }
 
-/// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
-/// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
+/// World-frame (space-fixed axes) angular velocity that turns unit q0 into unit q1 in time dt:
+/// integrate_world(q0, omega, dt) == q1 as rotations; equal to rotate(q0, body_angular_velocity).
+/// Shorter arc, accuracy, preconditions and out-of-domain results as for body_angular_velocity.
 template <class T>
-[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
-    const rotation_matrix<T>& m) noexcept {
-    const detail::horn_solution<T> result = detail::solve_horn(m);
-    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
-        return std::nullopt;
-    return to_matrix(result.rotation);
+[[nodiscard]] constexpr vec3<T> world_angular_velocity(const quaternion<T>& q0,
+                                                       const quaternion<T>& q1,
+                                                       detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
+                "quat::world_angular_velocity: q0 or q1 is not a unit quaternion");
+    return to_rotation_vector(detail::relative_rotation<false>(q0, q1)) / dt;
+}
+
+/// Orientation after turning unit q0 at the constant body-frame angular velocity omega (radians per
+/// unit of dt, body axes) for dt: q0 * from_rotation_vector(omega * dt), exact for any |omega dt|.
+/// Not renormalized: |q| drifts by a few eps per step, so renormalize a long chain of steps every
+/// few dozen (see tests/test_drift.cpp). NaN or infinite input gives NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> integrate_body(const quaternion<T>& q0, const vec3<T>& omega,
+                                                     detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_body: q0 is not a unit quaternion");
+    return q0 * from_rotation_vector(omega * dt);
+}
+
+/// Orientation after turning unit q0 at the constant world-frame angular velocity omega for dt:
+/// from_rotation_vector(omega * dt) * q0. Renormalization and bad input as for integrate_body.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> integrate_world(const quaternion<T>& q0, const vec3<T>& omega,
+                                                      detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_world: q0 is not a unit quaternion");
+    return from_rotation_vector(omega * dt) * q0;
 }
 
 }  // namespace quat
 
-#endif  // QUAT_NEAREST_ROTATION_HPP_INCLUDED
-// ---- end quat/nearest_rotation.hpp ----
+#endif  // QUAT_KINEMATICS_HPP_INCLUDED
+// ---- end quat/kinematics.hpp ----
+// ---- begin quat/mean.hpp ----
+// The average of many rotations: the chordal L2 mean, as scipy's Rotation.mean computes it.
+#ifndef QUAT_MEAN_HPP_INCLUDED
+#define QUAT_MEAN_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <utility>
+
+
+namespace quat {
+
+namespace detail {
+
+// The T of a container of quaternion<T>: declared only, for the type of its data.
+template <class T>
+T quaternion_scalar(const quaternion<T>*) noexcept;
+template <class Rotations>
+using quaternion_scalar_t =
+    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
+
+// The rotation matrices' mean M minimizing sum w_i |M - R_i|_F^2 has the quaternion of the largest
+// eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
+// J. Guidance 30(4), 2007): |M - R_i|_F^2 = 8 - 8 (q . q_i)^2 for unit quaternions, so the sign of
+// each q_i drops out. K is divided by its trace sum w_i, making the eigenvalues fractions of the
+// total weight. `weight(i)` gives w_i; `valid` is false for no rotations, a weight below zero or a
+// non-positive or non-finite total (a NaN or infinite component gives NaN eigenvalues).
+template <class T>
+struct mean_solution {
+    symmetric_eigen4<T> eigen;
+    bool valid;
+};
+
+template <class T, class Weight>
+[[nodiscard]] constexpr mean_solution<T> solve_mean(const quaternion<T>* rotations,
+                                                    std::size_t count, Weight weight) noexcept {
+    // Blocked sums (see summation_block): for 1e6 rotations in float the plain running sums put
+    // the mean 327 eps from its long double value, the blocked ones 0.8 eps (double: 145, 7.6).
+    T sum[10] = {}, lowest = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        T ww = T(0), wx = T(0), wy = T(0), wz = T(0), xx = T(0), xy = T(0), xz = T(0), yy = T(0),
+          yz = T(0), zz = T(0);
+        for (std::size_t i = start; i < end; ++i) {
+            const quaternion<T>& q = rotations[i];
+            QUAT_ASSERT(detail::is_near_unit(q), "quat::mean: a rotation is not a unit quaternion");
+            const T w = weight(i);
+            lowest = w < lowest ? w : lowest;
+            const T a = w * q.w, b = w * q.x, c = w * q.y;
+            ww += a * q.w;
+            wx += a * q.x;
+            wy += a * q.y;
+            wz += a * q.z;
+            xx += b * q.x;
+            xy += b * q.y;
+            xz += b * q.z;
+            yy += c * q.y;
+            yz += c * q.z;
+            zz += w * q.z * q.z;
+        }
+        const T block[10] = {ww, wx, wy, wz, xx, xy, xz, yy, yz, zz};
+        for (int n = 0; n < 10; ++n) sum[n] += block[n];
+    }
+    const T ww = sum[0], wx = sum[1], wy = sum[2], wz = sum[3], xx = sum[4], xy = sum[5],
+            xz = sum[6], yy = sum[7], yz = sum[8], zz = sum[9];
+    QUAT_ASSERT(!(lowest < T(0)), "quat::mean: a weight is negative");
+    const T trace = ww + xx + yy + zz;
+    const bool valid = count > 0 && !(lowest < T(0)) && trace > T(0) && detail::is_finite(trace);
+    const T s = valid ? T(1) / trace : T(1);
+    const T k[4][4] = {{ww * s, wx * s, wy * s, wz * s},
+                       {wx * s, xx * s, xy * s, xz * s},
+                       {wy * s, xy * s, yy * s, yz * s},
+                       {wz * s, xz * s, yz * s, zz * s}};
+    return {detail::symmetric_eigen(k), valid};
+}
+
+template <class T>
+[[nodiscard]] constexpr quaternion<T> mean_of(const mean_solution<T>& solution) noexcept {
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    if (!solution.valid) return {nan, nan, nan, nan};
+    const quaternion<T>& q = solution.eigen.vectors[0];
+    return normalize(q.w < T(0) ? -q : q);
+}
+
+// The mean, or nothing when solve_mean found the input invalid or the top two eigenvalues of the
+// normalized K lie within sqrt(epsilon) of each other (NaN fails the comparison too).
+template <class T>
+[[nodiscard]] constexpr std::optional<quaternion<T>> unique_mean_of(
+    const mean_solution<T>& solution) noexcept {
+    const T gap = solution.eigen.values[0] - solution.eigen.values[1];
+    if (!solution.valid || !(gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
+        return std::nullopt;
+    return mean_of(solution);
+}
+
+}  // namespace detail
+
+/// The chordal L2 mean of unit quaternions (a contiguous container of quaternion<T> with data() and
+/// size(), or a C array): the rotation M minimizing the sum of |M - R_i|^2 over the rotation
+/// matrices, as scipy's Rotation.mean. Insensitive to the signs of the inputs; the result has
+/// w >= 0. Where the mean is not unique (try_mean reports it), one of the minimizers. NaN for an empty
+/// container or a NaN or infinite component. Debug builds check that each input is a unit
+/// quaternion.
+template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+[[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations) noexcept {
+    return detail::mean_of(detail::solve_mean(
+        detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
+}
+
+/// The weighted chordal L2 mean: M minimizing the sum of weights[i] |M - R_i|^2. weights is a
+/// container of scalars convertible to T, as long as rotations (QUAT_ASSERT); a zero weight drops
+/// that rotation. Precondition: weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is
+/// positive, or a weight is negative, NaN or infinite.
+template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+[[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations,
+                                           const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
+                "quat::mean: weights and rotations differ in size");
+    const auto* w = detail::data_of(weights);
+    return detail::mean_of(detail::solve_mean(detail::data_of(rotations),
+                                              detail::size_of(rotations),
+                                              [w](std::size_t i) { return static_cast<T>(w[i]); }));
+}
+
+/// mean(rotations), or std::nullopt when the container is empty, a component is NaN or infinite,
+/// or the mean is not unique: the two largest eigenvalues of sum q_i q_i^T differ by at most
+/// sqrt(epsilon) times the number of rotations (two rotations half a turn apart, for one).
+template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations) noexcept {
+    return detail::unique_mean_of(detail::solve_mean(
+        detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
+}
+
+/// mean(rotations, weights), or std::nullopt when no weight is positive, a weight is negative,
+/// NaN or infinite, a component is NaN or infinite, or the mean is not unique: the two largest
+/// eigenvalues of sum w_i q_i q_i^T differ by at most sqrt(epsilon) times the sum of the weights.
+/// Precondition: weights as long as rotations (QUAT_ASSERT).
+template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+[[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations,
+                                                              const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
+                "quat::try_mean: weights and rotations differ in size");
+    const auto* w = detail::data_of(weights);
+    const std::size_t count = detail::size_of(rotations);
+    for (std::size_t i = 0; i < count; ++i)  // before solve_mean, whose debug check would fire
+        if (!(static_cast<T>(w[i]) >= T(0))) return std::nullopt;
+    return detail::unique_mean_of(detail::solve_mean(
+        detail::data_of(rotations), count, [w](std::size_t i) { return static_cast<T>(w[i]); }));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_MEAN_HPP_INCLUDED
+// ---- end quat/mean.hpp ----
+// ---- begin quat/random.hpp ----
+// Uniformly distributed random rotations from any standard random bit generator.
+#ifndef QUAT_RANDOM_HPP_INCLUDED
+#define QUAT_RANDOM_HPP_INCLUDED
+
+#include <limits>
+#include <type_traits>
+
+
+namespace quat {
+
+namespace detail {
+
+/// A uniform number in [0, 1) from generator's bits, as std::generate_canonical defines it (enough
+/// calls for T's digits, combined in base max - min + 1) without <random>, which would double the
+/// parse time of quat.hpp; a rounding up to 1 (LWG 2524) moves to the largest value below 1.
+template <class T, class Generator>
+[[nodiscard]] T uniform_unit_interval(Generator& generator) noexcept(noexcept(generator())) {
+    constexpr long double range =
+        static_cast<long double>(Generator::max() - Generator::min()) + 1.0L;
+    // The fewest calls k with range^k >= 2^digits(T).
+    constexpr int calls = [] {
+        long double needed = 1;
+        for (int i = 0; i < std::numeric_limits<T>::digits; ++i) needed *= 2;
+        int k = 1;
+        for (long double reach = range; reach < needed; reach *= range) ++k;
+        return k;
+    }();
+    T sum = T(0), scale = T(1);
+    for (int i = 0; i < calls; ++i) {
+        sum += static_cast<T>(generator() - Generator::min()) * scale;
+        scale *= static_cast<T>(range);
+    }
+    const T u = sum / scale;
+    return u < T(1) ? u : T(1) - std::numeric_limits<T>::epsilon() / T(2);
+}
+
+}  // namespace detail
+
+/// A unit quaternion with w >= 0 drawn uniformly over the rotations (the Haar measure: the rotation
+/// angle has density (1 - cos(angle)) / pi on [0, pi] and the rotated axes are uniform on the
+/// sphere). Shoemake's method ("Uniform random rotations", Graphics Gems III, 1992) from three
+/// uniforms, with the second circle's angle in [-pi/2, pi/2] so that w >= 0; negate with
+/// probability 1/2 for a uniform point of the unit 3-sphere. `generator` is any
+/// UniformRandomBitGenerator (std::mt19937, std::mt19937_64, std::minstd_rand, ...); the result
+/// depends only on its state, and no memory is allocated. T is float, double or long double.
+template <class T, class Generator>
+[[nodiscard]] quaternion<T> random_rotation(Generator& generator) noexcept(noexcept(generator())) {
+    static_assert(std::is_floating_point_v<T>, "quat::random_rotation: T must be floating-point");
+    const T u1 = detail::uniform_unit_interval<T>(generator);
+    const T u2 = detail::uniform_unit_interval<T>(generator);
+    const T u3 = detail::uniform_unit_interval<T>(generator);
+    // (x, y) on a circle of radius sqrt(1 - u1) and (w, z) on one of radius sqrt(u1): the squared
+    // radii are uniform, which makes the point uniform on the 3-sphere.
+    const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
+    const T theta1 = T(2) * pi_v<T> * u2, theta2 = pi_v<T> * (u3 - T(0.5));
+    return {r2 * detail::cos(theta2), r1 * detail::sin(theta1), r1 * detail::cos(theta1),
+            r2 * detail::sin(theta2)};
+}
+
+}  // namespace quat
+
+#endif  // QUAT_RANDOM_HPP_INCLUDED
+// ---- end quat/random.hpp ----
+// ---- begin quat/swing_twist.hpp ----
+// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
+#ifndef QUAT_SWING_TWIST_HPP_INCLUDED
+#define QUAT_SWING_TWIST_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
+
+namespace quat {
+
+/// Result of swing_twist: q == swing * twist as rotations (the twist applied first), twist a
+/// rotation about the given axis, swing a rotation about an axis perpendicular to it.
+template <class T>
+struct swing_twist_parts {
+    quaternion<T> swing;  ///< The rotation about an axis perpendicular to the given axis.
+    quaternion<T> twist;  ///< The rotation about the given axis.
+};
+
+namespace detail {
+
+/// swing_twist for a unit axis, or std::nullopt where the twist is undefined.
+template <class T>
+[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist_unit(
+    const quaternion<T>& q, const vec3<T>& unit_axis) noexcept {
+    const T along = dot(vec3<T>{q.x, q.y, q.z}, unit_axis);
+    const T eps = std::numeric_limits<T>::epsilon();
+    if (q.w * q.w + along * along <= eps * eps) return std::nullopt;  // NaN goes on, to NaN parts
+    const vec3<T> v = unit_axis * along;
+    const quaternion<T> twist = normalize(quaternion<T>{q.w, v.x, v.y, v.z});
+    return swing_twist_parts<T>{q * conjugate(twist), twist};
+}
+
+}  // namespace detail
+
+/// Splits the unit rotation q into swing * twist (twist applied first): twist =
+/// normalize(w, (v . a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis
+/// perpendicular to a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of
+/// Unreal's FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the
+/// twist is undefined) the twist is the identity and the swing is q. Preconditions: unit q and a
+/// non-zero finite axis of any length (NaN results otherwise); try_swing_twist checks them.
+template <class T>
+[[nodiscard]] constexpr swing_twist_parts<T> swing_twist(const quaternion<T>& q,
+                                                         const vec3<T>& axis) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::swing_twist: q is not a unit quaternion");
+    return detail::try_swing_twist_unit(q, normalize(axis))
+        .value_or(swing_twist_parts<T>{q, quaternion<T>::identity()});
+}
+
+/// swing_twist(q, axis), or std::nullopt where the twist is undefined (w^2 + (v . a)^2 <=
+/// epsilon^2) and when the axis is zero or q or the axis has a NaN or infinite component.
+/// Precondition: unit q.
+template <class T>
+[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
+    const quaternion<T>& q, const vec3<T>& axis) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::try_swing_twist: q is not a unit quaternion");
+    const std::optional<vec3<T>> unit_axis = try_normalize(axis);
+    if (!unit_axis || !detail::is_finite(q.w) || !detail::is_finite(q.x) ||
+        !detail::is_finite(q.y) || !detail::is_finite(q.z))
+        return std::nullopt;
+    return detail::try_swing_twist_unit(q, *unit_axis);
+}
+
+}  // namespace quat
+
+#endif  // QUAT_SWING_TWIST_HPP_INCLUDED
+// ---- end quat/swing_twist.hpp ----
 
 #endif  // QUAT_QUAT_HPP_INCLUDED
 // ---- end quat/quat.hpp ----

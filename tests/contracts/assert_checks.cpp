@@ -43,6 +43,15 @@ int valid() {
     std::vector<double> x(64, 1), y(64, 2), z(64, 3);
     quat::rotate(unit, quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
                  quat::soa_points<double>{x.data(), y.data(), z.data(), 64});  // each in place
+    const quatd turned = quat::rotation_y(0.3) * drifted;
+    sink = sink + quat::pow(drifted, 0.3).w + quat::rotate_towards(drifted, turned, 0.1).w;
+    sink = sink + quat::body_angular_velocity(drifted, turned, 0.1).x +
+           quat::world_angular_velocity(drifted, turned, 0.1).x;
+    sink =
+        sink + quat::integrate_body(drifted, v, 0.1).w + quat::integrate_world(drifted, v, 0.1).w;
+    sink =
+        sink + quat::swing_twist(drifted, v).twist.w + quat::try_swing_twist(drifted, v)->swing.w;
+    sink = sink + quat::mean(std::vector<quatd>{drifted, turned}, std::vector<double>{0, 2}).w;
     std::vector<double> t(32, 0.25);
     std::vector<quatd> slerped(32);
     quat::slerp(unit, quatd::identity(), t, slerped);
@@ -62,6 +71,30 @@ int run(const char* name) {
     if (std::strcmp(name, "slerp") == 0) sink = quat::slerp(quatd::identity(), not_unit, 0.5).w;
     if (std::strcmp(name, "axis_angle") == 0)
         sink = quat::to_quaternion(quat::axis_angle<double>{{0, 0, 2}, 1}).w;
+    if (std::strcmp(name, "pow") == 0) sink = quat::pow(not_unit, 0.5).w;
+    if (std::strcmp(name, "rotate_towards") == 0)
+        sink = quat::rotate_towards(quatd::identity(), not_unit, 0.1).w;
+    if (std::strcmp(name, "body_angular_velocity") == 0)
+        sink = quat::body_angular_velocity(not_unit, quatd::identity(), 0.1).x;
+    if (std::strcmp(name, "world_angular_velocity") == 0)
+        sink = quat::world_angular_velocity(quatd::identity(), not_unit, 0.1).x;
+    if (std::strcmp(name, "integrate_body") == 0) sink = quat::integrate_body(not_unit, v, 0.1).w;
+    if (std::strcmp(name, "integrate_world") == 0) sink = quat::integrate_world(not_unit, v, 0.1).w;
+    if (std::strcmp(name, "swing_twist") == 0) sink = quat::swing_twist(not_unit, v).twist.w;
+    if (std::strcmp(name, "try_swing_twist") == 0)
+        sink = quat::try_swing_twist(not_unit, v).has_value() ? 1 : 0;
+    const std::vector<quatd> cluster{quatd::identity(), quat::rotation_x(0.5)};
+    if (std::strcmp(name, "mean") == 0)
+        sink = quat::mean(std::vector<quatd>{quatd::identity(), not_unit}).w;
+    if (std::strcmp(name, "mean_negative_weight") == 0)
+        sink = quat::mean(cluster, std::vector<double>{1, -1}).w;
+    if (std::strcmp(name, "mean_weights_size") == 0)
+        sink = quat::mean(cluster, std::vector<double>{1}).w;
+    const std::vector<vec3<double>> pair{v, {0, 0, 1}};
+    if (std::strcmp(name, "align_vectors_size") == 0)
+        sink = quat::align_vectors(pair, std::vector<vec3<double>>{v}).rssd;
+    if (std::strcmp(name, "align_vectors_negative_weight") == 0)
+        sink = quat::align_vectors(pair, pair, std::vector<double>{1, -1}).rssd;
     if (std::strcmp(name, "euler_index") == 0) {
         const quat::euler<double> e{0.1, 0.2, 0.3};
         sink = e[static_cast<std::size_t>(3 + sink)];

@@ -252,6 +252,72 @@ template <class T>
     return a < b ? b : a;
 }
 
+namespace compile_time {
+
+/// a b as high + low exactly (Dekker's product with Veltkamp's split, no fma), usable in constant
+/// evaluation. Precondition: |a| and |b| far enough below max() that the split does not overflow.
+template <class T>
+struct exact_product {
+    T high, low;
+};
+template <class T>
+[[nodiscard]] constexpr T split_high(T a) noexcept {
+    constexpr T factor = T((1ULL << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
+    const T scaled = factor * a;
+    return scaled - (scaled - a);
+}
+template <class T>
+[[nodiscard]] constexpr exact_product<T> two_product(T a, T b) noexcept {
+    const T p = a * b;
+    const T a_high = split_high(a), a_low = a - a_high;
+    const T b_high = split_high(b), b_low = b - b_high;
+    return {p, ((a_high * b_high - p) + a_high * b_low + a_low * b_high) + a_low * b_low};
+}
+
+}  // namespace compile_time
+
+/// True where std::fma is a fused instruction rather than a library call (FP_FAST_FMA and
+/// FP_FAST_FMAL from <cmath>, defined by compilers that target FMA hardware, e.g. -march=haswell).
+template <class T>
+inline constexpr bool fast_fma =
+#if defined(FP_FAST_FMA)
+    std::is_same_v<T, double> ||
+#endif
+#if defined(FP_FAST_FMAL)
+    std::is_same_v<T, long double> ||
+#endif
+    false;
+
+/// a b - c d without the cancellation of the naive formula, within 2 units of roundoff of the exact
+/// value however much the products cancel. float: the products are exact in double, which rounds
+/// once, then float once more. Others, where fma is an instruction: Kahan's algorithm, w = c d
+/// rounded, e = w - c d exactly, result fma(a, b, -w) + e (Jeannerod, Louvet and Muller, "Further
+/// analysis of Kahan's algorithm for the accurate computation of 2x2 determinants", Math. Comp. 82,
+/// 2013). Elsewhere, and during constant evaluation (std::fma is not constexpr), the products are
+/// split exactly (Dekker) and the high and low parts subtracted separately. Preconditions: no
+/// product overflows or underflows, |a|, |b|, |c|, |d| below max() / 2^33. A user scalar gets the
+/// plain a b - c d.
+template <class T>
+[[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        return static_cast<float>(static_cast<double>(a) * static_cast<double>(b) -
+                                  static_cast<double>(c) * static_cast<double>(d));
+    } else if constexpr (std::is_floating_point_v<T>) {
+        if constexpr (fast_fma<T>) {
+            if (!constant_evaluated()) {
+                const T w = c * d;
+                const T e = std::fma(-c, d, w);
+                return std::fma(a, b, -w) + e;
+            }
+        }
+        const compile_time::exact_product<T> ab = compile_time::two_product(a, b);
+        const compile_time::exact_product<T> cd = compile_time::two_product(c, d);
+        return (ab.high - cd.high) + (ab.low - cd.low);
+    } else {
+        return a * b - c * d;
+    }
+}
+
 }  // namespace quat::detail
 
 #endif  // QUAT_DETAIL_MATH_HPP_INCLUDED
