@@ -205,6 +205,9 @@ void register_rotate();
 void register_compose();
 void register_conversions();
 void register_interpolation();
+void register_motion();      // bench_motion.cpp
+void register_align();       // bench_align.cpp
+void register_estimation();  // bench_estimation.cpp
 
 /// `quat_bench --counts`: the operation-count tables.
 int print_counts();

@@ -183,6 +183,9 @@ int main(int argc, char** argv) {
     bench::register_compose();
     bench::register_conversions();
     bench::register_interpolation();
+    bench::register_motion();
+    bench::register_align();
+    bench::register_estimation();
     if (!table) {
         benchmark::RunSpecifiedBenchmarks();
     } else {

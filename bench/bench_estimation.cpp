@@ -1,0 +1,161 @@
+// align_vectors (Wahba's problem) and mean over n inputs, beside the two costs they cannot avoid:
+// reading the input once (read_input: only the sums B = sum w t s^T, or sum q q^T for mean) and
+// one 4x4 symmetric eigen-solve (eigen_solve). The target: align_vectors and mean within
+// 2x of read_input + eigen_solve.
+#include <cstddef>
+#include <vector>
+
+#include <quat/align_vectors.hpp>
+#include <quat/mean.hpp>
+
+#include "common.hpp"
+
+namespace bench {
+namespace {
+
+constexpr std::size_t pool = 256;
+
+template <class T>
+struct vector_set {
+    std::vector<quat::vec3<T>> targets, sources;
+    std::vector<T> weights;
+};
+
+// Noisy pairs t = R s + e with random weights: what align_vectors is given in practice.
+template <class T>
+vector_set<T> make_vector_set(random_source& random, std::size_t n) {
+    vector_set<T> set;
+    const quat::quatd rotation = random.rotation();
+    for (std::size_t i = 0; i < n; ++i) {
+        const quat::vec3<double> s = random.vector();
+        const quat::vec3<double> e = random.vector();
+        set.sources.push_back(lib_quat<T>::make_vector(s));
+        set.targets.push_back(lib_quat<T>::make_vector(quat::rotate(rotation, s) + e * 0.01));
+        set.weights.push_back(T(random.uniform(0.5, 2)));
+    }
+    return set;
+}
+
+template <class T>
+void align_vectors(benchmark::State& state, std::size_t n) {
+    random_source random;
+    const vector_set<T> set = make_vector_set<T>(random, n);
+    for (auto _ : state) {
+        const quat::alignment<T> result =
+            quat::align_vectors(set.targets, set.sources, set.weights);
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
+}
+
+// The first of align_vectors' two passes alone, written out: nine sums of w t_i s_j.
+template <class T>
+void read_input(benchmark::State& state, std::size_t n) {
+    random_source random;
+    const vector_set<T> set = make_vector_set<T>(random, n);
+    for (auto _ : state) {
+        T b[3][3] = {};
+        for (std::size_t i = 0; i < n; ++i) {
+            const quat::vec3<T> t = set.targets[i] * set.weights[i], s = set.sources[i];
+            const T tt[3] = {t.x, t.y, t.z}, ss[3] = {s.x, s.y, s.z};
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) b[r][c] += tt[r] * ss[c];
+        }
+        benchmark::DoNotOptimize(b);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
+}
+
+// Horn's (Davenport's) K of B = R + noise, the matrices align_vectors hands to the solver.
+template <class T>
+void eigen_solve(benchmark::State& state) {
+    random_source random;
+    struct matrix4 {
+        T k[4][4];
+    };
+    std::vector<matrix4> in;
+    for (std::size_t n = 0; n < pool; ++n) {
+        quat::rotation_matrix<T> m = lib_quat<T>::make_matrix(random.rotation());
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) m(i, j) += T(random.uniform(-0.05, 0.05));
+        in.push_back({{{m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0),
+                        m(1, 0) - m(0, 1)},
+                       {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0),
+                        m(0, 2) + m(2, 0)},
+                       {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2),
+                        m(1, 2) + m(2, 1)},
+                       {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1),
+                        m(2, 2) - m(0, 0) - m(1, 1)}}});
+    }
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const quat::detail::symmetric_eigen4<T> result = quat::detail::symmetric_eigen(in[i].k);
+        benchmark::DoNotOptimize(result);
+        i = (i + 1) % pool;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+// Rotations scattered by up to about 1 rad around a center, half of them negated; with read_only,
+// only mean's pass over them (the ten sums of q q^T).
+template <class T>
+void mean(benchmark::State& state, std::size_t n, bool read_only) {
+    random_source random;
+    const quat::quatd center = random.rotation();
+    std::vector<quat::quaternion<T>> rotations;
+    for (std::size_t i = 0; i < n; ++i) {
+        const quat::vec3<double> v = random.vector();
+        const quat::quatd q = center * quat::from_rotation_vector(v * 0.5);
+        rotations.push_back(lib_quat<T>::make_quaternion(i % 2 ? -q : q));
+    }
+    for (auto _ : state) {
+        if (read_only) {
+            T ww = 0, wx = 0, wy = 0, wz = 0, xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+            for (const quat::quaternion<T>& q : rotations) {
+                ww += q.w * q.w;
+                wx += q.w * q.x;
+                wy += q.w * q.y;
+                wz += q.w * q.z;
+                xx += q.x * q.x;
+                xy += q.x * q.y;
+                xz += q.x * q.z;
+                yy += q.y * q.y;
+                yz += q.y * q.z;
+                zz += q.z * q.z;
+            }
+            const T k[10] = {ww, wx, wy, wz, xx, xy, xz, yy, yz, zz};
+            benchmark::DoNotOptimize(k);
+        } else {
+            const quat::quaternion<T> result = quat::mean(rotations);
+            benchmark::DoNotOptimize(result);
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
+}
+
+template <class T>
+void register_estimation_for() {
+    const char* type = type_name<T>;
+    for (const std::size_t n : {std::size_t(2), std::size_t(16), std::size_t(1024)}) {
+        const auto size = static_cast<long long>(n);
+        benchmark::RegisterBenchmark(name("align_vectors", "quat", "vec3", type, size).c_str(),
+                                     [n](benchmark::State& state) { align_vectors<T>(state, n); });
+        benchmark::RegisterBenchmark(
+            name("align_vectors", "read_input", "vec3", type, size).c_str(),
+            [n](benchmark::State& state) { read_input<T>(state, n); });
+    }
+    benchmark::RegisterBenchmark(name("eigen_solve", "quat", "4x4", type).c_str(), eigen_solve<T>);
+    benchmark::RegisterBenchmark(name("mean", "quat", "quaternion", type, 1024).c_str(),
+                                 [](benchmark::State& state) { mean<T>(state, 1024, false); });
+    benchmark::RegisterBenchmark(name("mean", "read_input", "quaternion", type, 1024).c_str(),
+                                 [](benchmark::State& state) { mean<T>(state, 1024, true); });
+}
+
+}  // namespace
+
+void register_estimation() {
+    register_estimation_for<float>();
+    register_estimation_for<double>();
+}
+
+}  // namespace bench
