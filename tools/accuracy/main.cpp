@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "measure_align.hpp"
 #include "measure_euler.hpp"
 #include "measure_fast_slerp.hpp"
 
@@ -30,6 +31,7 @@ constexpr double target_normalize = 1;
 constexpr double target_exp_log = 2;
 constexpr double target_rotate = 4;
 constexpr double target_rotate_direction = 4;  // issue 12: a length fix must not cost direction
+constexpr double target_align = 4;  // rotation_between and look_rotation, angle to the reference
 // Ceilings for the misses the README explains (see the section "Targets missed"):
 // Euler angles are three stored angles of magnitude up to pi, each rounded to half an ulp (1 eps in
 // float at pi); an extrapolated slerp turns by up to 2 pi, whose own rounding is 4 eps; normalize
@@ -208,6 +210,28 @@ struct runner {
         }
         rows.insert(rows.end(), direction_rows.begin(), direction_rows.end());
     }
+
+    void align() {
+        const char* unit = "eps (rotation angle, rad)";
+        const char* families[3] = {"random directions, lengths 1e-3 … 1e3",
+                                   "angle 10^-k (k = 1..15), lengths 1e-3 … 1e3",
+                                   "angle π − 10^-k (k = 1..15), lengths 1e-3 … 1e3"};
+        for (int family = 0; family < 3; ++family) {
+            rng g = fresh(9 + std::uint64_t(family));
+            const auto pairs = direction_pairs<T>(g, family, n(100000, 3000));
+            row r = make("rotation_between(a, b)", families[family], unit, target_align);
+            r.quat = measure_align(align_library::quat, pairs, false);
+            r.glm = measure_align(align_library::glm, pairs, false);
+            r.eigen = measure_align(align_library::eigen, pairs, false);
+            rows.push_back(r);
+        }
+        rng g = fresh(12);
+        const auto pairs = direction_pairs<T>(g, 0, n(100000, 3000));
+        row r = make("look_rotation(forward, up)", families[0], unit, target_align);
+        r.quat = measure_align(align_library::quat, pairs, true);
+        r.glm = measure_align(align_library::glm, pairs, true);
+        rows.push_back(r);
+    }
 };
 
 int run(const options& opt) {
@@ -228,6 +252,8 @@ int run(const options& opt) {
     d.exp_log();
     f.rotate();
     d.rotate();
+    f.align();
+    d.align();
 
     print_table(rows);
     std::printf(

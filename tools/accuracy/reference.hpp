@@ -19,6 +19,7 @@ inline real r_sin(real x) { return sinq(x); }
 inline real r_cos(real x) { return cosq(x); }
 inline real r_atan2(real y, real x) { return atan2q(y, x); }
 inline real r_abs(real x) { return x < 0 ? -x : x; }
+inline real r_fma(real a, real b, real c) { return fmaq(a, b, c); }
 inline real r_pi() { return 4 * atanq(1); }
 inline const char* reference_name() { return "__float128 (libquadmath)"; }
 #else
@@ -28,6 +29,7 @@ inline real r_sin(real x) { return std::sin(x); }
 inline real r_cos(real x) { return std::cos(x); }
 inline real r_atan2(real y, real x) { return std::atan2(y, x); }
 inline real r_abs(real x) { return std::fabs(x); }
+inline real r_fma(real a, real b, real c) { return std::fma(a, b, c); }
 inline real r_pi() { return 3.141592653589793238462643383279502884L; }
 inline const char* reference_name() { return "long double"; }
 #endif
