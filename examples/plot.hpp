@@ -98,8 +98,8 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
     double ly = c.top + 10 + c.legend_down * c.height;
     doc.polygon({{lx, ly},
                  {lx + legend_width, ly},
-                 {lx + legend_width, ly + row * curves.size() + 6},
-                 {lx, ly + row * curves.size() + 6}},
+                 {lx + legend_width, ly + row * static_cast<double>(curves.size()) + 6},
+                 {lx, ly + row * static_cast<double>(curves.size()) + 6}},
                 {"#ccc", 1.0, "white", 0.9});
     for (const series& s : curves) {
         ly += row;
