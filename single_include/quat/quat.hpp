@@ -1342,7 +1342,7 @@ template <class T>
 /// rotation_between for float, in double: there a product of two floats is exact, so the cross
 /// product keeps its digits also for nearly parallel or opposite inputs, w = |c|^2 / (m - d) avoids
 /// the cancellation of m + d, and no float length overflows or underflows (|a|^2 |b|^2 stays
-/// within 1e-180 ... 1e155). One formula and a select, no scaling, no branch to mispredict.
+/// within 1e-180 ... 1e155). One formula, no scaling.
 [[nodiscard]] constexpr quaternion<float> rotation_between_float(const vec3<float>& from,
                                                                  const vec3<float>& to) noexcept {
     const vec3<double> a{from}, b{to};
