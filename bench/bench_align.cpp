@@ -13,39 +13,21 @@
 namespace bench {
 namespace {
 
-constexpr std::size_t pool = 256;
-
-// Pairs of vectors with lengths from 0.1 to 10, in each library's vector type.
+// A pair of vectors with lengths from 0.1 to 10, in the library's vector type.
 template <class Lib>
-std::vector<std::pair<typename Lib::vector, typename Lib::vector>> vector_pairs() {
-    random_source random;
-    std::vector<std::pair<typename Lib::vector, typename Lib::vector>> in;
-    for (std::size_t i = 0; i < pool; ++i) {
-        const quat::vec3<double> a = random.vector() * random.uniform(0.1, 10);
-        const quat::vec3<double> b = random.vector() * random.uniform(0.1, 10);
-        in.emplace_back(Lib::make_vector(a), Lib::make_vector(b));
-    }
-    return in;
-}
-
-// One call per iteration, cycling through the pool.
-template <class Lib, class Operation>
-void cycle(benchmark::State& state, Operation f) {
-    const auto in = vector_pairs<Lib>();
-    std::size_t i = 0;
-    for (auto _ : state) {
-        auto out = f(in[i].first, in[i].second);
-        benchmark::DoNotOptimize(out);
-        i = (i + 1) % pool;
-    }
-    state.SetItemsProcessed(state.iterations());
+std::pair<typename Lib::vector, typename Lib::vector> vector_pair(random_source& random) {
+    const quat::vec3<double> a = random.vector() * random.uniform(0.1, 10);
+    const quat::vec3<double> b = random.vector() * random.uniform(0.1, 10);
+    return {Lib::make_vector(a), Lib::make_vector(b)};
 }
 
 template <class Lib, class Operation>
 void add(const char* operation, Operation f) {
     benchmark::RegisterBenchmark(
         name(operation, Lib::name, "vec3", type_name<typename Lib::scalar>).c_str(),
-        [f](benchmark::State& state) { cycle<Lib>(state, f); });
+        [f](benchmark::State& state) {
+            cycle(state, vector_pair<Lib>, [f](const auto& p) { return f(p.first, p.second); });
+        });
 }
 
 template <class T>

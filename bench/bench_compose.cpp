@@ -8,8 +8,6 @@
 namespace bench {
 namespace {
 
-constexpr std::size_t pool = 256;  // distinct inputs cycled through by the single-call benchmarks
-
 template <class Lib, class Rep>
 auto rotations(std::size_t n) {
     random_source random;

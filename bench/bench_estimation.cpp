@@ -13,8 +13,6 @@
 namespace bench {
 namespace {
 
-constexpr std::size_t pool = 256;
-
 template <class T>
 struct vector_set {
     std::vector<quat::vec3<T>> targets, sources;

@@ -16,23 +16,6 @@
 namespace bench {
 namespace {
 
-constexpr std::size_t pool = 256;
-
-// One call per iteration, cycling through `pool` seeded inputs made by `make`.
-template <class Make, class Operation>
-void cycle(benchmark::State& state, Make make, Operation f) {
-    random_source random;
-    std::vector<decltype(make(random))> in;
-    for (std::size_t i = 0; i < pool; ++i) in.push_back(make(random));
-    std::size_t i = 0;
-    for (auto _ : state) {
-        auto out = f(in[i]);
-        benchmark::DoNotOptimize(out);
-        i = (i + 1) % pool;
-    }
-    state.SetItemsProcessed(state.iterations());
-}
-
 template <class Make, class Operation>
 void add(const std::string& operation, const std::string& library, const char* type, Make make,
          Operation f) {

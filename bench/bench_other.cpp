@@ -7,8 +7,6 @@
 namespace bench {
 namespace {
 
-constexpr std::size_t pool = 256;
-
 struct euler_angles {
     double yaw, pitch, roll;  // R = Rz(yaw) Ry(pitch) Rx(roll), the thesis's order
 };
@@ -25,26 +23,11 @@ axis_and_angle random_axis_angle(random_source& r) {
     return {quat::normalize(v), r.uniform(0, 3.14)};
 }
 
-// One conversion per iteration, cycling through `pool` seeded inputs.
-template <class Make, class Convert>
-void convert(benchmark::State& state, Make make, Convert f) {
-    random_source random;
-    std::vector<decltype(make(random))> in;
-    for (std::size_t i = 0; i < pool; ++i) in.push_back(make(random));
-    std::size_t i = 0;
-    for (auto _ : state) {
-        auto out = f(in[i]);
-        benchmark::DoNotOptimize(out);
-        i = (i + 1) % pool;
-    }
-    state.SetItemsProcessed(state.iterations());
-}
-
 template <class Make, class Convert>
 void add_convert(const std::string& library, const std::string& direction, const char* type,
                  Make make, Convert f) {
     benchmark::RegisterBenchmark(name("convert", library, direction, type).c_str(),
-                                 [make, f](benchmark::State& state) { convert(state, make, f); });
+                                 [make, f](benchmark::State& state) { cycle(state, make, f); });
 }
 
 template <class T>

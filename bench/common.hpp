@@ -200,6 +200,25 @@ struct matrix_rep {
     }
 };
 
+/// How many distinct seeded inputs the one-call-per-iteration benchmarks cycle through.
+inline constexpr std::size_t pool = 256;
+
+/// One call of f per iteration, cycling through `pool` inputs made by make(random_source&) before
+/// timing starts; items are calls.
+template <class Make, class Operation>
+void cycle(benchmark::State& state, Make make, Operation f) {
+    random_source random;
+    std::vector<decltype(make(random))> in;
+    for (std::size_t i = 0; i < pool; ++i) in.push_back(make(random));
+    std::size_t i = 0;
+    for (auto _ : state) {
+        auto out = f(in[i]);
+        benchmark::DoNotOptimize(out);
+        i = (i + 1) % pool;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
 /// Registration entry points, one per source file; each registers float and double variants.
 void register_rotate();
 void register_compose();

@@ -11,28 +11,16 @@
 #include <quat/continuous_euler.hpp>
 
 #include "support/catch.hpp"
+#include "support/conventions.hpp"
 #include "support/random.hpp"
 
 using quat::euler;
 using quat::frame;
 using quat::quaternion;
 using quat::sequence;
+using quat::test::for_each_convention;
 
 namespace {
-
-constexpr sequence all_sequences[] = {sequence::xyz, sequence::xzy, sequence::yxz, sequence::yzx,
-                                      sequence::zxy, sequence::zyx, sequence::xyx, sequence::xzx,
-                                      sequence::yxy, sequence::yzy, sequence::zxz, sequence::zyz};
-
-template <class T, class F, std::size_t... N>
-void for_each_convention(F&& f, std::index_sequence<N...>) {
-    (f(euler<T, all_sequences[N], frame::intrinsic>{}), ...);
-    (f(euler<T, all_sequences[N], frame::extrinsic>{}), ...);
-}
-template <class T, class F>
-void for_each_convention(F&& f) {
-    for_each_convention<T>(std::forward<F>(f), std::make_index_sequence<12>{});
-}
 
 template <sequence S>
 constexpr bool is_proper = quat::detail::axes_of(S).first == quat::detail::axes_of(S).third;

@@ -6,6 +6,7 @@
 #include <quat/euler.hpp>
 
 #include "support/catch.hpp"
+#include "support/conventions.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
@@ -14,6 +15,7 @@ using quat::frame;
 using quat::quaternion;
 using quat::sequence;
 using quat::vec3;
+using quat::test::for_each_convention;
 using quat::test::tolerance;
 
 static_assert(!std::is_convertible_v<euler<double, sequence::zyx>, euler<double, sequence::xyz>>,
@@ -28,21 +30,6 @@ static_assert(std::is_constructible_v<euler<double>, euler<float>> &&
               "precisions convert explicitly only");
 
 namespace {
-
-constexpr sequence all_sequences[] = {sequence::xyz, sequence::xzy, sequence::yxz, sequence::yzx,
-                                      sequence::zxy, sequence::zyx, sequence::xyx, sequence::xzx,
-                                      sequence::yxy, sequence::yzy, sequence::zxz, sequence::zyz};
-
-// Calls f(euler<T, S, F>{}) for all 24 conventions.
-template <class T, class F, std::size_t... N>
-void for_each_convention(F&& f, std::index_sequence<N...>) {
-    (f(euler<T, all_sequences[N], frame::intrinsic>{}), ...);
-    (f(euler<T, all_sequences[N], frame::extrinsic>{}), ...);
-}
-template <class T, class F>
-void for_each_convention(F&& f) {
-    for_each_convention<T>(std::forward<F>(f), std::make_index_sequence<12>{});
-}
 
 template <class T>
 vec3<T> unit_axis(int axis) {
