@@ -77,6 +77,17 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
     CHECK(text_of(locked) == "euler_extraction{euler<yzx, intrinsic>{1, -1.5, 0}, true}");
     const euler_extraction<T, sequence::zyx, frame::extrinsic> unlocked{{T(1), T(2), T(3)}, false};
     CHECK(text_of(unlocked) == "euler_extraction{euler<zyx, extrinsic>{1, 2, 3}, false}");
+    const quat::alignment<T> fit{{T(1), T(0), T(0), T(0)}, T(0.25), true};
+    CHECK(text_of(fit) == "alignment{quaternion{1, 0, 0, 0}, 0.25, true}");
+    const quat::alignment_with_sensitivity<T> fit_with{
+        {T(0), T(1), T(0), T(0)}, T(2), false, rotation_matrix<T>::identity()};
+    CHECK(text_of(fit_with) ==
+          "alignment_with_sensitivity{quaternion{0, 1, 0, 0}, 2, false, "
+          "rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
+    const quat::swing_twist_parts<T> parts{{T(0.5), T(0.5), T(0.5), T(0.5)},
+                                           {T(1), T(0), T(0), T(0)}};
+    CHECK(text_of(parts) ==
+          "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
     // The stream's default precision is 6 significant digits, for every T alike.
     CHECK(text_of(vec3<T>{T(1) / T(3), T(2) / T(3), T(-100) / T(3)}) ==
           "vec3{0.333333, 0.666667, -33.3333}");

@@ -34,6 +34,9 @@
 //   axis_angle{vec3{0, 0, 1}, 1.5}                            axis, angle
 //   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
 //   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
+//   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
+//   alignment_with_sensitivity{quaternion{...}, 0.25, true, rotation_matrix{...}}
+//   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
 //   zyx   intrinsic                                           sequence and frame: their names
 //
 // operator<< works like std::complex's: the stream's flags, precision and locale apply to every
@@ -45,7 +48,7 @@
 // std::format("{}", component) does, the shortest text that reads back exactly (for long double,
 // as far as the library does: libc++ 19 formats it as a double). A format spec is the scalar's
 // ("{:.3f}", "{:e}", "{:+}", "{:>8}", "{:L}") and applies to each component, width included;
-// sequence and frame take a string spec ("{:>9}"). gimbal_lock is always true or false.
+// sequence and frame take a string spec ("{:>9}"). gimbal_lock and unique are always true or false.
 // quat/interop/fmt.hpp gives fmt::format the same behaviour.
 #ifndef QUAT_IO_HPP_INCLUDED
 #define QUAT_IO_HPP_INCLUDED
@@ -156,6 +159,35 @@ void write_layout(Printer& p, const euler_extraction<T, S, F>& extraction) {
     p.text("euler_extraction{");
     write_layout(p, extraction.angles);
     p.text(extraction.gimbal_lock ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const alignment<T>& a) {
+    p.text("alignment{");
+    write_layout(p, a.rotation);
+    p.text(", ");
+    p.value(a.rssd);
+    p.text(a.unique ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
+    p.text("alignment_with_sensitivity{");
+    write_layout(p, a.rotation);
+    p.text(", ");
+    p.value(a.rssd);
+    p.text(a.unique ? ", true, " : ", false, ");
+    write_layout(p, a.sensitivity);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const swing_twist_parts<T>& parts) {
+    p.text("swing_twist_parts{");
+    write_layout(p, parts.swing);
+    p.text(", ");
+    write_layout(p, parts.twist);
+    p.text("}");
 }
 
 // Writes to a stream that carries the flags, precision and locale of the user's stream.
@@ -303,6 +335,30 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, extraction);
 }
 
+/// Prints alignment{quaternion{...}, rssd, unique} with unique as true or false; stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const alignment<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}, the
+/// sensitivity matrix by rows; stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const alignment_with_sensitivity<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints swing_twist_parts{quaternion{...}, quaternion{...}}, swing then twist; stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const swing_twist_parts<T>& parts) {
+    return detail::print_to_stream(os, parts);
+}
+
 }  // namespace quat
 
 #if defined(__cpp_lib_format) && __has_include(<format>)
@@ -342,6 +398,23 @@ template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
 struct formatter<::quat::euler_extraction<T, S, F>, CharT>
     : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {
 };
+
+/// Formats alignment{quaternion{...}, rssd, unique}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::alignment<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
+
+/// Formats alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}; the
+/// spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
+                                      std::formatter<T, CharT>> {};
+
+/// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
+template <class T, class CharT>
+struct formatter<::quat::swing_twist_parts<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>

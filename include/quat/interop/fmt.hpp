@@ -52,6 +52,23 @@ struct formatter<::quat::euler_extraction<T, S, F>, Char>
     : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, fmt::formatter<T, Char>> {
 };
 
+/// Formats alignment{quaternion{...}, rssd, unique}; the spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::alignment<T>, Char>
+    : ::quat::detail::value_formatter<::quat::alignment<T>, fmt::formatter<T, Char>> {};
+
+/// Formats alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}; the
+/// spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::alignment_with_sensitivity<T>, Char>
+    : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
+                                      fmt::formatter<T, Char>> {};
+
+/// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
+template <class T, class Char>
+struct formatter<::quat::swing_twist_parts<T>, Char>
+    : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, fmt::formatter<T, Char>> {};
+
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class Char>
 struct formatter<::quat::sequence, Char>
