@@ -3,6 +3,7 @@
 // table. Exit status 1 when any of quat's targets (issue 7) is missed.
 //   quat_accuracy [--quick] [--worst] [--conventions]
 //   quat_accuracy --slerp-fast [--quick]   (slerp_fast's error in radians; exit 1 above its bound)
+//   quat_accuracy --scipy                  (align_vectors and mean against SciPy's answers)
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -11,12 +12,14 @@
 #include "measure_align.hpp"
 #include "measure_euler.hpp"
 #include "measure_fast_slerp.hpp"
+#include "measure_scipy.hpp"
 
 namespace accuracy {
 namespace {
 
 struct options {
     bool quick = false;        // few samples: the CTest run
+    bool scipy = false;        // align_vectors and mean against SciPy's reference data
     bool worst = false;        // print the input behind each row's maximum
     bool conventions = false;  // print the Euler maximum of each convention
     bool slerp_fast = false;   // measure slerp_fast instead of printing the table
@@ -237,6 +240,7 @@ struct runner {
 int run(const options& opt) {
     const std::uint64_t seed = 20240607;
     if (opt.slerp_fast) return run_fast_slerp(opt.quick, seed) > 0 ? 1 : 0;
+    if (opt.scipy) return run_scipy();
     std::vector<row> rows;
     runner<float> f{opt, rows, seed};
     runner<double> d{opt, rows, seed};
@@ -297,9 +301,12 @@ int main(int argc, char** argv) {
             opt.conventions = true;
         } else if (std::strcmp(argv[i], "--slerp-fast") == 0) {
             opt.slerp_fast = true;
+        } else if (std::strcmp(argv[i], "--scipy") == 0) {
+            opt.scipy = true;
         } else {
             std::fprintf(stderr,
-                         "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick]\n",
+                         "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick] | "
+                         "--scipy\n",
                          argv[0]);
             return 2;
         }
