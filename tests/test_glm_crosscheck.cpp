@@ -16,26 +16,21 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/quaternion.hpp>
+#include <quat/interop/glm.hpp>
 #include <quat/quat.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+using quat::from_glm;
 using quat::quaternion;
+using quat::to_glm;
 using quat::vec3;
 using quat::test::tolerance;
 
 namespace {
 
-template <class T>
-glm::qua<T> to_glm(const quaternion<T>& q) {
-    return glm::qua<T>(q.w, q.x, q.y, q.z);
-}
-template <class T>
-quaternion<T> from_glm(const glm::qua<T>& q) {
-    return {q.w, q.x, q.y, q.z};
-}
 template <class T>
 T difference(const quaternion<T>& a, const glm::qua<T>& b) {
     return quat::test::max_difference(a, from_glm(b));

@@ -7,13 +7,16 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/quaternion.hpp>
 #include <quat/conversions.hpp>
+#include <quat/interop/glm.hpp>
 #include <quat/interpolation.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+using quat::from_glm;
 using quat::quaternion;
+using quat::to_glm;
 using quat::vec3;
 using quat::test::tolerance;
 
@@ -142,15 +145,6 @@ quaternion<long double> reference_pow(const quaternion<T>& q, long double t,
     if (s == 0) return quaternion<long double>::identity();
     const long double half = t * std::atan2(s, p.w), k = std::sin(half) / s;
     return {std::cos(half), p.x * k, p.y * k, p.z * k};
-}
-
-template <class T>
-glm::qua<T> to_glm(const quaternion<T>& q) {
-    return glm::qua<T>(q.w, q.x, q.y, q.z);
-}
-template <class T>
-quaternion<T> from_glm(const glm::qua<T>& q) {
-    return {q.w, q.x, q.y, q.z};
 }
 
 }  // namespace
