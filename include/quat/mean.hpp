@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <utility>
 
 #include "config.hpp"
 #include "detail/containers.hpp"
@@ -16,13 +15,6 @@
 namespace quat {
 
 namespace detail {
-
-// The T of a container of quaternion<T>: declared only, for the type of its data.
-template <class T>
-T quaternion_scalar(const quaternion<T>*) noexcept;
-template <class Rotations>
-using quaternion_scalar_t =
-    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
 
 // The rotation matrices' mean M minimizing sum w_i |M - R_i|_F^2 has the quaternion of the largest
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",

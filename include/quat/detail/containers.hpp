@@ -4,8 +4,14 @@
 #define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 
 #include <cstddef>
+#include <utility>
 
-namespace quat::detail {
+namespace quat {
+
+template <class T>
+struct quaternion;
+
+namespace detail {
 
 // std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
 // translation unit that includes quat.hpp: half its compile time.
@@ -26,6 +32,14 @@ template <class T, std::size_t N>
     return N;
 }
 
-}  // namespace quat::detail
+// The T of a container of quaternion<T>: declared only, for the type of its data.
+template <class T>
+T quaternion_scalar(const quaternion<T>*) noexcept;
+template <class Rotations>
+using quaternion_scalar_t =
+    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
+
+}  // namespace detail
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED

@@ -1,0 +1,101 @@
+// Derivatives of the exponential map of rotation vectors: how a rotation vector's rate of change
+// turns into an angular velocity, back, and the term its second derivative adds to an angular
+// acceleration. For R(t) = R0 exp([r(t)]x) the body angular velocity is J(r) r' and the angular
+// acceleration J(r) r'' + (d/dt J(r)) r', with J the right Jacobian of SO(3),
+//     J(r) = I - (1 - cos n) / n^2 [r]x + (n - sin n) / n^3 [r]x^2,  n = |r|
+// (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018,
+// eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
+// 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
+// their digits to cancellation, it is summed from its Taylor series.
+#ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+
+#include <limits>
+
+#include "../vec3.hpp"
+#include "math.hpp"
+
+namespace quat::detail {
+
+// sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
+// terms no longer change the sum (at most 40 terms; the series here are used where |ratio| < 1/2).
+template <class T, class Ratio>
+[[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
+    T sum = first, term = first;
+    for (int k = 0; k < 40; ++k) {
+        term *= ratio(k);
+        const T next = sum + term;
+        if (next == sum) break;
+        sum = next;
+    }
+    return sum;
+}
+
+/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2, with no cancellation at any n.
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+    const T half = n / T(2);
+    const T sinc = half == T(0) ? T(1) : detail::sin(half) / half;
+    return sinc * sinc / T(2);
+}
+
+/// (n - sin n) / n^3 = 1/6 - n^2/120 + n^4/5040 - ...
+template <class T>
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
+    return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
+}
+
+/// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
+template <class T>
+[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(4))
+        return (T(2) * n2 * one_minus_cos_over_square(n) - n * detail::sin(n)) / (n2 * n2);
+    return power_series(T(1) / T(12), [n2](int j) {
+        const int k = j + 2;
+        return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
+    });
+}
+
+/// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
+/// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
+template <class T>
+[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(9)) return (T(3) * detail::sin(n) - n * detail::cos(n) - T(2) * n) / (n2 * n2 * n);
+    return power_series(T(-1) / T(60), [n2](int j) {
+        const int k = j + 2;
+        return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
+    });
+}
+
+/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const T n = norm(r);
+    const vec3<T> c = cross(r, v);
+    return v - c * one_minus_cos_over_square(n) + cross(r, c) * n_minus_sin_over_cube(n);
+}
+
+/// (1 - (n/2) cot(n/2)) / n^2, the [r]x^2 coefficient of J(r)^-1, as
+/// quartic_coefficient / (2 one_minus_cos_over_square): both free of cancellation. For n < 2 pi.
+template <class T>
+[[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
+    return quartic_coefficient(n) / (T(2) * one_minus_cos_over_square(n));
+}
+
+/// (d/dt J(r)) v for r changing at the rate v: the part of the angular acceleration that is
+/// quadratic in v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian_rate(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const T n = norm(r);
+    const vec3<T> c = cross(r, v);
+    return (c * quartic_coefficient(n) + cross(r, c) * quintic_coefficient(n)) * dot(r, v) +
+           cross(v, c) * n_minus_sin_over_cube(n);
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
