@@ -112,3 +112,27 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     CHECK(after == before);
     CHECK(std::isfinite(sink));  // every result above is finite (and kept alive)
 }
+
+TEST_CASE("keyframe paths allocate only when a rotation_spline is built", "[allocation]") {
+    std::vector<float> times(40), ts(500);
+    std::vector<quat::quatf> keyframes(40), out(500);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        times[i] = 0.25f * float(i) + 0.01f * float(i % 3);
+        keyframes[i] = quat::from_rotation_vector(quat::vec3<float>{0.3f * float(i), 0.1f, 0.0f});
+    }
+    for (std::size_t k = 0; k < ts.size(); ++k) ts[k] = 0.02f * float(k) - 0.5f;
+    const long start = allocations.load();
+    const quat::rotation_spline<float> spline(times, keyframes);
+    const long built = allocations.load();
+    CHECK(built - start == 4);  // the documented three kept arrays and one temporary
+
+    float sink = 0;
+    const quat::quatf a = keyframes[1], b = keyframes[2], c = keyframes[3], d = keyframes[4];
+    sink += quat::squad(a, quat::squad_control(a, b, c), quat::squad_control(b, c, d), d, 0.4f).w;
+    sink += quat::keyframe_slerp(times, keyframes, 3.3f).w;
+    sink += spline(2.2f).w + spline.angular_velocity(2.2f).x + spline.angular_acceleration(2.2f).y;
+    spline.evaluate(ts, out);
+    sink += out[100].w;
+    CHECK(allocations.load() == built);
+    CHECK(std::isfinite(sink));
+}

@@ -95,6 +95,22 @@ int run(const char* name) {
         sink = quat::align_vectors(pair, std::vector<vec3<double>>{v}).rssd;
     if (std::strcmp(name, "align_vectors_negative_weight") == 0)
         sink = quat::align_vectors(pair, pair, std::vector<double>{1, -1}).rssd;
+    if (std::strcmp(name, "squad_control") == 0)
+        sink = quat::squad_control(quatd::identity(), not_unit, quatd::identity()).w;
+    const std::vector<double> unsorted{0, 2, 1};
+    const std::vector<quatd> three{quatd::identity(), quat::rotation_x(0.5), quat::rotation_x(1.0)};
+    if (std::strcmp(name, "keyframe_slerp_size") == 0)
+        sink = quat::keyframe_slerp(std::vector<double>{0, 1}, three, 0.5).w;
+    if (std::strcmp(name, "keyframe_slerp_unsorted") == 0)
+        sink = quat::keyframe_slerp(std::vector<double>{0, 3, 1, 4},
+                                    std::vector<quatd>(4, quatd::identity()), 3.5)
+                   .w;
+    if (std::strcmp(name, "rotation_spline_size") == 0)
+        sink = quat::rotation_spline<double>(std::vector<double>{0},
+                                             std::vector<quatd>{quatd::identity()})(0.5)
+                   .w;
+    if (std::strcmp(name, "rotation_spline_unsorted") == 0)
+        sink = quat::rotation_spline<double>(unsorted, three)(0.5).w;
     if (std::strcmp(name, "euler_index") == 0) {
         const quat::euler<double> e{0.1, 0.2, 0.3};
         sink = e[static_cast<std::size_t>(3 + sink)];

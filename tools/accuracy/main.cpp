@@ -3,7 +3,7 @@
 // table. Exit status 1 when any of quat's targets (issue 7) is missed.
 //   quat_accuracy [--quick] [--worst] [--conventions]
 //   quat_accuracy --slerp-fast [--quick]   (slerp_fast's error in radians; exit 1 above its bound)
-//   quat_accuracy --scipy                  (align_vectors and mean against SciPy's answers)
+//   quat_accuracy --scipy                  (align_vectors, mean, Slerp, RotationSpline vs SciPy)
 #include <cstdio>
 #include <cstring>
 #include <string>

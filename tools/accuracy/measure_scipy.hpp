@@ -14,6 +14,7 @@
 #include <quat/mean.hpp>
 
 #include "data/scipy_reference.hpp"
+#include "measure_scipy_spline.hpp"
 
 namespace accuracy {
 
@@ -74,8 +75,8 @@ scipy_agreement measure_scipy() {
     return out;
 }
 
-/// Prints the table; returns 0 (the bounds are asserted by tests/test_align_vectors.cpp and
-/// tests/test_mean.cpp, not here).
+/// Prints the tables; returns 0 (the bounds are asserted by tests/test_align_vectors.cpp,
+/// tests/test_mean.cpp, tests/test_keyframe_slerp.cpp and tests/test_rotation_spline.cpp).
 inline int run_scipy() {
     std::printf("| quat against SciPy 1.10 | float | double |\n|---|---|---|\n");
     const scipy_agreement f = measure_scipy<float>(), d = measure_scipy<double>();
@@ -88,6 +89,7 @@ inline int run_scipy() {
                 d.scipy_exact_rssd, f.exact_rssd, d.exact_rssd);
     std::printf("| mean: rotation angle, rad (%d sets) | %.2g | %.2g |\n", d.mean_sets,
                 f.mean_angle, d.mean_angle);
+    run_scipy_spline();
     return 0;
 }
 
