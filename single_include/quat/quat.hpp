@@ -1488,8 +1488,14 @@ template <class T>
 #define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 
 #include <cstddef>
+#include <utility>
 
-namespace quat::detail {
+namespace quat {
+
+template <class T>
+struct quaternion;
+
+namespace detail {
 
 // std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
 // translation unit that includes quat.hpp: half its compile time.
@@ -1510,7 +1516,15 @@ template <class T, std::size_t N>
     return N;
 }
 
-}  // namespace quat::detail
+// The T of a container of quaternion<T>: declared only, for the type of its data.
+template <class T>
+T quaternion_scalar(const quaternion<T>*) noexcept;
+template <class Rotations>
+using quaternion_scalar_t =
+    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
+
+}  // namespace detail
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 // ---- end quat/detail/containers.hpp ----
@@ -2890,6 +2904,83 @@ template <class T>
 
 #endif  // QUAT_FAST_SLERP_HPP_INCLUDED
 // ---- end quat/fast_slerp.hpp ----
+// ---- begin quat/keyframe_slerp.hpp ----
+// Piecewise slerp through keyframes at given times: scipy's Slerp(times, rotations)(t).
+#ifndef QUAT_KEYFRAME_SLERP_HPP_INCLUDED
+#define QUAT_KEYFRAME_SLERP_HPP_INCLUDED
+
+#include <cstddef>
+
+// ---- begin quat/detail/segments.hpp ----
+// Finding the segment of a keyframe path that holds a time.
+#ifndef QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+#define QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+
+#include <cstddef>
+
+
+namespace quat::detail {
+
+/// The segment i in [0, count - 2] with times[i] <= t < times[i + 1]: 0 for t before times[1]
+/// (and for NaN), count - 2 from times[count - 2] on. `hint`, a segment tried first together with
+/// its successor, makes a walk through sorted times constant time per step. count >= 2; debug
+/// builds check that the times the search visits increase.
+template <class Time, class T>
+[[nodiscard]] constexpr std::size_t segment_of(const Time* times, std::size_t count, T t,
+                                               std::size_t hint = 0) noexcept {
+    const auto time = [times](std::size_t i) { return static_cast<T>(times[i]); };
+    const std::size_t last = count - 2;
+    if (hint <= last && !(t < time(hint))) {
+        if (hint == last || t < time(hint + 1)) return hint;
+        if (hint + 1 == last || t < time(hint + 2)) return hint + 1;
+    }
+    // Binary search for the last i <= last with times[i] <= t (times[0] counts as -infinity).
+    std::size_t low = 0, high = last;
+    while (low < high) {
+        const std::size_t middle = low + (high - low + 1) / 2;
+        QUAT_ASSERT(time(middle - 1) < time(middle), "quat: keyframe times are not increasing");
+        if (t < time(middle) || t != t) high = middle - 1;
+        else low = middle;
+    }
+    return low;
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+// ---- end quat/detail/segments.hpp ----
+
+namespace quat {
+
+/// The rotation at time t on the piecewise slerp through unit `rotations` at strictly increasing
+/// `times` (contiguous containers with data() and size(), or C arrays, of equal size >= 1): slerp
+/// of the two keyframes around t, at constant angular velocity along the shorter arc within each
+/// segment, the same rotations as scipy's Slerp(times, rotations)(t). Exactly rotations[i] at
+/// times[i]; t before the first time or after the last gives the end keyframe (scipy raises
+/// there). The angular velocity jumps at every keyframe: squad or rotation_spline is smooth.
+/// Preconditions: equal, non-zero sizes, strictly increasing times,
+/// unit rotations (debug builds check the times the search visits). A NaN t or keyframe gives NaN.
+template <class Times, class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+[[nodiscard]] constexpr quaternion<T> keyframe_slerp(const Times& times, const Rotations& rotations,
+                                                     detail::type_identity_t<T> t) noexcept {
+    const std::size_t count = detail::size_of(rotations);
+    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
+                "quat::keyframe_slerp: times and rotations differ in size or are empty");
+    const auto* time = detail::data_of(times);
+    const quaternion<T>* rotation = detail::data_of(rotations);
+    if (count == 1) return t == t ? rotation[0] : rotation[0] * t;
+    const T first = static_cast<T>(time[0]), last = static_cast<T>(time[count - 1]);
+    if (t <= first) return rotation[0];
+    if (t >= last) return rotation[count - 1];
+    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to slerp
+    const T start = static_cast<T>(time[i]);
+    return slerp(rotation[i], rotation[i + 1], (t - start) / (static_cast<T>(time[i + 1]) - start));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_KEYFRAME_SLERP_HPP_INCLUDED
+// ---- end quat/keyframe_slerp.hpp ----
 // ---- begin quat/kinematics.hpp ----
 // Angular velocity between two orientations, and integrating an angular velocity over a time step.
 #ifndef QUAT_KINEMATICS_HPP_INCLUDED
@@ -2975,19 +3066,11 @@ template <class T>
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <utility>
 
 
 namespace quat {
 
 namespace detail {
-
-// The T of a container of quaternion<T>: declared only, for the type of its data.
-template <class T>
-T quaternion_scalar(const quaternion<T>*) noexcept;
-template <class Rotations>
-using quaternion_scalar_t =
-    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
 
 // The rotation matrices' mean M minimizing sum w_i |M - R_i|_F^2 has the quaternion of the largest
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
@@ -3186,6 +3269,580 @@ template <class T, class Generator>
 
 #endif  // QUAT_RANDOM_HPP_INCLUDED
 // ---- end quat/random.hpp ----
+// ---- begin quat/rotation_spline.hpp ----
+// A C2-continuous rotation spline through keyframes: scipy's RotationSpline, solved to convergence.
+#ifndef QUAT_ROTATION_SPLINE_HPP_INCLUDED
+#define QUAT_ROTATION_SPLINE_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+// ---- begin quat/detail/block_tridiagonal.hpp ----
+// 3x3 matrices and the block tridiagonal solve behind rotation_spline's rates.
+#ifndef QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+#define QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+
+#include <cstddef>
+
+
+namespace quat::detail {
+
+template <class T>
+struct matrix3 {
+    T m[3][3];
+};
+
+/// a I + b [r]x + c [r]x^2, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
+    const T v[3] = {r.x, r.y, r.z};
+    const T n2 = squared_norm(r);
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = c * v[i] * v[j];
+    for (int i = 0; i < 3; ++i) result.m[i][i] += a - c * n2;
+    result.m[0][1] -= b * v[2];
+    result.m[0][2] += b * v[1];
+    result.m[1][0] += b * v[2];
+    result.m[1][2] -= b * v[0];
+    result.m[2][0] -= b * v[1];
+    result.m[2][1] += b * v[0];
+    return result;
+}
+
+/// u v^T
+template <class T>
+[[nodiscard]] constexpr matrix3<T> outer(const vec3<T>& u, const vec3<T>& v) noexcept {
+    return {{{u.x * v.x, u.x * v.y, u.x * v.z},
+             {u.y * v.x, u.y * v.y, u.y * v.z},
+             {u.z * v.x, u.z * v.y, u.z * v.z}}};
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator+(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] + b.m[i][j];
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, T s) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] * s;
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            result.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& a, const vec3<T>& v) noexcept {
+    return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
+            a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
+            a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
+}
+
+/// The inverse by cofactors; the blocks it is used on are diagonally dominant.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> inverse(const matrix3<T>& a) noexcept {
+    const auto& m = a.m;
+    matrix3<T> c{{{m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2],
+                   m[0][1] * m[1][2] - m[0][2] * m[1][1]},
+                  {m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
+                   m[0][2] * m[1][0] - m[0][0] * m[1][2]},
+                  {m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1],
+                   m[0][0] * m[1][1] - m[0][1] * m[1][0]}}};
+    const T determinant = m[0][0] * c.m[0][0] + m[0][1] * c.m[1][0] + m[0][2] * c.m[2][0];
+    return c * (T(1) / determinant);
+}
+
+/// Solves the block tridiagonal system lower(k) x(k-1) + diagonal(k) x(k) + upper(k) x(k+1) = b(k)
+/// for k in [0, count), with b coming in x(k) and the solution going out there, by block Gaussian
+/// elimination without pivoting (the block Thomas algorithm), stable for block diagonally dominant
+/// systems. lower and upper return blocks by value, diagonal and x references to storage that is
+/// overwritten; lower(0) and upper(count - 1) are not called. count >= 1.
+template <class Lower, class Diagonal, class Upper, class X>
+constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal diagonal,
+                                       Upper upper, X x) noexcept {
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k > 0) {
+            const auto factor = lower(k) * diagonal(k - 1);  // diagonal(k - 1) is inverted
+            diagonal(k) = diagonal(k) + factor * upper(k - 1) * decltype(x(k).x)(-1);
+            x(k) -= factor * x(k - 1);
+        }
+        diagonal(k) = inverse(diagonal(k));
+    }
+    x(count - 1) = diagonal(count - 1) * x(count - 1);
+    for (std::size_t k = count - 1; k-- > 0;) x(k) = diagonal(k) * (x(k) - upper(k) * x(k + 1));
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+// ---- end quat/detail/block_tridiagonal.hpp ----
+// ---- begin quat/detail/rotation_vector_jacobian.hpp ----
+// Derivatives of the exponential map of rotation vectors: how a rotation vector's rate of change
+// turns into an angular velocity, back, and the term its second derivative adds to an angular
+// acceleration. For R(t) = R0 exp([r(t)]x) the body angular velocity is J(r) r' and the angular
+// acceleration J(r) r'' + (d/dt J(r)) r', with J the right Jacobian of SO(3),
+//     J(r) = I - (1 - cos n) / n^2 [r]x + (n - sin n) / n^3 [r]x^2,  n = |r|
+// (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018,
+// eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
+// 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
+// their digits to cancellation, it is summed from its Taylor series.
+#ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+
+#include <limits>
+
+
+namespace quat::detail {
+
+// sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
+// terms no longer change the sum (at most 40 terms; the series here are used where |ratio| < 1/2).
+template <class T, class Ratio>
+[[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
+    T sum = first, term = first;
+    for (int k = 0; k < 40; ++k) {
+        term *= ratio(k);
+        const T next = sum + term;
+        if (next == sum) break;
+        sum = next;
+    }
+    return sum;
+}
+
+/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2, with no cancellation at any n.
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+    const T half = n / T(2);
+    const T sinc = half == T(0) ? T(1) : detail::sin(half) / half;
+    return sinc * sinc / T(2);
+}
+
+/// (n - sin n) / n^3 = 1/6 - n^2/120 + n^4/5040 - ...
+template <class T>
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
+    return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
+}
+
+/// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
+template <class T>
+[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(4))
+        return (T(2) * n2 * one_minus_cos_over_square(n) - n * detail::sin(n)) / (n2 * n2);
+    return power_series(T(1) / T(12), [n2](int j) {
+        const int k = j + 2;
+        return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
+    });
+}
+
+/// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
+/// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
+template <class T>
+[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
+    const T n2 = n * n;
+    if (n2 >= T(9)) return (T(3) * detail::sin(n) - n * detail::cos(n) - T(2) * n) / (n2 * n2 * n);
+    return power_series(T(-1) / T(60), [n2](int j) {
+        const int k = j + 2;
+        return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
+    });
+}
+
+/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const T n = norm(r);
+    const vec3<T> c = cross(r, v);
+    return v - c * one_minus_cos_over_square(n) + cross(r, c) * n_minus_sin_over_cube(n);
+}
+
+/// (1 - (n/2) cot(n/2)) / n^2, the [r]x^2 coefficient of J(r)^-1, as
+/// quartic_coefficient / (2 one_minus_cos_over_square): both free of cancellation. For n < 2 pi.
+template <class T>
+[[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
+    return quartic_coefficient(n) / (T(2) * one_minus_cos_over_square(n));
+}
+
+/// (d/dt J(r)) v for r changing at the rate v: the part of the angular acceleration that is
+/// quadratic in v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian_rate(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const T n = norm(r);
+    const vec3<T> c = cross(r, v);
+    return (c * quartic_coefficient(n) + cross(r, c) * quintic_coefficient(n)) * dot(r, v) +
+           cross(v, c) * n_minus_sin_over_cube(n);
+}
+
+}  // namespace quat::detail
+
+#endif  // QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+// ---- end quat/detail/rotation_vector_jacobian.hpp ----
+
+namespace quat {
+
+namespace detail {
+
+/// The derivative of right_jacobian_rate(r, v) with respect to v (r held fixed).
+template <class T>
+[[nodiscard]] constexpr matrix3<T> right_jacobian_rate_derivative(const vec3<T>& r,
+                                                                  const vec3<T>& v) noexcept {
+    const T n = norm(r), d = dot(r, v);
+    const T k3 = n_minus_sin_over_cube(n), k4 = quartic_coefficient(n), k5 = quintic_coefficient(n);
+    const vec3<T> c = cross(r, v);
+    // d/dv of (r.v)(k4 r x v + k5 r x (r x v)) and of k3 v x (r x v) = k3 (r (v.v) - v (v.r)).
+    return skew_polynomial(r, -k3 * d, k4 * d, k5 * d) +
+           outer(c * k4 + cross(r, c) * k5 - v * k3, r) + outer(r, v) * (T(2) * k3);
+}
+
+}  // namespace detail
+
+/// A rotation spline through keyframes with continuous angular velocity and angular acceleration
+/// (C2), scipy's RotationSpline: on segment i, R(t) = R_i exp(r_i(t - t_i)) with r_i a cubic in
+/// the local rotation vector, r_i(0) = 0 and r_i(t_(i+1) - t_i) = log(R_i^T R_(i+1)) (the
+/// shorter way), the angular velocities at the first and last keyframes those of the first and
+/// last segments' slerps, and the angular velocities at the inner keyframes solved from the
+/// condition that the angular acceleration is continuous there (F. L. Markley and others,
+/// "Smooth attitude interpolation", scipy issue 2932755 notes). That condition is non-linear in
+/// the velocities; scipy stops its fixed-point iteration after 10 steps, which on some keyframe
+/// sets leaves its spline up to about 1e-3 rad from the C2 one, while quat solves it by Newton's
+/// method to rounding level (the two agree to 1e-9 wherever scipy's iteration has converged).
+/// Before the first and after the last keyframe the end cubics continue, as in scipy.
+///
+/// Building allocates: the spline keeps N times, N quaternions and N - 1 cubics (17 N - 9
+/// scalars), and solving uses a temporary array of N - 1 records of 40 scalars, freed before the
+/// constructor returns. Evaluation allocates nothing.
+template <class T>
+class rotation_spline {
+public:
+    /// The spline through `rotations` (non-zero quaternions, normalized here; q and -q are the same
+    /// keyframe) at strictly increasing `times`: containers with data() and size(), or C arrays,
+    /// of equal size >= 2. Debug builds check these preconditions; a release build given fewer
+    /// than two keyframes or sizes that differ makes a spline that evaluates to NaN, and unsorted
+    /// or non-finite input gives non-finite values. try_make checks the input instead.
+    template <class Times, class Rotations>
+    rotation_spline(const Times& times, const Rotations& rotations) {
+        const std::size_t count = detail::size_of(times);
+        QUAT_ASSERT(count >= 2 && detail::size_of(rotations) == count,
+                    "quat::rotation_spline: fewer than two keyframes, or times and rotations "
+                    "differ in size");
+        if (count < 2 || detail::size_of(rotations) != count) return;
+        const auto* time = detail::data_of(times);
+        const quaternion<T>* rotation = detail::data_of(rotations);
+        for (std::size_t i = 1; i < count; ++i)
+            QUAT_ASSERT(static_cast<T>(time[i - 1]) < static_cast<T>(time[i]),
+                        "quat::rotation_spline: times are not strictly increasing");
+        times_.resize(count);
+        rotations_.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            times_[i] = static_cast<T>(time[i]);
+            rotations_[i] = normalize(rotation[i]);
+        }
+        converged_ = build();
+    }
+
+    /// The spline, or std::nullopt when there are fewer than two keyframes, the sizes differ, a
+    /// time or a component is NaN or infinite, times do not strictly increase, a quaternion is
+    /// zero, or the solve for the angular velocities does not converge (no such keyframe set is
+    /// known; the tests look for one among thousands of random sets).
+    template <class Times, class Rotations>
+    [[nodiscard]] static std::optional<rotation_spline> try_make(const Times& times,
+                                                                 const Rotations& rotations) {
+        const std::size_t count = detail::size_of(times);
+        if (count < 2 || detail::size_of(rotations) != count) return std::nullopt;
+        const auto* time = detail::data_of(times);
+        const quaternion<T>* rotation = detail::data_of(rotations);
+        for (std::size_t i = 0; i < count; ++i) {
+            const T t = static_cast<T>(time[i]);
+            const quaternion<T>& q = rotation[i];
+            if (!detail::is_finite(t) || (i > 0 && !(static_cast<T>(time[i - 1]) < t)) ||
+                !detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
+                !detail::is_finite(q.z) || squared_norm(q) == T(0))
+                return std::nullopt;
+        }
+        rotation_spline spline(times, rotations);
+        if (!spline.converged_) return std::nullopt;
+        return spline;
+    }
+
+    /// The rotation at time t (scipy's spline(t)): exactly the keyframe's rotation at its time, up
+    /// to rounding. A NaN t gives NaN.
+    [[nodiscard]] quaternion<T> operator()(T t) const noexcept { return at(t, segment_of(t)); }
+
+    /// The body-frame angular velocity at time t, radians per unit of time (scipy's spline(t, 1)):
+    /// integrate_body of it over a short dt follows the spline. A NaN t gives NaN.
+    [[nodiscard]] vec3<T> angular_velocity(T t) const noexcept {
+        if (cubics_.empty()) return nan_vector();
+        const std::size_t i = segment_of(t);
+        const T s = t - times_[i];
+        const cubic& c = cubics_[i];
+        const vec3<T> r = ((c.a * s + c.b) * s + c.c) * s;
+        return detail::right_jacobian(r, (c.a * (T(3) * s) + c.b * T(2)) * s + c.c);
+    }
+
+    /// The body-frame angular acceleration at time t, radians per unit of time squared (scipy's
+    /// spline(t, 2)): continuous, piecewise smooth. A NaN t gives NaN.
+    [[nodiscard]] vec3<T> angular_acceleration(T t) const noexcept {
+        if (cubics_.empty()) return nan_vector();
+        const std::size_t i = segment_of(t);
+        const T s = t - times_[i];
+        const cubic& c = cubics_[i];
+        const vec3<T> r = ((c.a * s + c.b) * s + c.c) * s;
+        const vec3<T> rate = (c.a * (T(3) * s) + c.b * T(2)) * s + c.c;
+        return detail::right_jacobian(r, c.a * (T(6) * s) + c.b * T(2)) +
+               detail::right_jacobian_rate(r, rate);
+    }
+
+    /// out[k] = (*this)(ts[k]) for containers (data() and size(), or C arrays) of equal size
+    /// (QUAT_ASSERT); times in increasing order find their segments in constant time each, others
+    /// by binary search.
+    template <class Times, class Output>
+    void evaluate(const Times& ts, Output& out) const noexcept {
+        const std::size_t count = detail::size_of(ts);
+        QUAT_ASSERT(detail::size_of(out) == count,
+                    "quat::rotation_spline::evaluate: ts and out differ in size");
+        const auto* t = detail::data_of(ts);
+        quaternion<T>* result = detail::data_of(out);
+        std::size_t segment = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+            const T time = static_cast<T>(t[k]);
+            segment = segment_of(time, segment);
+            result[k] = at(time, segment);
+        }
+    }
+
+    /// The keyframe times and rotations (normalized), as given.
+    /// @{
+    [[nodiscard]] const std::vector<T>& times() const noexcept { return times_; }
+    [[nodiscard]] const std::vector<quaternion<T>>& rotations() const noexcept {
+        return rotations_;
+    }
+    /// @}
+
+private:
+    // r(s) = ((a s + b) s + c) s, s = t - t_i: the rotation vector from keyframe i; c is the
+    // angular velocity at keyframe i.
+    struct cubic {
+        vec3<T> a, b, c;
+    };
+
+    [[nodiscard]] static vec3<T> nan_vector() noexcept {
+        const T nan = std::numeric_limits<T>::quiet_NaN();
+        return {nan, nan, nan};
+    }
+
+    template <class U>
+    [[nodiscard]] static U largest_component(const vec3<U>& v) noexcept {
+        return detail::max(detail::abs(v.x), detail::max(detail::abs(v.y), detail::abs(v.z)));
+    }
+
+    [[nodiscard]] std::size_t segment_of(T t, std::size_t hint = 0) const noexcept {
+        return detail::segment_of(times_.data(), times_.size(), t, hint);
+    }
+
+    [[nodiscard]] quaternion<T> at(T t, std::size_t i) const noexcept {
+        if (cubics_.empty()) {
+            const T nan = std::numeric_limits<T>::quiet_NaN();
+            return {nan, nan, nan, nan};
+        }
+        const T s = t - times_[i];
+        const cubic& c = cubics_[i];
+        return rotations_[i] * from_rotation_vector(((c.a * s + c.b) * s + c.c) * s);
+    }
+
+    // Fills cubics_ from times_ and rotations_; false when Newton's method did not converge.
+    bool build();
+
+    std::vector<T> times_;
+    std::vector<quaternion<T>> rotations_;
+    std::vector<cubic> cubics_;
+    bool converged_ = false;
+};
+
+template <class Times, class Rotations>
+rotation_spline(const Times&, const Rotations&)
+    -> rotation_spline<detail::quaternion_scalar_t<Rotations>>;
+
+template <class T>
+bool rotation_spline<T>::build() {
+    // float splines are solved in double: near half turns the solve loses digits (measured: up to
+    // 1.3e-3 rad solved in float, 2e-6 in double and rounded to float).
+    using S = std::conditional_t<std::is_same_v<T, float>, double, T>;
+    const std::size_t count = times_.size(), segments = count - 1;
+    // One temporary record per segment j: its duration, rotation vector r_j, J(r_j) (angular
+    // velocity from the rotation vector's rate), J(r_j)^-1, the angular velocity at keyframe j,
+    // and, for the inner keyframe j + 1, the jump of its angular acceleration, the block of the
+    // Newton system on the diagonal, the step and the velocity before it.
+    struct record {
+        S dt;
+        vec3<S> r;
+        detail::matrix3<S> to_velocity, from_velocity, diagonal;
+        vec3<S> start, jump, step, saved;
+    };
+    std::vector<record> work(segments);
+    for (std::size_t j = 0; j < segments; ++j) {
+        record& w = work[j];
+        w.dt = static_cast<S>(times_[j + 1]) - static_cast<S>(times_[j]);
+        w.r = to_rotation_vector(detail::relative_rotation<true>(quaternion<S>(rotations_[j]),
+                                                                 quaternion<S>(rotations_[j + 1])));
+        const S n = norm(w.r);
+        w.to_velocity = detail::skew_polynomial(w.r, S(1), -detail::one_minus_cos_over_square(n),
+                                                detail::n_minus_sin_over_cube(n));
+        w.from_velocity =
+            detail::skew_polynomial(w.r, S(1), S(0.5), detail::inverse_jacobian_coefficient(n));
+        w.start = w.r / w.dt;  // the slerp's velocity, to start with
+    }
+    // The velocity at keyframe k; the last keyframe's is its segment's slerp velocity, as scipy's.
+    const vec3<S> last = work[segments - 1].r / work[segments - 1].dt;
+    const auto velocity = [&](std::size_t k) -> const vec3<S>& {
+        return k < segments ? work[k].start : last;
+    };
+    const std::size_t inner = count - 2;
+    const auto jumps = [&]() {
+        S sum = S(0);
+        for (std::size_t k = 1; k <= inner; ++k) {
+            record& p = work[k - 1];
+            const record& s = work[k];
+            const vec3<S> end_rate = p.from_velocity * velocity(k);
+            const S both = S(4) / p.dt + S(4) / s.dt;
+            p.jump = p.to_velocity * velocity(k - 1) * (S(2) / p.dt) + velocity(k) * both +
+                     s.from_velocity * velocity(k + 1) * (S(2) / s.dt) +
+                     detail::right_jacobian_rate(p.r, end_rate) - p.r * (S(6) / (p.dt * p.dt)) -
+                     s.r * (S(6) / (s.dt * s.dt));
+            p.diagonal = detail::skew_polynomial(p.r, both, S(0), S(0)) +
+                         detail::right_jacobian_rate_derivative(p.r, end_rate) * p.from_velocity;
+            sum += dot(p.jump, p.jump);
+        }
+        return sum;
+    };
+    // Newton's method, its step halved until the squared jumps decrease (far from the solution,
+    // with steps between keyframes near half turns and durations unequal by 1000 times, full
+    // steps can wander). The Newton system is block tridiagonal with 3 x 3 blocks.
+    const auto solve = [&]() {
+        S squared_jumps = inner > 0 ? jumps() : S(0);
+        if (!detail::is_finite(squared_jumps)) return false;
+        const S tolerance = detail::sqrt(std::numeric_limits<S>::epsilon());
+        bool close = false;
+        for (int iteration = 0; squared_jumps > S(0) && iteration < 100; ++iteration) {
+            for (std::size_t m = 0; m < inner; ++m) {
+                work[m].step = -work[m].jump;
+                work[m].saved = work[m + 1].start;
+            }
+            // Unknown m is the velocity at keyframe m + 1: the blocks beside the diagonal come
+            // from segments m (before it) and m + 1 (after it).
+            detail::solve_block_tridiagonal(
+                inner, [&](std::size_t m) { return work[m].to_velocity * (S(2) / work[m].dt); },
+                [&](std::size_t m) -> detail::matrix3<S>& { return work[m].diagonal; },
+                [&](std::size_t m) { return work[m + 1].from_velocity * (S(2) / work[m + 1].dt); },
+                [&](std::size_t m) -> vec3<S>& { return work[m].step; });
+            S largest_step = S(0), largest_velocity = S(0);
+            for (std::size_t m = 0; m < inner; ++m) {
+                largest_step = detail::max(largest_step, largest_component(work[m].step));
+                largest_velocity = detail::max(largest_velocity, largest_component(work[m].saved));
+            }
+            const bool small = largest_step <= tolerance * largest_velocity;
+            S fraction = S(1);
+            for (int halving = 0;; ++halving) {
+                for (std::size_t m = 0; m < inner; ++m)
+                    work[m + 1].start = work[m].saved + work[m].step * fraction;
+                const S trial = jumps();
+                if (trial < squared_jumps) {  // false for NaN
+                    squared_jumps = trial;
+                    break;
+                }
+                if (halving == 40 || small) {  // no decrease: at rounding level, or stuck
+                    for (std::size_t m = 0; m < inner; ++m) work[m + 1].start = work[m].saved;
+                    return small;
+                }
+                fraction /= S(2);
+            }
+            if (close) return true;  // one full step after reaching sqrt(epsilon)
+            close = small && fraction == S(1);
+        }
+        return squared_jumps == S(0);
+    };
+    const bool converged = solve();
+    cubics_.resize(segments);
+    for (std::size_t j = 0; j < segments; ++j) {
+        const record& w = work[j];
+        const vec3<S> start = w.start, end = w.from_velocity * velocity(j + 1);
+        // Two keyframes: the slerp, whose cubic terms are zero but would round to tiny values.
+        const vec3<S> a =
+            count == 2 ? vec3<S>{} : (w.r * S(-2) + (start + end) * w.dt) / (w.dt * w.dt * w.dt);
+        const vec3<S> b =
+            count == 2 ? vec3<S>{} : (w.r * S(3) - (start * S(2) + end) * w.dt) / (w.dt * w.dt);
+        cubics_[j] = {vec3<T>(a), vec3<T>(b), vec3<T>(start)};
+    }
+    return converged;
+}
+
+}  // namespace quat
+
+#endif  // QUAT_ROTATION_SPLINE_HPP_INCLUDED
+// ---- end quat/rotation_spline.hpp ----
+// ---- begin quat/squad.hpp ----
+// Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
+// continuous across them when the keyframes are evenly spaced in time.
+#ifndef QUAT_SQUAD_HPP_INCLUDED
+#define QUAT_SQUAD_HPP_INCLUDED
+
+
+namespace quat {
+
+/// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
+/// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
+/// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
+/// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
+/// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
+/// them). At the ends of a path pass the end keyframe twice: squad_control(q0, q0, q1).
+/// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
+                                                    const quaternion<T>& current,
+                                                    const quaternion<T>& next) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(previous) && detail::is_near_unit(current) &&
+                    detail::is_near_unit(next),
+                "quat::squad_control: an input is not a unit quaternion");
+    // log of a unit quaternion is half its rotation vector, and exp(v) is from_rotation_vector(2 v).
+    const vec3<T> to_next = to_rotation_vector(detail::relative_rotation<true>(current, next));
+    const vec3<T> to_previous =
+        to_rotation_vector(detail::relative_rotation<true>(current, previous));
+    return current * from_rotation_vector((to_next + to_previous) * T(-0.25));
+}
+
+/// The spherical cubic from keyframe q1 (t = 0) to keyframe q2 (t = 1) with inner control points
+/// a1 = squad_control(q0, q1, q2) and a2 = squad_control(q1, q2, q3):
+/// slerp(slerp(q1, q2, t), slerp(a1, a2, t), 2t(1 - t)). Returns q1 at t = 0 and q2 (or -q2) at
+/// t = 1 exactly; every slerp takes the shorter arc, so the result depends only on the rotations,
+/// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
+/// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
+/// neighbouring durations there (the controls know nothing of time), and rotation_spline is the
+/// path to use. Preconditions: unit inputs (debug-checked) and t in [0, 1]; NaN in gives NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
+                                            const quaternion<T>& a2, const quaternion<T>& q2,
+                                            detail::type_identity_t<T> t) noexcept {
+    return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_SQUAD_HPP_INCLUDED
+// ---- end quat/squad.hpp ----
 // ---- begin quat/swing_twist.hpp ----
 // Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
 #ifndef QUAT_SWING_TWIST_HPP_INCLUDED
