@@ -287,6 +287,20 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     const vec3<double> twist_axis_d{0, 2, 1};
     check_same(swing_twist(a, twist_axis).twist, swing_twist(ad, twist_axis_d).twist);
     check_same(try_swing_twist(a, twist_axis)->swing, try_swing_twist(ad, twist_axis_d)->swing);
+    // Keyframe paths (issue 14).
+    const quaternion<R> c = slerp(a, b, r(0.7));
+    const quatd cd = slerp(ad, bd, 0.7);
+    check_same(squad(a, squad_control(a, a, b), squad_control(a, b, c), b, r(0.4)),
+               squad(ad, squad_control(ad, ad, bd), squad_control(ad, bd, cd), bd, 0.4));
+    const std::vector<R> key_times{r(0), r(1), r(2.5), r(3)};
+    const std::vector<double> key_times_d{0, 1, 2.5, 3};
+    const std::vector<quaternion<R>> keys{a, b, c, a};
+    const std::vector<quatd> keys_d{ad, bd, cd, ad};
+    check_same(keyframe_slerp(key_times, keys, r(1.7)), keyframe_slerp(key_times_d, keys_d, 1.7));
+    const rotation_spline<R> spline(key_times, keys);
+    const rotation_spline<double> spline_d(key_times_d, keys_d);
+    check_same(spline(r(1.7)), spline_d(1.7));
+    CHECK(same(spline.angular_acceleration(r(1.7)).y, spline_d.angular_acceleration(1.7).y));
 
     // The batch functions take the plain loops (no vector polynomial) for a user scalar.
     std::vector<vec3<R>> points(5, vec3<R>{r(1), r(2), r(3)}), rotated(5);

@@ -294,7 +294,7 @@ bool rotation_spline<T>::build() {
                     for (std::size_t m = 0; m < inner; ++m) work[m + 1].start = work[m].saved;
                     return small;
                 }
-                fraction /= S(2);
+                fraction = fraction / S(2);
             }
             if (close) return true;  // one full step after reaching sqrt(epsilon)
             close = small && fraction == S(1);

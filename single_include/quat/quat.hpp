@@ -3415,7 +3415,7 @@ template <class T, class Ratio>
 [[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
     T sum = first, term = first;
     for (int k = 0; k < 40; ++k) {
-        term *= ratio(k);
+        term = term * ratio(k);
         const T next = sum + term;
         if (next == sum) break;
         sum = next;
@@ -3768,7 +3768,7 @@ bool rotation_spline<T>::build() {
                     for (std::size_t m = 0; m < inner; ++m) work[m + 1].start = work[m].saved;
                     return small;
                 }
-                fraction /= S(2);
+                fraction = fraction / S(2);
             }
             if (close) return true;  // one full step after reaching sqrt(epsilon)
             close = small && fraction == S(1);

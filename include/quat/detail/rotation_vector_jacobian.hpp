@@ -23,7 +23,7 @@ template <class T, class Ratio>
 [[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
     T sum = first, term = first;
     for (int k = 0; k < 40; ++k) {
-        term *= ratio(k);
+        term = term * ratio(k);
         const T next = sum + term;
         if (next == sum) break;
         sum = next;
