@@ -3808,7 +3808,8 @@ namespace quat {
 /// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
 /// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
 /// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
-/// them). At the ends of a path pass the end keyframe twice: squad_control(q0, q0, q1).
+/// them). At the ends of a path pass the end keyframe twice, squad_control(q0, q0, q1): the path
+/// then starts (and ends) at half the end segment's slerp speed.
 /// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
