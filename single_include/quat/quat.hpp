@@ -3673,6 +3673,7 @@ private:
     bool converged_ = false;
 };
 
+/// rotation_spline(times, rotations) takes its scalar from the rotations: quaternion<T> gives T.
 template <class Times, class Rotations>
 rotation_spline(const Times&, const Rotations&)
     -> rotation_spline<detail::quaternion_scalar_t<Rotations>>;
