@@ -227,6 +227,7 @@ void register_interpolation();
 void register_motion();      // bench_motion.cpp
 void register_align();       // bench_align.cpp
 void register_estimation();  // bench_estimation.cpp
+void register_keyframes();   // bench_keyframes.cpp
 
 /// `quat_bench --counts`: the operation-count tables.
 int print_counts();

@@ -186,6 +186,7 @@ int main(int argc, char** argv) {
     bench::register_motion();
     bench::register_align();
     bench::register_estimation();
+    bench::register_keyframes();
     if (!table) {
         benchmark::RunSpecifiedBenchmarks();
     } else {
