@@ -34,6 +34,8 @@ import scipy
 import scipy.spatial.transform._rotation_spline as rotation_spline_module
 from scipy.spatial.transform import Rotation, RotationSpline, Slerp
 
+from scipy_reference import flat, number, rows  # the same number format as the other data
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 OUTPUT = os.path.join(ROOT, "tests", "data", "scipy_spline_reference.hpp")
 
@@ -306,23 +308,6 @@ def slerp_cases():
 
 
 # --- output ------------------------------------------------------------------------------------
-
-def number(x):
-    x = float(x)
-    if not np.isfinite(x):
-        raise ValueError("non-finite reference value")
-    return repr(x)
-
-
-def rows(values, per_row):
-    values = [number(v) for v in np.ravel(values)]
-    return ", ".join("{" + ", ".join(values[i:i + per_row]) + "}"
-                     for i in range(0, len(values), per_row))
-
-
-def flat(values):
-    return ", ".join(number(v) for v in np.ravel(values))
-
 
 def boolean(b):
     return "true" if b else "false"

@@ -112,25 +112,15 @@ public:
     /// The body-frame angular velocity at time t, radians per unit of time (scipy's spline(t, 1)):
     /// integrate_body of it over a short dt follows the spline. A NaN t gives NaN.
     [[nodiscard]] vec3<T> angular_velocity(T t) const noexcept {
-        if (cubics_.empty()) return nan_vector();
-        const std::size_t i = segment_of(t);
-        const T s = t - times_[i];
-        const cubic& c = cubics_[i];
-        const vec3<T> r = ((c.a * s + c.b) * s + c.c) * s;
-        return detail::right_jacobian(r, (c.a * (T(3) * s) + c.b * T(2)) * s + c.c);
+        const local_motion m = local(t);
+        return detail::right_jacobian(m.r, m.rate);
     }
 
     /// The body-frame angular acceleration at time t, radians per unit of time squared (scipy's
     /// spline(t, 2)): continuous, piecewise smooth. A NaN t gives NaN.
     [[nodiscard]] vec3<T> angular_acceleration(T t) const noexcept {
-        if (cubics_.empty()) return nan_vector();
-        const std::size_t i = segment_of(t);
-        const T s = t - times_[i];
-        const cubic& c = cubics_[i];
-        const vec3<T> r = ((c.a * s + c.b) * s + c.c) * s;
-        const vec3<T> rate = (c.a * (T(3) * s) + c.b * T(2)) * s + c.c;
-        return detail::right_jacobian(r, c.a * (T(6) * s) + c.b * T(2)) +
-               detail::right_jacobian_rate(r, rate);
+        const local_motion m = local(t);
+        return detail::right_jacobian(m.r, m.second) + detail::right_jacobian_rate(m.r, m.rate);
     }
 
     /// out[k] = (*this)(ts[k]) for containers (data() and size(), or C arrays) of equal size
@@ -166,9 +156,21 @@ private:
         vec3<T> a, b, c;
     };
 
-    [[nodiscard]] static vec3<T> nan_vector() noexcept {
-        const T nan = std::numeric_limits<T>::quiet_NaN();
-        return {nan, nan, nan};
+    // The rotation vector from the keyframe before t and its first and second derivatives.
+    struct local_motion {
+        vec3<T> r, rate, second;
+    };
+
+    [[nodiscard]] local_motion local(T t) const noexcept {
+        if (cubics_.empty()) {
+            const T nan = std::numeric_limits<T>::quiet_NaN();
+            return {{nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}};
+        }
+        const std::size_t i = segment_of(t);
+        const T s = t - times_[i];
+        const cubic& c = cubics_[i];
+        return {((c.a * s + c.b) * s + c.c) * s, (c.a * (T(3) * s) + c.b * T(2)) * s + c.c,
+                c.a * (T(6) * s) + c.b * T(2)};
     }
 
     template <class U>
