@@ -309,7 +309,7 @@ TEST_CASE("rotation_spline::try_make rejects bad keyframes", "[rotation_spline][
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double infinity = std::numeric_limits<double>::infinity();
     const Q q = Q::identity(), r{0.6, 0.8, 0.0, 0.0};
-    const auto make = [](std::vector<double> times, std::vector<Q> rotations) {
+    const auto make = [](const std::vector<double>& times, const std::vector<Q>& rotations) {
         return rotation_spline<double>::try_make(times, rotations).has_value();
     };
     CHECK(make({0.0, 1.0, 2.0}, {q, r, q}));
