@@ -27,7 +27,8 @@ std::vector<quaternion<T>> random_walk(quat::test::random_rotations& random, std
                                        double max_angle) {
     std::vector<quaternion<T>> keyframes{random.unit_quaternion<T>()};
     while (keyframes.size() < count) {
-        const vec3<T> step = random.unit_vector<T>() * random.uniform<T>(0.0, max_angle);
+        const vec3<T> axis = random.unit_vector<T>();  // one statement each: a fixed order
+        const vec3<T> step = axis * random.uniform<T>(0.0, max_angle);
         keyframes.push_back(quat::normalize(keyframes.back() * quat::from_rotation_vector(step)));
     }
     for (quaternion<T>& q : keyframes)

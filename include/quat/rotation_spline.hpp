@@ -105,8 +105,8 @@ public:
         return spline;
     }
 
-    /// The rotation at time t (scipy's spline(t)): exactly the keyframe's rotation at its time, up
-    /// to rounding. A NaN t gives NaN.
+    /// The rotation at time t (scipy's spline(t)): at a keyframe's time exactly its (normalized)
+    /// rotation. A NaN t gives NaN.
     [[nodiscard]] quaternion<T> operator()(T t) const noexcept { return at(t, segment_of(t)); }
 
     /// The body-frame angular velocity at time t, radians per unit of time (scipy's spline(t, 1)):
@@ -187,6 +187,8 @@ private:
             const T nan = std::numeric_limits<T>::quiet_NaN();
             return {nan, nan, nan, nan};
         }
+        // The last keyframe is the end of the last segment, where the cubic rounds to ~20 eps.
+        if (t == times_[i + 1]) return rotations_[i + 1];
         const T s = t - times_[i];
         const cubic& c = cubics_[i];
         return rotations_[i] * from_rotation_vector(((c.a * s + c.b) * s + c.c) * s);
