@@ -42,11 +42,12 @@ template <class T>
 /// the local rotation vector, r_i(0) = 0 and r_i(t_(i+1) - t_i) = log(R_i^T R_(i+1)) (the
 /// shorter way), the angular velocities at the first and last keyframes those of the first and
 /// last segments' slerps, and the angular velocities at the inner keyframes solved from the
-/// condition that the angular acceleration is continuous there (F. L. Markley and others,
-/// "Smooth attitude interpolation", scipy issue 2932755 notes). That condition is non-linear in
-/// the velocities; scipy stops its fixed-point iteration after 10 steps, which on some keyframe
-/// sets leaves its spline up to about 1e-3 rad from the C2 one, while quat solves it by Newton's
-/// method to rounding level (the two agree to 1e-9 wherever scipy's iteration has converged).
+/// condition that the angular acceleration is continuous there (the notes "Smooth attitude
+/// interpolation" that scipy's documentation cites, github.com/scipy/scipy/files/2932755). That
+/// condition is non-linear in the velocities; scipy stops its fixed-point iteration after 10
+/// steps, which on some keyframe sets leaves its spline 0.02 rad from the C2 one, while quat solves
+/// it by Newton's method to rounding level (the two agree to 1e-9 wherever scipy's iteration has
+/// converged; docs/keyframes.md).
 /// Before the first and after the last keyframe the end cubics continue, as in scipy.
 ///
 /// Building allocates: the spline keeps N times, N quaternions and N - 1 cubics (17 N - 9
@@ -59,7 +60,8 @@ public:
     /// keyframe) at strictly increasing `times`: containers with data() and size(), or C arrays,
     /// of equal size >= 2. Debug builds check these preconditions; a release build given fewer
     /// than two keyframes or sizes that differ makes a spline that evaluates to NaN, and unsorted
-    /// or non-finite input gives non-finite values. try_make checks the input instead.
+    /// or non-finite input a meaningless (often non-finite) one, never undefined behaviour.
+    /// try_make checks the input instead.
     template <class Times, class Rotations>
     rotation_spline(const Times& times, const Rotations& rotations) {
         const std::size_t count = detail::size_of(times);
