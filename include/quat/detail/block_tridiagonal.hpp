@@ -48,6 +48,14 @@ template <class T>
 }
 
 template <class T>
+[[nodiscard]] constexpr matrix3<T> operator-(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] - b.m[i][j];
+    return result;
+}
+
+template <class T>
 [[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, T s) noexcept {
     matrix3<T> result{};
     for (int i = 0; i < 3; ++i)
@@ -96,7 +104,7 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
     for (std::size_t k = 0; k < count; ++k) {
         if (k > 0) {
             const auto factor = lower(k) * diagonal(k - 1);  // diagonal(k - 1) is inverted
-            diagonal(k) = diagonal(k) + factor * upper(k - 1) * decltype(x(k).x)(-1);
+            diagonal(k) = diagonal(k) - factor * upper(k - 1);
             x(k) -= factor * x(k - 1);
         }
         diagonal(k) = inverse(diagonal(k));
