@@ -88,11 +88,14 @@ inline constexpr std::size_t batch_block_slerp = 128;
 #pragma clang diagnostic ignored "-Wpass-failed"
 #endif
 
-template <class T>
-void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
-                  std::size_t n) noexcept {
+// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
+// so its results carry no added zero.
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                     vec3<T>* output, std::size_t n) noexcept {
     const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
     // Point i is read before it is written and no iteration touches another's point, so the
     // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
 #if defined(__clang__)
@@ -102,8 +105,14 @@ void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* ou
 #endif
     for (std::size_t i = 0; i < n; ++i) {
         const T x = input[i].x, y = input[i].y, z = input[i].z;
-        output[i] = vec3<T>{m00 * x + m01 * y + m02 * z, m10 * x + m11 * y + m12 * z,
-                            m20 * x + m21 * y + m22 * z};
+        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
+          oz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            ox += tx;
+            oy += ty;
+            oz += tz;
+        }
+        output[i] = vec3<T>{ox, oy, oz};
     }
 }
 
@@ -114,24 +123,27 @@ inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
 
 // Rotates block by block into a local buffer, then streams the buffer to memory. The points are
 // written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
-inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input,
-                             vec3<float>* output, std::size_t count) noexcept {
+template <bool Translate>
+void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
+                         const vec3<float>* input, vec3<float>* output,
+                         std::size_t count) noexcept {
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                   "vec3<float> must be three packed floats");
     vec3<float> buffer[batch_block];
     for (std::size_t start = 0; start < count; start += batch_block) {
         const std::size_t n = count - start < batch_block ? count - start : batch_block;
-        rotate_block(m, input + start, buffer, n);
+        transform_block<Translate>(m, t, input + start, buffer, n);
         stream_floats(&output[start].x, &buffer[0].x, 3 * n);
     }
     stream_fence();
 }
 
-template <class T>
-void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* z, T* ox, T* oy,
-                  T* oz, std::size_t n) noexcept {
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
+                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
     const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
     // Each index is read before it is written, so each output array may be its own input array, and
     // there is no dependence between iterations (the documented aliasing rule): say so to the
     // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
@@ -142,9 +154,16 @@ void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* 
 #endif
     for (std::size_t i = 0; i < n; ++i) {
         const T px = x[i], py = y[i], pz = z[i];
-        ox[i] = m00 * px + m01 * py + m02 * pz;
-        oy[i] = m10 * px + m11 * py + m12 * pz;
-        oz[i] = m20 * px + m21 * py + m22 * pz;
+        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
+          rz = m20 * px + m21 * py + m22 * pz;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        ox[i] = rx;
+        oy[i] = ry;
+        oz[i] = rz;
     }
 }
 
@@ -160,6 +179,72 @@ template <class T>
         for (const T* in : {input.x, input.y, input.z})
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
+}
+
+// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
+// and of the rigid transform (rigid_batch.hpp).
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                      vec3<T>* output, std::size_t count) noexcept {
+#if defined(__AVX512F__)
+    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
+    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
+    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
+    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
+    if constexpr (std::is_same_v<T, float>) {
+        if (count * sizeof(vec3<float>) >= streaming_bytes) {
+            transform_streaming<Translate>(m, t, input, output, count);
+            return;
+        }
+    }
+#endif
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    transform_block<Translate>(m, t, input, output, count);
+}
+
+// The struct-of-arrays loop of rotate and of the rigid transform.
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
+                      soa_points<T> output) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS).
+            float rx[batch_block], ry[batch_block], rz[batch_block];
+            for (std::size_t start = 0; start < input.count; start += batch_block) {
+                const std::size_t n =
+                    input.count - start < batch_block ? input.count - start : batch_block;
+                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
+                                           rx, ry, rz, n);
+                stream_floats(output.x + start, rx, n);
+                stream_floats(output.y + start, ry, n);
+                stream_floats(output.z + start, rz, n);
+            }
+            stream_fence();
+            return;
+        }
+    }
+    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
+                               input.count);
+}
+
+// The product f[0] f[1] ... f[count - 1] in four interleaved chains (see compose): for quaternions
+// and dual quaternions alike, anything with identity() and an associative operator*.
+template <class Factor>
+[[nodiscard]] constexpr Factor interleaved_product(const Factor* q, std::size_t count) noexcept {
+    constexpr std::size_t lanes = 4;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        Factor product = Factor::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    Factor acc[lanes] = {Factor::identity(), Factor::identity(), Factor::identity(),
+                         Factor::identity()};
+    for (std::size_t i = 0; i < run; ++i)
+        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
+    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
+    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
 }
 
 // sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
@@ -251,21 +336,7 @@ void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
     QUAT_ASSERT(
         detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
         "quat::rotate: output partially overlaps input");
-#if defined(__AVX512F__)
-    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
-    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
-    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
-    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
-    if constexpr (std::is_same_v<T, float>) {
-        if (count * sizeof(vec3<float>) >= detail::streaming_bytes) {
-            detail::rotate_streaming(m, input, output, count);
-            return;
-        }
-    }
-#endif
-    // Each point is read before it is written, so output == input is safe here; g++ and clang
-    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
-    detail::rotate_block(m, input, output, count);
+    detail::transform_points<false>(m, vec3<T>{}, input, output, count);
 }
 
 /// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
@@ -283,24 +354,7 @@ void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T
     QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
     QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
                 "quat::rotate: an output array partially overlaps an input array");
-    if constexpr (std::is_same_v<T, float>) {
-        if (input.count * 3 * sizeof(float) >= detail::streaming_bytes) {
-            // Out of cache: rotate a block into local arrays, then stream them (as for AoS).
-            constexpr std::size_t block = detail::batch_block;
-            float rx[block], ry[block], rz[block];
-            for (std::size_t start = 0; start < input.count; start += block) {
-                const std::size_t n = input.count - start < block ? input.count - start : block;
-                detail::rotate_block(m, input.x + start, input.y + start, input.z + start, rx, ry,
-                                     rz, n);
-                detail::stream_floats(output.x + start, rx, n);
-                detail::stream_floats(output.y + start, ry, n);
-                detail::stream_floats(output.z + start, rz, n);
-            }
-            detail::stream_fence();
-            return;
-        }
-    }
-    detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
+    detail::transform_points<false>(m, vec3<T>{}, input, output);
 }
 
 /// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
@@ -333,19 +387,7 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 /// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        quaternion<T> product = quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
-                                quaternion<T>::identity(), quaternion<T>::identity()};
-    for (std::size_t i = 0; i < run; ++i)
-        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
-    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
-    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
+    return detail::interleaved_product(q, count);
 }
 
 /// compose over any contiguous container or view of quaternion<T>.

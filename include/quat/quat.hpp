@@ -1,4 +1,5 @@
-// quat — 3D rotations for C++17/20: quaternions, Euler angles, axis-angle and rotation matrices.
+// quat — 3D rotations for C++17/20: quaternions, Euler angles, axis-angle and rotation matrices,
+// and rigid motions as dual quaternions and 4x4 homogeneous matrices.
 // https://opensource.org/licenses/MIT
 //
 // Conventions, everywhere in this library:
@@ -12,6 +13,9 @@
 // - Matrices act on column vectors, v' = M v, and rotate(q, v) == rotate(to_matrix(q), v).
 // - Euler angles carry their axis sequence and frame in their type: euler<T, sequence::zyx,
 //   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the product.
+// - Rigid motions are x -> R x + t, rotation first: a dual quaternion real + eps dual has real = q
+//   and dual = (0, t) q / 2, and a homogeneous matrix is [R t; 0 0 0 1] acting on (x, y, z, 1);
+//   their products compose right to left like the rotations'.
 // - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
 //   and return an empty std::optional instead of NaN.
 #ifndef QUAT_QUAT_HPP_INCLUDED
@@ -21,12 +25,15 @@
 #include "align_vectors.hpp"
 #include "axis_angle.hpp"
 #include "batch.hpp"
+#include "blend.hpp"
 #include "config.hpp"
 #include "constants.hpp"
 #include "continuous_euler.hpp"
 #include "conversions.hpp"
+#include "dual_quaternion.hpp"
 #include "euler.hpp"
 #include "fast_slerp.hpp"
+#include "homogeneous_matrix.hpp"
 #include "interpolation.hpp"
 #include "keyframe_slerp.hpp"
 #include "kinematics.hpp"
@@ -34,8 +41,11 @@
 #include "nearest_rotation.hpp"
 #include "quaternion.hpp"
 #include "random.hpp"
+#include "rigid_batch.hpp"
 #include "rotation_matrix.hpp"
 #include "rotation_spline.hpp"
+#include "sclerp.hpp"
+#include "screw.hpp"
 #include "squad.hpp"
 #include "swing_twist.hpp"
 #include "vec3.hpp"

@@ -1,0 +1,148 @@
+// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
+#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
+#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
+
+#include <optional>
+
+#include "config.hpp"
+#include "detail/math.hpp"
+#include "quaternion.hpp"
+#include "vec3.hpp"
+
+namespace quat {
+
+/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
+/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
+/// dq and -dq are the same motion. Members are public, as for quaternion.
+template <class T>
+struct dual_quaternion {
+    quaternion<T> real;  ///< The rotation.
+    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
+
+    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
+    dual_quaternion() = default;
+    /// The dual quaternion real_part + eps dual_part.
+    constexpr dual_quaternion(const quaternion<T>& real_part,
+                              const quaternion<T>& dual_part) noexcept
+        : real(real_part), dual(dual_part) {}
+    /// Conversion from another precision, component by component.
+    template <class U>
+    constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
+
+    /// The motion that moves nothing: real 1, dual 0.
+    [[nodiscard]] static constexpr dual_quaternion identity() noexcept {
+        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
+    }
+};
+
+using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
+using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
+
+/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
+/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
+                                                              const vec3<T>& translation) noexcept {
+    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
+                             translation.z * T(0.5)};
+    return {rotation, half * rotation};
+}
+
+/// The rotation of the unit dual quaternion dq (its real part).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
+    return dq.real;
+}
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> t = dq.dual * conjugate(dq.real);
+    return {t.x + t.x, t.y + t.y, t.z + t.z};
+}
+
+/// Negation: the same rigid motion.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
+    return {-dq.real, -dq.dual};
+}
+
+/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
+/// 48 multiplications and 40 additions.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
+                                                     const dual_quaternion<T>& b) noexcept {
+    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
+}
+
+/// a = a * b: as rigid motions, b is applied first, then the old a.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
+                                         const dual_quaternion<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Exact component-wise equality; dq == -dq is false although both are one motion.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return a.real == b.real && a.dual == b.dual;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The inverse rigid motion x -> R^T (x - t): (real* + eps dual*) / |real|^2, which is the inverse
+/// of any non-zero multiple of a unit dual quaternion. Precondition: real non-zero, else Inf/NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
+    const T s = squared_norm(dq.real);
+    return {conjugate(dq.real) / s, conjugate(dq.dual) / s};
+}
+
+/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
+/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
+/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
+/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = normalize(dq.real);
+    const quaternion<T> dual = dq.dual / norm(dq.real);
+    return {real, dual - real * dot(real, dual)};
+}
+
+/// normalize(dq), or std::nullopt when the real part is zero or any component is not finite.
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
+    const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T>& d = dq.dual;
+    if (!try_normalize(dq.real) || !detail::is_finite(d.w) || !detail::is_finite(d.x) ||
+        !detail::is_finite(d.y) || !detail::is_finite(d.z))
+        return std::nullopt;
+    return normalize(dq);
+}
+
+/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
+/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real), "quat::transform: real part is not unit");
+    return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
+/// Precondition: |real| = 1 (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
+                                                 const vec3<T>& v) noexcept {
+    return rotate(dq.real, v);
+}
+
+}  // namespace quat
+
+#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED

@@ -1,0 +1,168 @@
+// 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
+// conversions to and from dual quaternions.
+#ifndef QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+#define QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+
+#include <optional>
+
+#include "config.hpp"
+#include "conversions.hpp"
+#include "detail/math.hpp"
+#include "dual_quaternion.hpp"
+#include "quaternion.hpp"
+#include "rotation_matrix.hpp"
+#include "vec3.hpp"
+
+namespace quat {
+
+/// 4x4 matrix stored row-major, acting on column vectors (x, y, z, 1): for a rigid motion the upper
+/// left 3x3 block is the rotation, the last column's first three entries the translation, and the
+/// last row (0, 0, 0, 1). The thesis (its section 2.2) puts the homogeneous coordinate first
+/// instead; docs/thesis-notes.md maps one layout to the other.
+template <class T>
+struct homogeneous_matrix {
+    /// Row-major: elements[row][col].
+    /// @{
+    T elements[4][4];
+    /// @}
+
+    /// Elements left uninitialized, as in a plain struct; homogeneous_matrix<T>{} is zero.
+    homogeneous_matrix() = default;
+    /// The matrix with the given rows: homogeneous_matrix<T>{{{m00, m01, m02, m03}, {...}, ...}}.
+    constexpr homogeneous_matrix(const T (&rows)[4][4]) noexcept
+        : elements{{rows[0][0], rows[0][1], rows[0][2], rows[0][3]},
+                   {rows[1][0], rows[1][1], rows[1][2], rows[1][3]},
+                   {rows[2][0], rows[2][1], rows[2][2], rows[2][3]},
+                   {rows[3][0], rows[3][1], rows[3][2], rows[3][3]}} {}
+    /// Conversion from another precision, element by element.
+    template <class U>
+    constexpr explicit homogeneous_matrix(const homogeneous_matrix<U>& m) noexcept : elements{} {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) elements[i][j] = static_cast<T>(m.elements[i][j]);
+    }
+
+    /// Element at (row, col), both in [0, 4).
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
+        return elements[row][col];
+    }
+    /// Element at (row, col), read-only.
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
+        return elements[row][col];
+    }
+
+    /// The motion that moves nothing.
+    [[nodiscard]] static constexpr homogeneous_matrix identity() noexcept {
+        return {{{T(1), T(0), T(0), T(0)},
+                 {T(0), T(1), T(0), T(0)},
+                 {T(0), T(0), T(1), T(0)},
+                 {T(0), T(0), T(0), T(1)}}};
+    }
+};
+
+/// Matrix product: as motions, a * b applies b first, then a. 64 multiplications, 48 additions.
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> operator*(const homogeneous_matrix<T>& a,
+                                                        const homogeneous_matrix<T>& b) noexcept {
+    homogeneous_matrix<T> product{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            product(i, j) =
+                a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j) + a(i, 3) * b(3, j);
+    return product;
+}
+
+/// a = a * b: as motions, b is applied first, then the old a.
+template <class T>
+constexpr homogeneous_matrix<T>& operator*=(homogeneous_matrix<T>& a,
+                                            const homogeneous_matrix<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Exact element-wise equality.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const homogeneous_matrix<T>& a,
+                                        const homogeneous_matrix<T>& b) noexcept {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const homogeneous_matrix<T>& a,
+                                        const homogeneous_matrix<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The upper left 3x3 block: the rotation of a rigid motion.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> rotation_block(const homogeneous_matrix<T>& m) noexcept {
+    return {
+        {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}}};
+}
+
+/// The first three entries of the last column: the translation of a rigid motion.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const homogeneous_matrix<T>& m) noexcept {
+    return {m(0, 3), m(1, 3), m(2, 3)};
+}
+
+/// M (p, 1) without its last coordinate: R p + t. Precondition: last row (0, 0, 0, 1), which is
+/// not read.
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const homogeneous_matrix<T>& m,
+                                          const vec3<T>& p) noexcept {
+    return rotate(rotation_block(m), p) + translation_of(m);
+}
+
+/// M (v, 0) without its last coordinate: R v, a direction turned and not translated.
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const homogeneous_matrix<T>& m,
+                                                 const vec3<T>& v) noexcept {
+    return rotate(rotation_block(m), v);
+}
+
+/// The 4x4 matrix of the unit dual quaternion dq: rotation block to_matrix(dq.real), last column
+/// translation_of(dq), last row (0, 0, 0, 1). Precondition: unit dq (normalize gives one).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const dual_quaternion<T>& dq) noexcept {
+    const rotation_matrix<T> r = to_matrix(dq.real);
+    const vec3<T> t = translation_of(dq);
+    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
+             {r(1, 0), r(1, 1), r(1, 2), t.y},
+             {r(2, 0), r(2, 1), r(2, 2), t.z},
+             {T(0), T(0), T(0), T(1)}}};
+}
+
+/// The unit dual quaternion (real part w >= 0) of the rigid motion m, exact at half turns (through
+/// to_quaternion). Precondition: m is rigid; try_to_dual_quaternion checks untrusted matrices.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const homogeneous_matrix<T>& m) noexcept {
+    return to_dual_quaternion(to_quaternion(rotation_block(m)), translation_of(m));
+}
+
+/// to_dual_quaternion(m), or std::nullopt when m is not a rigid motion: an element not finite, a
+/// last row off (0, 0, 0, 1) by more than tolerance, or a rotation block that try_to_quaternion
+/// rejects (a reflection, or orthogonality_error above tolerance).
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_to_dual_quaternion(
+    const homogeneous_matrix<T>& m,
+    detail::type_identity_t<T> tolerance = default_orthogonality_tolerance<T>()) noexcept {
+    for (int j = 0; j < 4; ++j) {
+        if (!detail::is_finite(m(0, j)) || !detail::is_finite(m(1, j)) ||
+            !detail::is_finite(m(2, j)))
+            return std::nullopt;
+        if (!(detail::abs(m(3, j) - (j == 3 ? T(1) : T(0))) <= tolerance)) return std::nullopt;
+    }
+    const std::optional<quaternion<T>> rotation = try_to_quaternion(rotation_block(m), tolerance);
+    if (!rotation) return std::nullopt;
+    return to_dual_quaternion(*rotation, translation_of(m));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
