@@ -60,3 +60,63 @@ TEST_CASE("Table 3.1: build the rotation from Euler angles or axis-angle, rotate
     check(matrix_from_axis_angle(), {16, 21, 0, 0, 2});
     check(quaternion_from_axis_angle(), {23, 29, 0, 0, 2});
 }
+
+namespace {
+quat::operation_counts plus(const quat::operation_counts& a, const quat::operation_counts& b) {
+    return {a.add + b.add, a.mul + b.mul, a.div + b.div, a.sqrt + b.sqrt, a.trig + b.trig};
+}
+}  // namespace
+
+TEST_CASE("rigid motion: build from rotation + translation, move one point", "[counts]") {
+    using namespace bench::count_cases;
+    // 4x4: to_matrix(q) (9 mul, 15 add); t and the last row (0, 0, 0, 1) are copies.
+    check(rigid_build_matrix(), {15, 9, 0, 0, 0});
+    // Dual quaternion: t/2 (3 mul), then the Hamilton product (0, t/2) q (16 mul, 12 add).
+    check(rigid_build_dual(), {12, 19, 0, 0, 0});
+    // Pair: q and t are stored as given.
+    check(rigid_build_pair(), {0, 0, 0, 0, 0});
+    // Full 4x4 x (x, y, z, 1): 4 rows of 4 mul, 3 add, the known last row and the * 1 included.
+    check(rigid_point_matrix_full(), {12, 16, 0, 0, 0});
+    // transform(m, p): R p (9 mul, 6 add) + t (3 add); the last row is not read.
+    check(rigid_point_matrix(), {9, 9, 0, 0, 0});
+    // rotate(q, p) (25/23) + t = 2 (dual real*)'s vector part (12 mul, 9 + 3 add) + 3 add, t
+    // rebuilt per call.
+    check(rigid_point_dual(), {38, 37, 0, 0, 0});
+    // rotate(q, p) (25 mul, 23 add) + t (3 add).
+    check(rigid_point_pair(), {26, 25, 0, 0, 0});
+    // to_homogeneous(dq) once (25 mul, 30 add, < 1 per point over 1024), then R p + t per point.
+    check(rigid_batch_dual_per_point(1024), {9, 9, 0, 0, 0});
+    // Build and one point counted together: exactly the two parts.
+    CHECK(rigid_once_matrix_full() == plus(rigid_build_matrix(), rigid_point_matrix_full()));
+    CHECK(rigid_once_matrix() == plus(rigid_build_matrix(), rigid_point_matrix()));
+    CHECK(rigid_once_dual() == plus(rigid_build_dual(), rigid_point_dual()));
+    CHECK(rigid_once_pair() == plus(rigid_build_pair(), rigid_point_pair()));
+    check(rigid_once_matrix_full(), {27, 25, 0, 0, 0});
+    check(rigid_once_matrix(), {24, 18, 0, 0, 0});
+    check(rigid_once_dual(), {50, 56, 0, 0, 0});
+    check(rigid_once_pair(), {26, 25, 0, 0, 0});
+}
+
+TEST_CASE("rigid motion: composing two; the 3x4 affine product is cheapest", "[counts]") {
+    using namespace bench::count_cases;
+    // 16 entries, each a length-4 dot product (4 mul, 3 add).
+    check(rigid_compose_matrix_full(), {48, 64, 0, 0, 0});
+    // Last rows known: R_a R_b (27 mul, 18 add) + R_a t_b (9 mul, 6 add) + t_a (3 add).
+    check(rigid_compose_affine(), {27, 36, 0, 0, 0});
+    // real: a.r b.r; dual: a.r b.d + a.d b.r; three Hamilton products (16/12) and a sum (4 add).
+    check(rigid_compose_dual(), {40, 48, 0, 0, 0});
+    // q_a q_b (16 mul, 12 add) + rotate(q_a, t_b) (25 mul, 23 add) + t_a (3 add).
+    check(rigid_compose_pair(), {38, 41, 0, 0, 0});
+    // to_matrix(real) (9 mul, 15 add) + translation_of (12 mul, 12 add).
+    check(dual_to_homogeneous(), {27, 21, 0, 0, 0});
+}
+
+TEST_CASE("Table 3.2 for rigid motions: the types store their scalars and nothing else",
+          "[counts]") {
+    // 4x4 matrix 16, dual quaternion 8, quaternion + translation 4 + 3 (no 3x4 type in quat).
+    CHECK(sizeof(quat::homogeneous_matrix<double>) == 16 * sizeof(double));
+    CHECK(sizeof(quat::homogeneous_matrix<float>) == 16 * sizeof(float));
+    CHECK(sizeof(quat::dual_quaternion<double>) == 8 * sizeof(double));
+    CHECK(sizeof(quat::dual_quaternion<float>) == 8 * sizeof(float));
+    CHECK(sizeof(quat::quaternion<double>) + sizeof(quat::vec3<double>) == 7 * sizeof(double));
+}

@@ -317,4 +317,27 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     std::vector<quaternion<R>> slerped(3);
     slerp(a, b, ts, slerped);
     check_same(slerped[1], slerp(ad, bd, 0.3));
+
+    // Rigid motions (issue 15).
+    const dual_quaternion<R> da = to_dual_quaternion(a, vec3<R>{r(1), r(-2), r(0.5)});
+    const dual_quaternion<R> db = to_dual_quaternion(b, vec3<R>{r(0.3), r(0), r(2)});
+    const dual_quaterniond dad = to_dual_quaternion(ad, vec3<double>{1, -2, 0.5});
+    const dual_quaterniond dbd = to_dual_quaternion(bd, vec3<double>{0.3, 0, 2});
+    check_same((da * db).dual, (dad * dbd).dual);
+    check_same(inverse(da).dual, inverse(dad).dual);
+    check_same(normalize(da).dual, normalize(dad).dual);
+    CHECK(same(transform(da, vec3<R>{r(1), r(2), r(3)}).z, transform(dad, vd).z));
+    CHECK(same(translation_of(to_homogeneous(da)).y, translation_of(to_homogeneous(dad)).y));
+    check_same(to_dual_quaternion(to_homogeneous(db)).dual,
+               to_dual_quaternion(to_homogeneous(dbd)).dual);
+    CHECK(same(to_screw(da).displacement, to_screw(dad).displacement));
+    check_same(from_screw(to_screw(db)).dual, from_screw(to_screw(dbd)).dual);
+    check_same(sclerp(da, db, r(0.3)).dual, sclerp(dad, dbd, 0.3).dual);
+    const std::vector<dual_quaternion<R>> bones{da, db};
+    const std::vector<dual_quaterniond> bones_d{dad, dbd};
+    check_same(blend(bones, std::vector<R>{r(0.3), r(0.7)}).dual,
+               blend(bones_d, std::vector<double>{0.3, 0.7}).dual);
+    check_same(compose(bones).dual, compose(bones_d).dual);
+    transform(da, points, rotated);
+    CHECK(same(rotated[1].x, transform(dad, vd).x));
 }

@@ -88,6 +88,12 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
                                            {T(1), T(0), T(0), T(0)}};
     CHECK(text_of(parts) ==
           "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
+    const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
+    CHECK(text_of(motion) == "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
+    CHECK(text_of(quat::to_homogeneous(motion)) ==
+          "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
+    const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};
+    CHECK(text_of(s) == "screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}");
     // The stream's default precision is 6 significant digits, for every T alike.
     CHECK(text_of(vec3<T>{T(1) / T(3), T(2) / T(3), T(-100) / T(3)}) ==
           "vec3{0.333333, 0.666667, -33.3333}");

@@ -57,6 +57,13 @@ TEMPLATE_TEST_CASE("std::format prints the documented format", "[io][format]", f
                                            {T(1), T(0), T(0), T(0)}};
     CHECK(std::format("{}", parts) ==
           "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
+    const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
+    CHECK(std::format("{}", motion) ==
+          "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
+    CHECK(std::format("{}", quat::to_homogeneous(motion)) ==
+          "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
+    const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};
+    CHECK(std::format("{}", s) == "screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}");
 }
 
 TEST_CASE("std::format's default is the shortest text that reads back", "[io][format]") {

@@ -41,6 +41,10 @@ template <class T>
 bool bad(const axis_angle<T>& a) {
     return bad(a.axis) || bad(a.angle);
 }
+template <class T>
+bool bad(const quat::screw<T>& s) {
+    return bad(s.direction) || bad(s.moment) || bad(s.angle) || bad(s.displacement);
+}
 template <class T, sequence S, quat::frame F>
 bool bad(const quat::euler<T, S, F>& e) {
     return bad(e[0]) || bad(e[1]) || bad(e[2]);
@@ -249,6 +253,47 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(slerped[5]));
         quat::slerp(unit, q, ts.data(), slerped.data(), 4);
         CHECK(bad(slerped[0]));
+
+        // dual_quaternion.hpp, homogeneous_matrix.hpp, screw.hpp, sclerp.hpp, blend.hpp,
+        // rigid_batch.hpp
+        const auto motion = quat::to_dual_quaternion(unit, in.good_vector);
+        const auto bad_rotation = quat::to_dual_quaternion(q, in.good_vector);
+        const auto bad_translation = quat::to_dual_quaternion(unit, v);
+        CHECK(bad(quat::translation_of(bad_translation)));
+        CHECK(bad(quat::translation_of(bad_rotation)));
+        CHECK(bad((motion * bad_translation).dual));
+        CHECK(bad((bad_rotation * motion).real));
+        CHECK(bad(quat::inverse(bad_rotation).real));
+        CHECK(bad(quat::normalize(bad_translation).dual));
+        CHECK(bad(quat::normalize(bad_rotation).real));
+        CHECK_FALSE(quat::try_normalize(bad_translation).has_value());
+        CHECK(bad(quat::transform(motion, v)));
+        CHECK(bad(quat::transform(bad_translation, in.good_vector)));
+        CHECK(bad(quat::transform_vector(motion, v)));
+        const quat::homogeneous_matrix<T> h = quat::to_homogeneous(bad_translation);
+        CHECK(bad(quat::transform(h, in.good_vector)));
+        CHECK(bad(quat::translation_of(quat::to_dual_quaternion(h))));
+        CHECK_FALSE(quat::try_to_dual_quaternion(h).has_value());
+        CHECK(bad(quat::to_screw(bad_translation)));
+        CHECK(bad(quat::to_screw(bad_rotation)));
+        CHECK(bad(quat::from_screw(quat::screw<T>{in.good_vector, v, T(1), T(2)}).dual));
+        CHECK(bad(quat::sclerp(motion, bad_translation, T(0.5)).dual));
+        CHECK(bad(quat::sclerp(motion, bad_translation, T(0)).dual));
+        CHECK(bad(quat::sclerp(bad_translation, motion, T(1)).dual));
+        CHECK(bad(quat::sclerp(motion, motion, value).real));
+        const std::vector<quat::dual_quaternion<T>> bones{motion, bad_translation};
+        CHECK(bad(quat::blend(bones, std::vector<T>{T(0.5), T(0.5)}).dual));
+        const std::vector<quat::dual_quaternion<T>> good_bones{motion, motion};
+        CHECK(bad(quat::blend(good_bones, std::vector<T>{T(0.5), value}).real));
+        quat::transform(motion, points, rotated);
+        CHECK(bad(rotated[7]));
+        CHECK_FALSE(bad(rotated[8]));
+        quat::transform(h, quat::soa_points<const T>{x.data(), y.data(), z.data(), 40},
+                        quat::soa_points<T>{ox.data(), oy.data(), oz.data(), 40});
+        CHECK(bad(vec3<T>{ox[0], oy[0], oz[0]}));
+        std::vector<quat::dual_quaternion<T>> chain(20, motion);
+        chain[13] = bad_rotation;
+        CHECK(bad(quat::compose(chain).real));
     }
 }
 

@@ -63,6 +63,7 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     std::vector<quat::vec3<float>> points(n, quat::vec3<float>{1, 2, 3}), out(n);
     std::vector<float> xs(n, 1.0f), ys(n, 2.0f), zs(n, 3.0f), ox(n), oy(n), oz(n), ts(n, 0.25f);
     std::vector<quat::quatf> factors(n, a), slerped(n);
+    std::vector<quat::dual_quaternionf> bones(n);
     // The streaming path (beyond 16 MiB) is its own branch; allocate its arrays before counting.
     const std::size_t big = (std::size_t(16) << 20) / sizeof(quat::vec3<float>) + 7;
     std::vector<quat::vec3<float>> big_points(big, quat::vec3<float>{1, 0, 0}), big_out(big);
@@ -107,6 +108,19 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     sink += quat::rotate_towards(a, b, 0.1f).w + quat::body_angular_velocity(a, b, 0.1f).x;
     sink += quat::integrate_world(a, u, 0.1f).w + quat::to_mrp(a).x + quat::from_mrp(u).w;
     sink += quat::to_euler(a, quat::euler<float>{0.1f, 0.2f, 0.3f})[0];
+    // Issue 15: rigid motions.
+    const auto da = quat::to_dual_quaternion(a, u), db = quat::to_dual_quaternion(b, v);
+    sink += (da * db).dual.x + quat::inverse(da).dual.y + quat::normalize(db).dual.z;
+    sink += quat::try_normalize(da)->real.w + quat::transform(da, u).x;
+    sink += quat::to_dual_quaternion(quat::to_homogeneous(da)).real.w;
+    sink += quat::try_to_dual_quaternion(quat::to_homogeneous(db))->dual.w;
+    sink += quat::from_screw(quat::to_screw(da)).dual.x + quat::sclerp(da, db, 0.3f).dual.y;
+    for (quat::dual_quaternionf& bone : bones) bone = da;
+    sink += quat::blend(bones, xs).real.w + quat::compose(bones).real.x;
+    quat::transform(da, points, out);
+    quat::transform(quat::to_homogeneous(db), big_points, big_out);
+    quat::transform(da, quat::soa_points<const float>{xs.data(), ys.data(), zs.data(), n},
+                    quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
     const long after = allocations.load();
 
     CHECK(after == before);

@@ -59,8 +59,14 @@ template <class T>
 /// Precondition: |real| = 1; a real part of norm s gives s^2 t.
 template <class T>
 [[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> t = dq.dual * conjugate(dq.real);
-    return {t.x + t.x, t.y + t.y, t.z + t.z};
+    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    const quaternion<T>& r = dq.real;
+    const quaternion<T>& d = dq.dual;
+    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
+                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
+                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
+    return half + half;
 }
 
 /// Negation: the same rigid motion.
@@ -131,7 +137,8 @@ template <class T>
 /// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
 template <class T>
 [[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real), "quat::transform: real part is not unit");
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform: the real part is not a unit quaternion");
     return rotate(dq.real, p) + translation_of(dq);
 }
 

@@ -11,6 +11,9 @@
 //   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
 //   alignment_with_sensitivity{quaternion{...}, 0.25, true, rotation_matrix{...}}
 //   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
+//   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
+//   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
+//   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
 //   zyx   intrinsic                                           sequence and frame: their names
 //
 // operator<< works like std::complex's: the stream's flags, precision and locale apply to every
@@ -41,9 +44,12 @@
 
 #include "align_vectors.hpp"
 #include "axis_angle.hpp"
+#include "dual_quaternion.hpp"
 #include "euler.hpp"
+#include "homogeneous_matrix.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
+#include "screw.hpp"
 #include "swing_twist.hpp"
 #include "vec3.hpp"
 
@@ -167,6 +173,38 @@ void write_layout(Printer& p, const swing_twist_parts<T>& parts) {
     write_layout(p, parts.swing);
     p.text(", ");
     write_layout(p, parts.twist);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const dual_quaternion<T>& dq) {
+    p.text("dual_quaternion{");
+    write_layout(p, dq.real);
+    p.text(", ");
+    write_layout(p, dq.dual);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const homogeneous_matrix<T>& m) {
+    p.text("homogeneous_matrix{");
+    for (int row = 0; row < 4; ++row) {
+        if (row > 0) p.text(", ");
+        write_braced(p, m(row, 0), m(row, 1), m(row, 2), m(row, 3));
+    }
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const screw<T>& s) {
+    p.text("screw{");
+    write_layout(p, s.direction);
+    p.text(", ");
+    write_layout(p, s.moment);
+    p.text(", ");
+    p.value(s.angle);
+    p.text(", ");
+    p.value(s.displacement);
     p.text("}");
 }
 
@@ -339,6 +377,29 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, parts);
 }
 
+/// Prints dual_quaternion{quaternion{...}, quaternion{...}}, real then dual; stream settings as for
+/// vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const dual_quaternion<T>& dq) {
+    return detail::print_to_stream(os, dq);
+}
+
+/// Prints homogeneous_matrix{{m00, m01, m02, m03}, ..., {m30, m31, m32, m33}}, row by row; stream
+/// settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const homogeneous_matrix<T>& m) {
+    return detail::print_to_stream(os, m);
+}
+
+/// Prints screw{vec3{direction}, vec3{moment}, angle, displacement}; stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const screw<T>& s) {
+    return detail::print_to_stream(os, s);
+}
+
 }  // namespace quat
 
 #if defined(__cpp_lib_format) && __has_include(<format>)
@@ -395,6 +456,21 @@ struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
 template <class T, class CharT>
 struct formatter<::quat::swing_twist_parts<T>, CharT>
     : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
+
+/// Formats dual_quaternion{quaternion{...}, quaternion{...}}; the spec applies to each component.
+template <class T, class CharT>
+struct formatter<::quat::dual_quaternion<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::dual_quaternion<T>, std::formatter<T, CharT>> {};
+
+/// Formats homogeneous_matrix{{m00, m01, m02, m03}, ...} by rows; the spec applies to each element.
+template <class T, class CharT>
+struct formatter<::quat::homogeneous_matrix<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::homogeneous_matrix<T>, std::formatter<T, CharT>> {};
+
+/// Formats screw{vec3{...}, vec3{...}, angle, displacement}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::screw<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>

@@ -26,7 +26,8 @@
 #pragma once
 
 // ---- begin quat/quat.hpp ----
-// quat — 3D rotations for C++17/20: quaternions, Euler angles, axis-angle and rotation matrices.
+// quat — 3D rotations for C++17/20: quaternions, Euler angles, axis-angle and rotation matrices,
+// and rigid motions as dual quaternions and 4x4 homogeneous matrices.
 // https://opensource.org/licenses/MIT
 //
 // Conventions, everywhere in this library:
@@ -40,6 +41,9 @@
 // - Matrices act on column vectors, v' = M v, and rotate(q, v) == rotate(to_matrix(q), v).
 // - Euler angles carry their axis sequence and frame in their type: euler<T, sequence::zyx,
 //   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the product.
+// - Rigid motions are x -> R x + t, rotation first: a dual quaternion real + eps dual has real = q
+//   and dual = (0, t) q / 2, and a homogeneous matrix is [R t; 0 0 0 1] acting on (x, y, z, 1);
+//   their products compose right to left like the rotations'.
 // - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
 //   and return an empty std::optional instead of NaN.
 #ifndef QUAT_QUAT_HPP_INCLUDED
@@ -2151,11 +2155,14 @@ inline constexpr std::size_t batch_block_slerp = 128;
 #pragma clang diagnostic ignored "-Wpass-failed"
 #endif
 
-template <class T>
-void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
-                  std::size_t n) noexcept {
+// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
+// so its results carry no added zero.
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                     vec3<T>* output, std::size_t n) noexcept {
     const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
     // Point i is read before it is written and no iteration touches another's point, so the
     // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
 #if defined(__clang__)
@@ -2165,8 +2172,14 @@ void rotate_block(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* ou
 #endif
     for (std::size_t i = 0; i < n; ++i) {
         const T x = input[i].x, y = input[i].y, z = input[i].z;
-        output[i] = vec3<T>{m00 * x + m01 * y + m02 * z, m10 * x + m11 * y + m12 * z,
-                            m20 * x + m21 * y + m22 * z};
+        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
+          oz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            ox += tx;
+            oy += ty;
+            oz += tz;
+        }
+        output[i] = vec3<T>{ox, oy, oz};
     }
 }
 
@@ -2177,24 +2190,27 @@ inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
 
 // Rotates block by block into a local buffer, then streams the buffer to memory. The points are
 // written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
-inline void rotate_streaming(const rotation_matrix<float>& m, const vec3<float>* input,
-                             vec3<float>* output, std::size_t count) noexcept {
+template <bool Translate>
+void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
+                         const vec3<float>* input, vec3<float>* output,
+                         std::size_t count) noexcept {
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                   "vec3<float> must be three packed floats");
     vec3<float> buffer[batch_block];
     for (std::size_t start = 0; start < count; start += batch_block) {
         const std::size_t n = count - start < batch_block ? count - start : batch_block;
-        rotate_block(m, input + start, buffer, n);
+        transform_block<Translate>(m, t, input + start, buffer, n);
         stream_floats(&output[start].x, &buffer[0].x, 3 * n);
     }
     stream_fence();
 }
 
-template <class T>
-void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* z, T* ox, T* oy,
-                  T* oz, std::size_t n) noexcept {
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
+                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
     const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
     // Each index is read before it is written, so each output array may be its own input array, and
     // there is no dependence between iterations (the documented aliasing rule): say so to the
     // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
@@ -2205,9 +2221,16 @@ void rotate_block(const rotation_matrix<T>& m, const T* x, const T* y, const T* 
 #endif
     for (std::size_t i = 0; i < n; ++i) {
         const T px = x[i], py = y[i], pz = z[i];
-        ox[i] = m00 * px + m01 * py + m02 * pz;
-        oy[i] = m10 * px + m11 * py + m12 * pz;
-        oz[i] = m20 * px + m21 * py + m22 * pz;
+        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
+          rz = m20 * px + m21 * py + m22 * pz;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        ox[i] = rx;
+        oy[i] = ry;
+        oz[i] = rz;
     }
 }
 
@@ -2223,6 +2246,72 @@ template <class T>
         for (const T* in : {input.x, input.y, input.z})
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
+}
+
+// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
+// and of the rigid transform (rigid_batch.hpp).
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                      vec3<T>* output, std::size_t count) noexcept {
+#if defined(__AVX512F__)
+    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
+    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
+    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
+    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
+    if constexpr (std::is_same_v<T, float>) {
+        if (count * sizeof(vec3<float>) >= streaming_bytes) {
+            transform_streaming<Translate>(m, t, input, output, count);
+            return;
+        }
+    }
+#endif
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    transform_block<Translate>(m, t, input, output, count);
+}
+
+// The struct-of-arrays loop of rotate and of the rigid transform.
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
+                      soa_points<T> output) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS).
+            float rx[batch_block], ry[batch_block], rz[batch_block];
+            for (std::size_t start = 0; start < input.count; start += batch_block) {
+                const std::size_t n =
+                    input.count - start < batch_block ? input.count - start : batch_block;
+                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
+                                           rx, ry, rz, n);
+                stream_floats(output.x + start, rx, n);
+                stream_floats(output.y + start, ry, n);
+                stream_floats(output.z + start, rz, n);
+            }
+            stream_fence();
+            return;
+        }
+    }
+    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
+                               input.count);
+}
+
+// The product f[0] f[1] ... f[count - 1] in four interleaved chains (see compose): for quaternions
+// and dual quaternions alike, anything with identity() and an associative operator*.
+template <class Factor>
+[[nodiscard]] constexpr Factor interleaved_product(const Factor* q, std::size_t count) noexcept {
+    constexpr std::size_t lanes = 4;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        Factor product = Factor::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    Factor acc[lanes] = {Factor::identity(), Factor::identity(), Factor::identity(),
+                         Factor::identity()};
+    for (std::size_t i = 0; i < run; ++i)
+        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
+    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
+    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
 }
 
 // sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
@@ -2314,21 +2403,7 @@ void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
     QUAT_ASSERT(
         detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
         "quat::rotate: output partially overlaps input");
-#if defined(__AVX512F__)
-    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
-    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
-    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
-    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
-    if constexpr (std::is_same_v<T, float>) {
-        if (count * sizeof(vec3<float>) >= detail::streaming_bytes) {
-            detail::rotate_streaming(m, input, output, count);
-            return;
-        }
-    }
-#endif
-    // Each point is read before it is written, so output == input is safe here; g++ and clang
-    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
-    detail::rotate_block(m, input, output, count);
+    detail::transform_points<false>(m, vec3<T>{}, input, output, count);
 }
 
 /// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
@@ -2346,24 +2421,7 @@ void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T
     QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
     QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
                 "quat::rotate: an output array partially overlaps an input array");
-    if constexpr (std::is_same_v<T, float>) {
-        if (input.count * 3 * sizeof(float) >= detail::streaming_bytes) {
-            // Out of cache: rotate a block into local arrays, then stream them (as for AoS).
-            constexpr std::size_t block = detail::batch_block;
-            float rx[block], ry[block], rz[block];
-            for (std::size_t start = 0; start < input.count; start += block) {
-                const std::size_t n = input.count - start < block ? input.count - start : block;
-                detail::rotate_block(m, input.x + start, input.y + start, input.z + start, rx, ry,
-                                     rz, n);
-                detail::stream_floats(output.x + start, rx, n);
-                detail::stream_floats(output.y + start, ry, n);
-                detail::stream_floats(output.z + start, rz, n);
-            }
-            detail::stream_fence();
-            return;
-        }
-    }
-    detail::rotate_block(m, input.x, input.y, input.z, output.x, output.y, output.z, input.count);
+    detail::transform_points<false>(m, vec3<T>{}, input, output);
 }
 
 /// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
@@ -2396,19 +2454,7 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 /// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        quaternion<T> product = quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
-                                quaternion<T>::identity(), quaternion<T>::identity()};
-    for (std::size_t i = 0; i < run; ++i)
-        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
-    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
-    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
+    return detail::interleaved_product(q, count);
 }
 
 /// compose over any contiguous container or view of quaternion<T>.
@@ -2452,6 +2498,207 @@ void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
 
 #endif  // QUAT_BATCH_HPP_INCLUDED
 // ---- end quat/batch.hpp ----
+// ---- begin quat/blend.hpp ----
+// Dual-quaternion linear blending of rigid motions (Kavan, Collins, Zara and O'Sullivan, "Skinning
+// with dual quaternions", I3D 2007): skinning without the collapse of blended matrices.
+#ifndef QUAT_BLEND_HPP_INCLUDED
+#define QUAT_BLEND_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+// ---- begin quat/dual_quaternion.hpp ----
+// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
+#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
+#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
+
+#include <optional>
+
+
+namespace quat {
+
+/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
+/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
+/// dq and -dq are the same motion. Members are public, as for quaternion.
+template <class T>
+struct dual_quaternion {
+    quaternion<T> real;  ///< The rotation.
+    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
+
+    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
+    dual_quaternion() = default;
+    /// The dual quaternion real_part + eps dual_part.
+    constexpr dual_quaternion(const quaternion<T>& real_part,
+                              const quaternion<T>& dual_part) noexcept
+        : real(real_part), dual(dual_part) {}
+    /// Conversion from another precision, component by component.
+    template <class U>
+    constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
+
+    /// The motion that moves nothing: real 1, dual 0.
+    [[nodiscard]] static constexpr dual_quaternion identity() noexcept {
+        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
+    }
+};
+
+using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
+using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
+
+/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
+/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
+                                                              const vec3<T>& translation) noexcept {
+    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
+                             translation.z * T(0.5)};
+    return {rotation, half * rotation};
+}
+
+/// The rotation of the unit dual quaternion dq (its real part).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
+    return dq.real;
+}
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
+    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    const quaternion<T>& r = dq.real;
+    const quaternion<T>& d = dq.dual;
+    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
+                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
+                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
+    return half + half;
+}
+
+/// Negation: the same rigid motion.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
+    return {-dq.real, -dq.dual};
+}
+
+/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
+/// 48 multiplications and 40 additions.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
+                                                     const dual_quaternion<T>& b) noexcept {
+    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
+}
+
+/// a = a * b: as rigid motions, b is applied first, then the old a.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
+                                         const dual_quaternion<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Exact component-wise equality; dq == -dq is false although both are one motion.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return a.real == b.real && a.dual == b.dual;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The inverse rigid motion x -> R^T (x - t): (real* + eps dual*) / |real|^2, which is the inverse
+/// of any non-zero multiple of a unit dual quaternion. Precondition: real non-zero, else Inf/NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
+    const T s = squared_norm(dq.real);
+    return {conjugate(dq.real) / s, conjugate(dq.dual) / s};
+}
+
+/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
+/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
+/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
+/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = normalize(dq.real);
+    const quaternion<T> dual = dq.dual / norm(dq.real);
+    return {real, dual - real * dot(real, dual)};
+}
+
+/// normalize(dq), or std::nullopt when the real part is zero or any component is not finite.
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
+    const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T>& d = dq.dual;
+    if (!try_normalize(dq.real) || !detail::is_finite(d.w) || !detail::is_finite(d.x) ||
+        !detail::is_finite(d.y) || !detail::is_finite(d.z))
+        return std::nullopt;
+    return normalize(dq);
+}
+
+/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
+/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform: the real part is not a unit quaternion");
+    return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
+/// Precondition: |real| = 1 (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
+                                                 const vec3<T>& v) noexcept {
+    return rotate(dq.real, v);
+}
+
+}  // namespace quat
+
+#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
+// ---- end quat/dual_quaternion.hpp ----
+
+namespace quat {
+
+/// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
+/// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
+/// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
+/// twisted by 180 degrees keeps its volume. Weights need not sum to 1 (normalization removes the
+/// scale) and may be negative. Preconditions: unit transforms; a zero blended real part (count 0,
+/// zero weights, or weights cancelling) gives NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
+                                                 const T* weights, std::size_t count) noexcept {
+    quaternion<T> real{T(0), T(0), T(0), T(0)}, dual{T(0), T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = dot(transforms[i].real, transforms[0].real) < T(0) ? -weights[i] : weights[i];
+        real += transforms[i].real * w;
+        dual += transforms[i].dual * w;
+    }
+    return normalize(dual_quaternion<T>{real, dual});
+}
+
+/// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
+/// dual_quaternion<T> and of T. Precondition: equal sizes (checked in debug builds).
+template <class Transforms, class Weights,
+          class T = std::remove_cv_t<
+              std::remove_pointer_t<decltype(detail::data_of(std::declval<const Weights&>()))>>>
+[[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
+                                                 const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),
+                "quat::blend: transforms and weights differ in size");
+    return blend(static_cast<const dual_quaternion<T>*>(detail::data_of(transforms)),
+                 detail::data_of(weights), detail::size_of(weights));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_BLEND_HPP_INCLUDED
+// ---- end quat/blend.hpp ----
 // ---- begin quat/constants.hpp ----
 // Mathematical constants, as C++20's <numbers> has them, in every language mode.
 #ifndef QUAT_CONSTANTS_HPP_INCLUDED
@@ -2904,6 +3151,169 @@ template <class T>
 
 #endif  // QUAT_FAST_SLERP_HPP_INCLUDED
 // ---- end quat/fast_slerp.hpp ----
+// ---- begin quat/homogeneous_matrix.hpp ----
+// 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
+// conversions to and from dual quaternions.
+#ifndef QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+#define QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+
+#include <optional>
+
+
+namespace quat {
+
+/// 4x4 matrix stored row-major, acting on column vectors (x, y, z, 1): for a rigid motion the upper
+/// left 3x3 block is the rotation, the last column's first three entries the translation, and the
+/// last row (0, 0, 0, 1). The thesis (its section 2.2) puts the homogeneous coordinate first
+/// instead; docs/thesis-notes.md maps one layout to the other.
+template <class T>
+struct homogeneous_matrix {
+    /// Row-major: elements[row][col].
+    /// @{
+    T elements[4][4];
+    /// @}
+
+    /// Elements left uninitialized, as in a plain struct; homogeneous_matrix<T>{} is zero.
+    homogeneous_matrix() = default;
+    /// The matrix with the given rows: homogeneous_matrix<T>{{{m00, m01, m02, m03}, {...}, ...}}.
+    constexpr homogeneous_matrix(const T (&rows)[4][4]) noexcept
+        : elements{{rows[0][0], rows[0][1], rows[0][2], rows[0][3]},
+                   {rows[1][0], rows[1][1], rows[1][2], rows[1][3]},
+                   {rows[2][0], rows[2][1], rows[2][2], rows[2][3]},
+                   {rows[3][0], rows[3][1], rows[3][2], rows[3][3]}} {}
+    /// Conversion from another precision, element by element.
+    template <class U>
+    constexpr explicit homogeneous_matrix(const homogeneous_matrix<U>& m) noexcept : elements{} {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) elements[i][j] = static_cast<T>(m.elements[i][j]);
+    }
+
+    /// Element at (row, col), both in [0, 4).
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
+        return elements[row][col];
+    }
+    /// Element at (row, col), read-only.
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
+        return elements[row][col];
+    }
+
+    /// The motion that moves nothing.
+    [[nodiscard]] static constexpr homogeneous_matrix identity() noexcept {
+        return {{{T(1), T(0), T(0), T(0)},
+                 {T(0), T(1), T(0), T(0)},
+                 {T(0), T(0), T(1), T(0)},
+                 {T(0), T(0), T(0), T(1)}}};
+    }
+};
+
+/// Matrix product: as motions, a * b applies b first, then a. 64 multiplications, 48 additions.
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> operator*(const homogeneous_matrix<T>& a,
+                                                        const homogeneous_matrix<T>& b) noexcept {
+    homogeneous_matrix<T> product{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            product(i, j) =
+                a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j) + a(i, 3) * b(3, j);
+    return product;
+}
+
+/// a = a * b: as motions, b is applied first, then the old a.
+template <class T>
+constexpr homogeneous_matrix<T>& operator*=(homogeneous_matrix<T>& a,
+                                            const homogeneous_matrix<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Exact element-wise equality.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const homogeneous_matrix<T>& a,
+                                        const homogeneous_matrix<T>& b) noexcept {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const homogeneous_matrix<T>& a,
+                                        const homogeneous_matrix<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The upper left 3x3 block: the rotation of a rigid motion.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> rotation_block(const homogeneous_matrix<T>& m) noexcept {
+    return {
+        {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}}};
+}
+
+/// The first three entries of the last column: the translation of a rigid motion.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const homogeneous_matrix<T>& m) noexcept {
+    return {m(0, 3), m(1, 3), m(2, 3)};
+}
+
+/// M (p, 1) without its last coordinate: R p + t. Precondition: last row (0, 0, 0, 1), which is
+/// not read.
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const homogeneous_matrix<T>& m,
+                                          const vec3<T>& p) noexcept {
+    return rotate(rotation_block(m), p) + translation_of(m);
+}
+
+/// M (v, 0) without its last coordinate: R v, a direction turned and not translated.
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const homogeneous_matrix<T>& m,
+                                                 const vec3<T>& v) noexcept {
+    return rotate(rotation_block(m), v);
+}
+
+/// The 4x4 matrix of the unit dual quaternion dq: rotation block to_matrix(dq.real), last column
+/// translation_of(dq), last row (0, 0, 0, 1). Precondition: unit dq (normalize gives one).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const dual_quaternion<T>& dq) noexcept {
+    const rotation_matrix<T> r = to_matrix(dq.real);
+    const vec3<T> t = translation_of(dq);
+    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
+             {r(1, 0), r(1, 1), r(1, 2), t.y},
+             {r(2, 0), r(2, 1), r(2, 2), t.z},
+             {T(0), T(0), T(0), T(1)}}};
+}
+
+/// The unit dual quaternion (real part w >= 0) of the rigid motion m, exact at half turns (through
+/// to_quaternion). Precondition: m is rigid; try_to_dual_quaternion checks untrusted matrices.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const homogeneous_matrix<T>& m) noexcept {
+    return to_dual_quaternion(to_quaternion(rotation_block(m)), translation_of(m));
+}
+
+/// to_dual_quaternion(m), or std::nullopt when m is not a rigid motion: an element not finite, a
+/// last row off (0, 0, 0, 1) by more than tolerance, or a rotation block that try_to_quaternion
+/// rejects (a reflection, or orthogonality_error above tolerance).
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_to_dual_quaternion(
+    const homogeneous_matrix<T>& m,
+    detail::type_identity_t<T> tolerance = default_orthogonality_tolerance<T>()) noexcept {
+    for (int j = 0; j < 4; ++j) {
+        if (!detail::is_finite(m(0, j)) || !detail::is_finite(m(1, j)) ||
+            !detail::is_finite(m(2, j)))
+            return std::nullopt;
+        if (!(detail::abs(m(3, j) - (j == 3 ? T(1) : T(0))) <= tolerance)) return std::nullopt;
+    }
+    const std::optional<quaternion<T>> rotation = try_to_quaternion(rotation_block(m), tolerance);
+    if (!rotation) return std::nullopt;
+    return to_dual_quaternion(*rotation, translation_of(m));
+}
+
+}  // namespace quat
+
+#endif  // QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+// ---- end quat/homogeneous_matrix.hpp ----
 // ---- begin quat/keyframe_slerp.hpp ----
 // Piecewise slerp through keyframes at given times: scipy's Slerp(times, rotations)(t).
 #ifndef QUAT_KEYFRAME_SLERP_HPP_INCLUDED
@@ -3269,6 +3679,106 @@ template <class T, class Generator>
 
 #endif  // QUAT_RANDOM_HPP_INCLUDED
 // ---- end quat/random.hpp ----
+// ---- begin quat/rigid_batch.hpp ----
+// Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
+// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops,
+// aliasing rules and instruction-set namespaces are those of batch.hpp.
+#ifndef QUAT_RIGID_BATCH_HPP_INCLUDED
+#define QUAT_RIGID_BATCH_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+
+namespace quat {
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#else
+inline namespace isa_baseline {
+#endif
+
+/// output[i] = R input[i] + t for i < count (array of structs), the rigid motion of the 4x4 matrix
+/// m: 9 multiply-adds and 3 additions per point. output == input is allowed; other overlaps are
+/// not. Precondition: last row (0, 0, 0, 1), not read.
+template <class T>
+void transform(const homogeneous_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+               std::size_t count) noexcept {
+    QUAT_ASSERT(
+        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
+        "quat::transform: output partially overlaps input");
+    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output, count);
+}
+
+/// output[i] = transform(dq, input[i]) for unit dq (array of structs): dq becomes a matrix and a
+/// translation once. Aliasing as for the matrix overload.
+template <class T>
+void transform(const dual_quaternion<T>& dq, const vec3<T>* input, vec3<T>* output,
+               std::size_t count) noexcept {
+    transform(to_homogeneous(dq), input, output, count);
+}
+
+/// Struct-of-arrays form of the matrix overload: each output array may be its own input array or
+/// not overlap any input. Precondition: output.count >= input.count.
+template <class T>
+void transform(const homogeneous_matrix<T>& m, soa_points<const T> input,
+               soa_points<T> output) noexcept {
+    QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
+    QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
+                "quat::transform: an output array partially overlaps an input array");
+    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output);
+}
+
+/// Struct-of-arrays form of the dual-quaternion overload; aliasing as for the matrix overload.
+template <class T>
+void transform(const dual_quaternion<T>& dq, soa_points<const T> input,
+               soa_points<T> output) noexcept {
+    transform(to_homogeneous(dq), input, output);
+}
+
+/// Container form of the array-of-structs transform by unit dq: any contiguous input and output
+/// of vec3<T>. Precondition: size(output) >= size(input).
+template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::transform: output shorter than input");
+    transform(dq, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+}
+/// Container form of the array-of-structs transform by the 4x4 matrix m.
+template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::transform: output shorter than input");
+    transform(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+}
+
+/// The product dq[0] dq[1] ... dq[count - 1] (dq[count - 1] applies first); identity when
+/// count == 0. Four interleaved chains as in the quaternion compose: the same motion by
+/// associativity, rounded differently.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
+                                                   std::size_t count) noexcept {
+    return detail::interleaved_product(dq, count);
+}
+
+/// compose over any contiguous container or view of dual_quaternion<T>.
+template <class Range, class T = std::remove_cv_t<std::remove_pointer_t<
+                           decltype(detail::data_of(std::declval<const Range&>()))>>>
+[[nodiscard]] constexpr std::enable_if_t<std::is_same_v<T, dual_quaternion<decltype(T{}.real.w)>>,
+                                         T>
+compose(const Range& factors) noexcept {
+    return compose(detail::data_of(factors), detail::size_of(factors));
+}
+
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_RIGID_BATCH_HPP_INCLUDED
+// ---- end quat/rigid_batch.hpp ----
 // ---- begin quat/rotation_spline.hpp ----
 // A C2-continuous rotation spline through keyframes: scipy's RotationSpline, solved to convergence.
 #ifndef QUAT_ROTATION_SPLINE_HPP_INCLUDED
@@ -3809,6 +4319,129 @@ bool rotation_spline<T>::build() {
 
 #endif  // QUAT_ROTATION_SPLINE_HPP_INCLUDED
 // ---- end quat/rotation_spline.hpp ----
+// ---- begin quat/sclerp.hpp ----
+// Screw linear interpolation (ScLERP) between rigid motions: the constant-velocity screw motion,
+// the rigid-motion counterpart of slerp.
+#ifndef QUAT_SCLERP_HPP_INCLUDED
+#define QUAT_SCLERP_HPP_INCLUDED
+
+#include <limits>
+
+
+namespace quat {
+
+/// Screw linear interpolation from unit a (t = 0) to unit b (t = 1): a (a^-1 b)^t, the motion at
+/// constant screw velocity, so the angle about the screw axis and the slide along it grow linearly
+/// in t; equal to the matrix form a exp(t log(a^-1 b)) of the 4x4 transforms. Takes the shorter
+/// path (relative angle in [0, pi], as slerp does); t outside [0, 1] extrapolates along the same
+/// screw. Returns a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. Stable for equal
+/// and nearly equal rotations (a pure or nearly pure translation) and near half turns: no division
+/// by the sine of a small angle. Precondition: unit a and b (debug-checked real parts); NaN or
+/// infinite input gives a non-finite result.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> sclerp(const dual_quaternion<T>& a,
+                                                  const dual_quaternion<T>& b,
+                                                  detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a.real) && detail::is_near_unit(b.real),
+                "quat::sclerp: a or b is not a unit dual quaternion");
+    const dual_quaternion<T> near = dot(a.real, b.real) < T(0) ? -b : b;
+    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a bad other end visible.
+    if (t == T(0)) return {a.real + (near.real - near.real), a.dual + (near.dual - near.dual)};
+    if (t == T(1)) return {near.real + (a.real - a.real), near.dual + (a.dual - a.dual)};
+
+    // The relative motion a^-1 near: rotation r (w >= 0, formed accurately for nearly equal
+    // rotations) and translation u, both in a's frame.
+    const quaternion<T> r = detail::relative_rotation<true>(a.real, near.real);
+    const vec3<T> u = rotate(conjugate(a.real), translation_of(near) - translation_of(a));
+    const vec3<T> v{r.x, r.y, r.z};
+    const T s = norm(v), n = norm(r);
+    const T h = detail::atan2(s, r.w);  // half the relative angle, in [0, pi/2]
+    const T sine = detail::sin(t * h), cosine = detail::cos(t * h);
+    // ratio = sin(t h) / sin(h), with its series where sin(h) is tiny or zero (the next term,
+    // t (1 - t^2)(7 - 3 t^2) h^4 / 360, is below eps there for t in [0, 1]).
+    const T ratio = h * h < std::numeric_limits<T>::epsilon()
+                        ? t + t * (T(1) - t * t) * (h * h) / T(6)
+                        : sine * n / s;
+    // The screw moves u to (A I + B [l]x + (t - A) l l^T) u, l the axis, with A + i B =
+    // sin(t h) / sin(h) e^{i (t - 1) h}: the ratio (1 - e^{i t 2h}) / (1 - e^{i 2h}) by which
+    // (I - R) scales the plane across the axis, while the slide along l is t times u's. B and
+    // t - A vanish with h, so the axis direction, inaccurate for tiny h, never matters.
+    const T ch = r.w / n, sh = s / n;
+    const T across_cos = ratio * (cosine * ch + sine * sh);  // A
+    const T across_sin = ratio * (sine * ch - cosine * sh);  // B
+    const vec3<T> l = s > T(0) ? v / s : vec3<T>{T(0), T(0), T(0)};
+    const vec3<T> moved =
+        u * across_cos + cross(l, u) * across_sin + l * ((t - across_cos) * dot(l, u));
+    const vec3<T> turn = l * sine;
+    return a * to_dual_quaternion(quaternion<T>{cosine, turn.x, turn.y, turn.z}, moved);
+}
+
+}  // namespace quat
+
+#endif  // QUAT_SCLERP_HPP_INCLUDED
+// ---- end quat/sclerp.hpp ----
+// ---- begin quat/screw.hpp ----
+// Screw parameters of rigid motions: every rigid motion turns about one axis line and slides along
+// it (Chasles' theorem). The form sclerp interpolates in, and the one to read a motion in.
+#ifndef QUAT_SCREW_HPP_INCLUDED
+#define QUAT_SCREW_HPP_INCLUDED
+
+
+namespace quat {
+
+/// A screw motion: a turn by `angle` radians (counter-clockwise about `direction`) about the line
+/// with unit `direction` and `moment` = p x direction for any point p on it, together with a slide
+/// of `displacement` along `direction`. The line's point nearest the origin is direction x moment.
+template <class T>
+struct screw {
+    vec3<T> direction;  ///< Unit direction of the axis line.
+    vec3<T> moment;  ///< p x direction for a point p on the line; zero when it passes the origin.
+    T angle;         ///< Turn about the line, radians.
+    T displacement;  ///< Slide along direction.
+};
+
+/// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
+/// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
+/// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
+/// moment: its axis lies far away. Precondition: unit dq; NaN in any component gives NaN.
+template <class T>
+[[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
+    const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
+    const vec3<T> t = translation_of(near);
+    const vec3<T> v{near.real.x, near.real.y, near.real.z};
+    const T s = norm(v);
+    if (s == T(0)) {
+        const T length = norm(t);
+        const vec3<T> direction = length > T(0) ? t / length : vec3<T>{T(1), T(0), T(0)};
+        return {direction, vec3<T>{T(0), T(0), T(0)}, T(0), length};
+    }
+    const vec3<T> l = v / s;
+    const T displacement = dot(t, l);
+    // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
+    // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
+    const vec3<T> across = t - l * displacement;
+    const vec3<T> moment = (cross(t, l) + across * (near.real.w / s)) * T(0.5);
+    return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
+}
+
+/// The unit dual quaternion of the screw motion s: real part (cos(h), sin(h) direction) and dual
+/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement / 2.
+/// from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion).
+/// Precondition: unit direction, and moment orthogonal to it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> from_screw(const screw<T>& s) noexcept {
+    const T h = s.angle * T(0.5), d = s.displacement * T(0.5);
+    const T c = detail::cos(h), sn = detail::sin(h);
+    const vec3<T> real = s.direction * sn;
+    const vec3<T> dual = s.moment * sn + s.direction * (d * c);
+    return {quaternion<T>{c, real.x, real.y, real.z},
+            quaternion<T>{-d * sn, dual.x, dual.y, dual.z}};
+}
+
+}  // namespace quat
+
+#endif  // QUAT_SCREW_HPP_INCLUDED
+// ---- end quat/screw.hpp ----
 // ---- begin quat/squad.hpp ----
 // Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
 // continuous across them when the keyframes are evenly spaced in time.

@@ -56,6 +56,17 @@ int valid() {
     std::vector<quatd> slerped(32);
     quat::slerp(unit, quatd::identity(), t, slerped);
     sink = sink + slerped[3].w;
+    // Rigid motions: a drifted real part, in-place and adjacent batches, matching sizes.
+    const auto motion = quat::to_dual_quaternion(drifted, v);
+    const auto other = quat::to_dual_quaternion(turned, vec3<double>{0, 1, 0});
+    sink = sink + quat::transform(motion, v).x + quat::sclerp(motion, other, 0.3).dual.x;
+    const std::vector<quat::dual_quaterniond> bones{motion, other};
+    sink = sink + quat::blend(bones, std::vector<double>{0.5, 0.5}).dual.y;
+    quat::transform(motion, points, points);
+    quat::transform(quat::to_homogeneous(other), points.data(), points.data() + 150, 150);
+    quat::transform(motion, quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
+                    quat::soa_points<double>{x.data(), y.data(), z.data(), 64});
+    sink = sink + quat::to_homogeneous(motion)(3, 3);
     std::printf("no assertion fired (%g)\n", static_cast<double>(sink));
     return 0;
 }
@@ -132,6 +143,25 @@ int run(const char* name) {
     if (std::strcmp(name, "batch_slerp_overlap") == 0) {
         std::vector<quatd> out(8);
         quat::slerp(quatd::identity(), quat::rotation_z(1.0), &out[0].x, out.data(), 8);
+    }
+    const auto bad_motion = quat::to_dual_quaternion(not_unit, v);
+    const auto motion = quat::to_dual_quaternion(quatd::identity(), v);
+    if (std::strcmp(name, "transform") == 0) sink = quat::transform(bad_motion, v).x;
+    if (std::strcmp(name, "sclerp") == 0) sink = quat::sclerp(motion, bad_motion, 0.5).dual.x;
+    if (std::strcmp(name, "blend_size") == 0)
+        sink =
+            quat::blend(std::vector<quat::dual_quaterniond>{motion, motion}, std::vector<double>{1})
+                .real.w;
+    if (std::strcmp(name, "homogeneous_index") == 0)
+        sink = quat::to_homogeneous(motion)(0, 4 + static_cast<int>(sink));
+    if (std::strcmp(name, "rigid_batch_overlap") == 0)
+        quat::transform(motion, points.data(), points.data() + 1, 63);
+    if (std::strcmp(name, "rigid_batch_soa_overlap") == 0)
+        quat::transform(motion, quat::soa_points<const double>{x.data(), y.data(), z.data(), 60},
+                        quat::soa_points<double>{x.data(), y.data() + 1, z.data(), 60});
+    if (std::strcmp(name, "rigid_batch_short_output") == 0) {
+        std::vector<vec3<double>> out(10);
+        quat::transform(motion, points, out);
     }
     std::printf("no assertion fired for '%s' (%g)\n", name, static_cast<double>(sink));
     return 0;

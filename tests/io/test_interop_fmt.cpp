@@ -49,6 +49,13 @@ TEMPLATE_TEST_CASE("fmt::format prints the documented format", "[io][fmt]", floa
                                            {T(1), T(0), T(0), T(0)}};
     CHECK(fmt::format("{}", parts) ==
           "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
+    const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
+    CHECK(fmt::format("{}", motion) ==
+          "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
+    CHECK(fmt::format("{}", quat::to_homogeneous(motion)) ==
+          "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
+    const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};
+    CHECK(fmt::format("{}", s) == "screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}");
 }
 
 // fmt 9 writes a long double with 20 significant digits (0.1L as 0.10000000000000000555), which

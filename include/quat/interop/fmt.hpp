@@ -69,6 +69,21 @@ template <class T, class Char>
 struct formatter<::quat::swing_twist_parts<T>, Char>
     : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, fmt::formatter<T, Char>> {};
 
+/// Formats dual_quaternion{quaternion{...}, quaternion{...}}; the spec applies to each component.
+template <class T, class Char>
+struct formatter<::quat::dual_quaternion<T>, Char>
+    : ::quat::detail::value_formatter<::quat::dual_quaternion<T>, fmt::formatter<T, Char>> {};
+
+/// Formats homogeneous_matrix{{m00, m01, m02, m03}, ...} by rows; the spec applies to each element.
+template <class T, class Char>
+struct formatter<::quat::homogeneous_matrix<T>, Char>
+    : ::quat::detail::value_formatter<::quat::homogeneous_matrix<T>, fmt::formatter<T, Char>> {};
+
+/// Formats screw{vec3{...}, vec3{...}, angle, displacement}; the spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::screw<T>, Char>
+    : ::quat::detail::value_formatter<::quat::screw<T>, fmt::formatter<T, Char>> {};
+
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class Char>
 struct formatter<::quat::sequence, Char>

@@ -6,8 +6,10 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "../homogeneous_matrix.hpp"
 #include "../quaternion.hpp"
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
@@ -48,6 +50,25 @@ template <class T, glm::qualifier Q>
     rotation_matrix<T> out{};
     for (int row = 0; row < 3; ++row)
         for (int col = 0; col < 3; ++col) out(row, col) = m[col][row];
+    return out;
+}
+
+/// The same matrix as glm::mat4: element (row, col) goes to m[col][row], so glm_matrix *
+/// glm::vec4(p, 1) equals (transform(m, p), 1).
+template <class T>
+[[nodiscard]] glm::mat<4, 4, T, glm::defaultp> to_glm(const homogeneous_matrix<T>& m) noexcept {
+    glm::mat<4, 4, T, glm::defaultp> out(T(1));
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) out[col][row] = m(row, col);
+    return out;
+}
+
+/// The same matrix from a glm::mat4 (column-major m[col][row]).
+template <class T, glm::qualifier Q>
+[[nodiscard]] homogeneous_matrix<T> from_glm(const glm::mat<4, 4, T, Q>& m) noexcept {
+    homogeneous_matrix<T> out{};
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) out(row, col) = m[col][row];
     return out;
 }
 

@@ -1,0 +1,119 @@
+// Specification of blend.hpp: dual-quaternion linear blending (Kavan et al. 2007), checked against
+// its definition in long double and against the collapse of blended matrices it avoids.
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <quat/blend.hpp>
+#include <quat/homogeneous_matrix.hpp>
+#include <quat/screw.hpp>
+
+#include "support/catch.hpp"
+#include "support/random.hpp"
+#include "support/tolerance.hpp"
+
+using quat::dual_quaternion;
+using quat::quaternion;
+using quat::vec3;
+using quat::test::eps;
+using quat::test::max_difference;
+
+namespace {
+
+template <class T>
+dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
+    const quaternion<T> q = random.unit_quaternion<T>();
+    const vec3<T> t = random.vector<T>(2.0);
+    return quat::to_dual_quaternion(q, t);
+}
+
+// The definition, in long double: sum of sign_i w_i dq_i, divided by |real|, dual made orthogonal.
+template <class T>
+dual_quaternion<long double> reference_blend(const std::vector<dual_quaternion<T>>& dqs,
+                                             const std::vector<T>& weights) {
+    quaternion<long double> real{0, 0, 0, 0}, dual{0, 0, 0, 0};
+    for (std::size_t i = 0; i < dqs.size(); ++i) {
+        const quaternion<long double> r(dqs[i].real), d(dqs[i].dual), r0(dqs[0].real);
+        const long double w = quat::dot(r, r0) < 0 ? -(long double)weights[i] : weights[i];
+        real += r * w;
+        dual += d * w;
+    }
+    const long double n = std::sqrt(quat::dot(real, real));
+    real = real / n;
+    dual = dual / n;
+    return {real, dual - real * quat::dot(real, dual)};
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("blend is the normalized, hemisphere-aligned weighted sum", "[blend]", float,
+                   double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 200; ++i) {
+        std::vector<dual_quaternion<TestType>> dqs;
+        std::vector<TestType> weights;
+        for (int k = 0; k < 4; ++k) {
+            dqs.push_back(random_motion<TestType>(random));
+            weights.push_back(random.uniform<TestType>(0.0, 1.0));
+        }
+        const auto ours = quat::blend(dqs, weights);
+        const auto reference = reference_blend(dqs, weights);
+        CHECK(max_difference(quaternion<long double>(ours.real), reference.real) <=
+              8 * eps<TestType>);
+        CHECK(max_difference(quaternion<long double>(ours.dual), reference.dual) <=
+              16 * eps<TestType>);
+        CHECK(std::abs(quat::dot(ours.real, ours.dual)) <= 8 * eps<TestType>);
+        // Signs do not matter: -dq is the same motion.
+        dqs[2] = -dqs[2];
+        const auto flipped = quat::blend(dqs.data(), weights.data(), dqs.size());
+        CHECK(max_difference(flipped.real, ours.real) <= 4 * eps<TestType>);
+        CHECK(max_difference(flipped.dual, ours.dual) <= 8 * eps<TestType>);
+    }
+}
+
+TEST_CASE("blend with one weight 1 and the rest 0 gives that transform", "[blend]") {
+    quat::test::random_rotations random;
+    const std::vector<dual_quaternion<double>> dqs{random_motion<double>(random),
+                                                   random_motion<double>(random)};
+    const double first[] = {1, 0}, second[] = {0, 1};
+    const auto a = quat::blend(dqs.data(), first, 2), b = quat::blend(dqs.data(), second, 2);
+    CHECK(max_difference(a.real, dqs[0].real) <= 2 * eps<double>);
+    CHECK(max_difference(quat::translation_of(b), quat::translation_of(dqs[1])) <= 8 * eps<double>);
+    CHECK(quat::to_screw(quat::inverse(b) * dqs[1]).angle <= 4 * eps<double>);
+}
+
+TEST_CASE("blend keeps a twisted joint rigid where blended matrices collapse", "[blend]") {
+    // Half way between no twist and a half turn about the bone (x axis): the blended matrix
+    // flattens the cross-section to a line (the candy wrapper); the blend turns it by 90 degrees.
+    const auto rest = quat::dual_quaterniond::identity();
+    const auto twisted =
+        quat::to_dual_quaternion(quat::rotation_x(quat::pi), vec3<double>{0, 0, 0});
+    const std::vector<quat::dual_quaterniond> bones{rest, twisted};
+    const std::vector<double> weights{0.5, 0.5};
+    const auto blended = quat::blend(bones, weights);
+    const vec3<double> p{0, 0.25, 0};  // on the cylinder's surface
+    const vec3<double> moved = quat::transform(blended, p);
+    CHECK(quat::norm(moved) == Approx(0.25).epsilon(1e-15));
+    const auto a = quat::to_homogeneous(rest), b = quat::to_homogeneous(twisted);
+    vec3<double> linear = quat::transform(a, p) * 0.5 + quat::transform(b, p) * 0.5;
+    CHECK(quat::norm(linear) <= 1e-16);
+}
+
+TEST_CASE("blend of cancelling or no weights is NaN", "[blend][nan]") {
+    const auto a = quat::to_dual_quaternion(quat::rotation_z(0.3), vec3<double>{1, 0, 0});
+    const std::vector<quat::dual_quaterniond> one{a, a};
+    const std::vector<double> cancelling{1, -1};
+    CHECK(std::isnan(quat::blend(one, cancelling).real.w));
+    CHECK(std::isnan(quat::blend(one.data(), cancelling.data(), 0).real.w));
+    const std::vector<double> nan_weight{1, std::numeric_limits<double>::quiet_NaN()};
+    CHECK(std::isnan(quat::blend(one, nan_weight).dual.x));
+}
+
+TEST_CASE("blend is constexpr", "[blend][constexpr]") {
+    constexpr quat::dual_quaterniond pair[] = {
+        quat::dual_quaterniond::identity(),
+        quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{2, 0, 0})};
+    constexpr double weights[] = {0.5, 0.5};
+    constexpr auto middle = quat::blend(pair, weights);
+    STATIC_REQUIRE(middle.dual.x == 0.5);  // half of a translation by 1
+}

@@ -1,0 +1,198 @@
+// Specification of dual_quaternion.hpp: dual quaternions as rigid motions x -> R x + t, checked
+// against 4x4 matrices in long double (tests/support/rigid_reference.hpp) and GLM's tdualquat.
+#include <cmath>
+#include <limits>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtx/dual_quaternion.hpp>
+#include <quat/dual_quaternion.hpp>
+#include <quat/interop/glm.hpp>
+
+#include "support/catch.hpp"
+#include "support/random.hpp"
+#include "support/rigid_reference.hpp"
+#include "support/tolerance.hpp"
+
+using quat::dual_quaternion;
+using quat::quaternion;
+using quat::vec3;
+using quat::test::eps;
+using quat::test::max_difference;
+
+namespace {
+
+template <class T>
+dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
+    const quaternion<T> q = random.unit_quaternion<T>();
+    const vec3<T> t = random.vector<T>(2.0);
+    return quat::to_dual_quaternion(q, t);
+}
+
+// R p + t from the long double matrix of dq.
+template <class T>
+vec3<long double> reference_transform(const dual_quaternion<T>& dq, const vec3<T>& p) {
+    const quat::test::matrix4 m = quat::test::reference_matrix(dq);
+    const long double x = p.x, y = p.y, z = p.z;
+    return {m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3],
+            m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3],
+            m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3]};
+}
+
+template <class T>
+long double difference(const vec3<T>& a, const vec3<long double>& b) {
+    return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z)});
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("to_dual_quaternion(q, t) is the motion x -> R x + t, rotation first",
+                   "[dual_quaternion]", float, double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 200; ++i) {
+        const quaternion<TestType> q = random.unit_quaternion<TestType>();
+        const vec3<TestType> t = random.vector<TestType>(2.0);
+        const vec3<TestType> p = random.vector<TestType>(1.0);
+        const auto dq = quat::to_dual_quaternion(q, t);
+        CHECK(quat::rotation_of(dq) == q);
+        CHECK(max_difference(quat::translation_of(dq), t) <= 4 * eps<TestType> * 8);
+        const vec3<TestType> moved = quat::transform(dq, p);
+        CHECK(difference(moved, reference_transform(dq, p)) <= 16 * eps<TestType>);
+        CHECK(max_difference(moved, quat::rotate(q, p) + t) <= 16 * eps<TestType>);
+        CHECK(max_difference(quat::transform_vector(dq, p), quat::rotate(q, p)) == 0);
+        // dq and -dq are one motion.
+        CHECK(max_difference(quat::transform(-dq, p), moved) <= 16 * eps<TestType>);
+    }
+}
+
+TEMPLATE_TEST_CASE("a * b applies b first, as 4x4 products do", "[dual_quaternion]", float,
+                   double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 200; ++i) {
+        const auto a = random_motion<TestType>(random);
+        const auto b = random_motion<TestType>(random);
+        const vec3<TestType> p = random.vector<TestType>(1.0);
+        const auto ab = a * b;
+        const quat::test::matrix4 reference =
+            quat::test::reference_matrix(a) * quat::test::reference_matrix(b);
+        CHECK(quat::test::max_difference(quat::test::reference_matrix(ab), reference) <=
+              32 * eps<TestType>);
+        CHECK(max_difference(quat::transform(ab, p), quat::transform(a, quat::transform(b, p))) <=
+              32 * eps<TestType>);
+        auto c = a;
+        c *= b;
+        CHECK(c == ab);
+    }
+}
+
+TEMPLATE_TEST_CASE("inverse is the rigid inverse x -> R^T (x - t), also of scaled input",
+                   "[dual_quaternion]", float, double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 200; ++i) {
+        const auto a = random_motion<TestType>(random);
+        const vec3<TestType> p = random.vector<TestType>(1.0);
+        const auto back = quat::transform(quat::inverse(a), quat::transform(a, p));
+        CHECK(max_difference(back, p) <= 32 * eps<TestType>);
+        const auto product = a * quat::inverse(a);
+        CHECK(max_difference(product.real, quaternion<TestType>::identity()) <= 4 * eps<TestType>);
+        CHECK(max_difference(product.dual, quaternion<TestType>{0, 0, 0, 0}) <= 16 * eps<TestType>);
+        // A scaled unit dual quaternion: the inverse of s dq is dq^-1 / s.
+        const TestType s = TestType(2.5);
+        const dual_quaternion<TestType> scaled{a.real * s, a.dual * s};
+        const auto scaled_inverse = quat::inverse(scaled);
+        CHECK(max_difference(scaled_inverse.real * s, quat::conjugate(a.real)) <=
+              4 * eps<TestType>);
+        CHECK(max_difference(scaled_inverse.dual * s, quat::conjugate(a.dual)) <=
+              8 * eps<TestType>);
+    }
+}
+
+TEMPLATE_TEST_CASE("normalize gives a unit real part and a dual part orthogonal to it",
+                   "[dual_quaternion]", float, double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 200; ++i) {
+        const auto a = random_motion<TestType>(random);
+        const TestType s = random.uniform<TestType>(0.01, 100.0);
+        const TestType drift = random.uniform<TestType>(-0.1, 0.1);
+        // Scaled, and the dual part pushed along the real part (as rounding in long chains does).
+        const dual_quaternion<TestType> off{a.real * s, (a.dual + a.real * drift) * s};
+        const auto n = quat::normalize(off);
+        CHECK(std::abs(quat::norm(n.real) - 1) <= quat::test::tolerance<TestType>::unit_norm);
+        CHECK(std::abs(quat::dot(n.real, n.dual)) <= 8 * eps<TestType>);
+        CHECK(max_difference(n.real, a.real) <= 4 * eps<TestType>);
+        CHECK(max_difference(quat::translation_of(n), quat::translation_of(a)) <=
+              32 * eps<TestType>);
+    }
+}
+
+TEST_CASE("try_normalize rejects a zero real part and non-finite input", "[dual_quaternion]") {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    const quat::quatd zero{0, 0, 0, 0};
+    CHECK_FALSE(quat::try_normalize(quat::dual_quaterniond{zero, {0, 1, 0, 0}}));
+    CHECK_FALSE(quat::try_normalize(quat::dual_quaterniond{{1, 0, 0, 0}, {0, nan, 0, 0}}));
+    CHECK_FALSE(quat::try_normalize(quat::dual_quaterniond{{1, 0, 0, 0}, {0, 0, inf, 0}}));
+    CHECK_FALSE(quat::try_normalize(quat::dual_quaterniond{{nan, 0, 0, 0}, {0, 0, 0, 0}}));
+    const auto ok = quat::try_normalize(quat::dual_quaterniond{{2, 0, 0, 0}, {0, 2, 0, 0}});
+    REQUIRE(ok);
+    CHECK(quat::translation_of(*ok) == vec3<double>{2, 0, 0});
+    // The unchecked normalize documents NaN for the zero real part.
+    CHECK(std::isnan(quat::normalize(quat::dual_quaterniond{zero, zero}).real.w));
+}
+
+TEST_CASE("dual quaternions agree with GLM's tdualquat", "[dual_quaternion][glm]") {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 100; ++i) {
+        const quaternion<double> q = random.unit_quaternion<double>();
+        const vec3<double> t = random.vector<double>(2.0);
+        const vec3<double> p = random.vector<double>(1.0);
+        const auto ours = quat::to_dual_quaternion(q, t);
+        const glm::dualquat theirs_f(quat::to_glm(quaternion<float>(q)),
+                                     quat::to_glm(vec3<float>(t)));
+        const glm::tdualquat<double> theirs(quat::to_glm(q), quat::to_glm(t));
+        CHECK(max_difference(quat::from_glm(theirs.real), ours.real) == 0);
+        CHECK(max_difference(quat::from_glm(theirs.dual), ours.dual) <= 2 * eps<double>);
+        CHECK(max_difference(quat::from_glm(theirs * quat::to_glm(p)), quat::transform(ours, p)) <=
+              32 * eps<double>);
+        const auto other =
+            quat::to_dual_quaternion(random.unit_quaternion<double>(), random.vector<double>(2.0));
+        const glm::tdualquat<double> other_glm(quat::to_glm(other.real), quat::to_glm(other.dual));
+        const auto product = theirs * other_glm;
+        CHECK(max_difference(quat::from_glm(product.real), (ours * other).real) <= 4 * eps<double>);
+        CHECK(max_difference(quat::from_glm(product.dual), (ours * other).dual) <= 8 * eps<double>);
+        CHECK(max_difference(quat::from_glm(theirs_f.dual), quaternion<float>(ours.dual)) <=
+              8 * eps<float>);
+    }
+}
+
+TEST_CASE("dual quaternion edge cases", "[dual_quaternion]") {
+    const auto identity = quat::dual_quaterniond::identity();
+    const vec3<double> p{1, -2, 3};
+    CHECK(quat::transform(identity, p) == p);
+    CHECK(quat::translation_of(identity) == vec3<double>{0, 0, 0});
+    // A pure translation.
+    const auto shift = quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{4, 5, 6});
+    CHECK(quat::transform(shift, p) == vec3<double>{5, 3, 9});
+    CHECK(quat::transform_vector(shift, p) == p);
+    // A half turn about z, then the shift: exact in every component.
+    const auto turn = quat::to_dual_quaternion(quat::quatd{0, 0, 0, 1}, vec3<double>{4, 5, 6});
+    CHECK(quat::transform(turn, p) == vec3<double>{3, 7, 9});
+    CHECK(turn != shift);
+    CHECK(quat::dual_quaternion<float>(turn).dual.w == -3.0f);  // -t . axis / 2
+    // NaN in, NaN out.
+    auto bad = turn;
+    bad.real.x = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(quat::transform(bad, p).y));
+    CHECK(std::isnan(quat::inverse(bad).dual.z));
+    CHECK(std::isnan(quat::translation_of(bad).z));
+}
+
+TEST_CASE("dual quaternion algebra is constexpr", "[dual_quaternion][constexpr]") {
+    constexpr auto a = quat::to_dual_quaternion(quat::quatd{0, 0, 0, 1}, vec3<double>{1, 0, 0});
+    constexpr auto b = quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{0, 2, 0});
+    constexpr vec3<double> moved = quat::transform(a * b, vec3<double>{0, 0, 0});
+    static_assert(moved.x == 1 && moved.y == -2 && moved.z == 0);
+    constexpr auto back = quat::inverse(a) * a;
+    STATIC_REQUIRE(back.real.w == 1);
+}

@@ -1,0 +1,89 @@
+// Specification of screw.hpp: every rigid motion as a turn about an axis line and a slide along it.
+#include <cmath>
+#include <limits>
+
+#include <quat/constants.hpp>
+#include <quat/screw.hpp>
+
+#include "support/catch.hpp"
+#include "support/random.hpp"
+#include "support/tolerance.hpp"
+
+using quat::dual_quaternion;
+using quat::quaternion;
+using quat::vec3;
+using quat::test::eps;
+using quat::test::max_difference;
+
+TEST_CASE("to_screw reads a known screw motion", "[screw]") {
+    // A quarter turn about the vertical line through (1, 0, 0), then a slide of 2 up it:
+    // the origin goes to (1, -1, 2).
+    const auto dq =
+        quat::to_dual_quaternion(quat::rotation_z(quat::pi / 2), vec3<double>{1, -1, 2});
+    const quat::screw<double> s = quat::to_screw(dq);
+    CHECK(max_difference(s.direction, vec3<double>{0, 0, 1}) <= 2 * eps<double>);
+    CHECK(max_difference(s.moment, vec3<double>{0, -1, 0}) <= 4 * eps<double>);  // (1,0,0) x z
+    CHECK(s.angle == Approx(quat::pi / 2).epsilon(2 * eps<double>));
+    CHECK(s.displacement == Approx(2).epsilon(2 * eps<double>));
+}
+
+TEMPLATE_TEST_CASE("from_screw(to_screw(dq)) is dq, and the axis moves along itself", "[screw]",
+                   float, double) {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 300; ++i) {
+        const quaternion<TestType> q = random.unit_quaternion<TestType>();
+        const auto dq = quat::to_dual_quaternion(q, random.vector<TestType>(2.0));
+        const quat::screw<TestType> s = quat::to_screw(dq);
+        CHECK(std::abs(quat::norm(s.direction) - 1) <= 4 * eps<TestType>);
+        // A small angle puts the axis far away (a large moment), and rounding grows with it.
+        const TestType reach = 1 + quat::norm(s.moment);
+        CHECK(std::abs(quat::dot(s.direction, s.moment)) <= 8 * eps<TestType> * reach);
+        CHECK(s.angle >= 0);
+        CHECK(s.angle <= TestType(quat::pi));
+        const auto back = quat::from_screw(s);
+        const auto expected = dq.real.w < 0 ? -dq : dq;
+        CHECK(max_difference(back.real, expected.real) <= 8 * eps<TestType>);
+        CHECK(max_difference(back.dual, expected.dual) <= 16 * eps<TestType>);
+        // The axis point nearest the origin slides along the axis by the displacement.
+        const vec3<TestType> on_axis = quat::cross(s.direction, s.moment);
+        CHECK(max_difference(quat::transform(dq, on_axis),
+                             on_axis + s.direction * s.displacement) <= 16 * eps<TestType> * reach);
+    }
+}
+
+TEST_CASE("to_screw of pure translations and the identity", "[screw]") {
+    const auto shift = quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{0, 3, 4});
+    const quat::screw<double> s = quat::to_screw(shift);
+    CHECK(s.angle == 0);
+    CHECK(s.displacement == 5);
+    CHECK(s.direction == vec3<double>{0, 0.6, 0.8});
+    CHECK(s.moment == vec3<double>{0, 0, 0});
+    CHECK(quat::from_screw(s) == shift);
+    const quat::screw<double> none = quat::to_screw(quat::dual_quaterniond::identity());
+    CHECK(none.direction == vec3<double>{1, 0, 0});
+    CHECK(none.angle == 0);
+    CHECK(none.displacement == 0);
+    CHECK(quat::from_screw(none) == quat::dual_quaterniond::identity());
+    // A half turn: the angle is pi exactly.
+    const auto half =
+        quat::to_screw(quat::to_dual_quaternion(quat::quatd{0, 1, 0, 0}, vec3<double>{1, 0, 0}));
+    CHECK(half.angle == quat::pi);
+    CHECK(half.displacement == 1);
+}
+
+TEST_CASE("to_screw propagates NaN", "[screw][nan]") {
+    auto dq = quat::to_dual_quaternion(quat::rotation_x(0.3), vec3<double>{1, 2, 3});
+    dq.dual.x = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(quat::to_screw(dq).displacement));
+    dq = quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{1, 2, 3});
+    dq.real.y = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(quat::to_screw(dq).angle));
+}
+
+TEST_CASE("screw conversions are constexpr", "[screw][constexpr]") {
+    constexpr auto s =
+        quat::to_screw(quat::to_dual_quaternion(quat::quatd{0, 0, 0, 1}, vec3<double>{0, 0, 2}));
+    static_assert(s.displacement == 2 && s.direction.z == 1);
+    constexpr auto back = quat::from_screw(s);
+    STATIC_REQUIRE(back.dual.w < -0.99);  // (0, t) real / 2 = (-1, 0, 0, 0)
+}
