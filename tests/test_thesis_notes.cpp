@@ -189,3 +189,31 @@ TEST_CASE("5. cost: rotate(q, v) needs fewer operations than q (0, v) q*", "[the
     CHECK(fast_mul <= 25);
     CHECK(fast_add <= 23);
 }
+
+TEST_CASE("6. homogeneous first: the thesis's 4x4 matrices are quat's with coordinates rotated",
+          "[thesis]") {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 100; ++i) {
+        const auto motion = quat::to_dual_quaternion(random.unit_quaternion<double>(),
+                                                     random.vector<double>(2.0));
+        const quat::homogeneous_matrix<double> m = quat::to_homogeneous(motion);
+        // The thesis's layout (definitions 2.12-2.14): coordinate 0 is the homogeneous one, so
+        // thesis(i, j) = m(i - 1, j - 1) with indices taken mod 4: first row (1, 0, 0, 0), first
+        // column (1, t).
+        double thesis[4][4];
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) thesis[r][c] = m((r + 3) % 4, (c + 3) % 4);
+        CHECK(thesis[0][0] == 1);
+        CHECK(thesis[0][1] == 0);
+        CHECK(thesis[1][0] == m(0, 3));
+        // R(M R^(u)): u^ = <1, u>, then divide by the first component (definitions 2.12, 2.14, 3.1).
+        const v3 u = random.vector<double>(1.0);
+        const double hat[4] = {1, u.x, u.y, u.z};
+        double image[4] = {0, 0, 0, 0};
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) image[r] += thesis[r][c] * hat[c];
+        const v3 projected{image[1] / image[0], image[2] / image[0], image[3] / image[0]};
+        CHECK(max_difference(projected, quat::transform(m, u)) <= 4 * tol::rotate);
+        CHECK(max_difference(projected, quat::transform(motion, u)) <= 8 * tol::rotate);
+    }
+}
