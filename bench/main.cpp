@@ -133,6 +133,32 @@ void print_targets(const std::vector<measurement>& all) {
     const double fast = find(all, "slerp_fast/quat/quaternion/float");
     target("slerp_fast: glm slerp / quat slerp_fast", fast > 0 ? glm_slerp / fast : 0, 5.0, true);
 
+    // Rigid motions. The memcpy floor is rotate_batch's: it copies the same 24 bytes per point.
+    const double copy_small = find(all, "rotate_batch/memcpy/bytes/float/1024");
+    for (const char* rep : {"dual_quaternion", "matrix", "dual_quaternion_soa"}) {
+        const std::string r = rep;
+        const double moved = find(all, "transform_batch/quat/" + r + "/float/4194304");
+        target(("transform_batch 4194304: quat " + r + " / memcpy").c_str(),
+               copy > 0 ? moved / copy : 0, 1.10, false);
+    }
+    double best_rigid = 1e300;
+    for (const char* n :
+         {"transform_batch/glm/dual_quaternion/float/1024", "transform_batch/glm/matrix/float/1024",
+          "transform_batch/eigen/matrix/float/1024"}) {
+        const double t = find(all, n);
+        if (t > 0 && t < best_rigid) best_rigid = t;
+    }
+    const double moved = find(all, "transform_batch/quat/dual_quaternion/float/1024");
+    target("transform_batch 1024: best(glm, eigen) / quat",
+           moved > 0 && best_rigid < 1e300 ? best_rigid / moved : 0, 1.0, true);
+    const double rigid = find(all, "rigid_chain/quat/dual_quaternion/float/1024");
+    target("rigid_chain 1024: glm mat4 / quat compose(span)",
+           rigid > 0 ? find(all, "rigid_chain/glm/matrix/float/1024") / rigid : 0, 1.5, true);
+    // In cache the copy is not a bound, only a scale: how many copies one transform costs.
+    if (moved > 0 && copy_small > 0)
+        std::printf("  %-62s %7.2f  (information)\n", "transform_batch 1024: quat / memcpy",
+                    moved / copy_small);
+
     std::printf(
         "\napply_chain (k = 8 rotations on n points, ns per point): composed first vs applied one "
         "by one\n");
@@ -187,6 +213,7 @@ int main(int argc, char** argv) {
     bench::register_align();
     bench::register_estimation();
     bench::register_keyframes();
+    bench::register_rigid();
     if (!table) {
         benchmark::RunSpecifiedBenchmarks();
     } else {

@@ -16,6 +16,64 @@
 #include "homogeneous_matrix.hpp"
 #include "vec3.hpp"
 
+namespace quat::detail {
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#else
+inline namespace isa_baseline {
+#endif
+
+// The product f[0] f[1] ... f[count - 1] in four interleaved chains, as compose of quaternions
+// does, but with the chains' components stored component-major (component c of chain j at
+// chain[c][j]): each step is then the same arithmetic on four lanes, which compilers turn into
+// vector instructions even at SSE2. Held as four dual quaternions, the 32 running components
+// overflow SSE2's 16 registers and the loop stays scalar: 2.4 times slower (measured by
+// rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> interleaved_dual_product(const dual_quaternion<T>* f,
+                                                                    std::size_t count) noexcept {
+    constexpr std::size_t lanes = 4;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        dual_quaternion<T> product = dual_quaternion<T>::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
+    for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
+    for (std::size_t i = 0; i < run; ++i) {
+        T b[8][lanes] = {};
+        for (std::size_t j = 0; j < lanes; ++j) {
+            const dual_quaternion<T>& factor = f[j * run + i];
+            const T components[8] = {factor.real.w, factor.real.x, factor.real.y, factor.real.z,
+                                     factor.dual.w, factor.dual.x, factor.dual.y, factor.dual.z};
+            for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+        }
+        for (std::size_t j = 0; j < lanes; ++j) {
+            const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
+            const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
+            const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
+            const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
+            const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
+            const T components[8] = {real.w, real.x, real.y, real.z,
+                                     dual.w, dual.x, dual.y, dual.z};
+            for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
+        }
+    }
+    dual_quaternion<T> chain[lanes] = {};
+    for (std::size_t j = 0; j < lanes; ++j)
+        chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
+    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
+    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
+}
+
+}  // inline namespace isa_...
+}  // namespace quat::detail
+
 namespace quat {
 #if defined(__AVX512F__)
 inline namespace isa_avx512 {
@@ -87,7 +145,7 @@ void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& outp
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
                                                    std::size_t count) noexcept {
-    return detail::interleaved_product(dq, count);
+    return detail::interleaved_dual_product(dq, count);
 }
 
 /// compose over any contiguous container or view of dual_quaternion<T>.
