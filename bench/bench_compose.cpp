@@ -29,27 +29,14 @@ void compose(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations());
 }
 
-// Left to right, each product waiting for the previous one: what users of GLM and Eigen write.
 template <class Lib, class Rep>
 void chain(benchmark::State& state, long long k) {
-    const auto r = rotations<Lib, Rep>(static_cast<std::size_t>(k));
-    for (auto _ : state) {
-        auto product = Rep::template identity<Lib>();
-        for (const auto& factor : r) product = Lib::compose(product, factor);
-        benchmark::DoNotOptimize(product);
-    }
-    state.SetItemsProcessed(state.iterations() * k);
+    time_chain<Lib, Rep>(state, rotations<Lib, Rep>(static_cast<std::size_t>(k)));
 }
 
-// quat::compose over the whole span: independent partial products, joined at the end.
 template <class T>
 void chain_span(benchmark::State& state, long long k) {
-    const auto r = rotations<lib_quat<T>, quaternion_rep>(static_cast<std::size_t>(k));
-    for (auto _ : state) {
-        auto product = quat::compose(r);
-        benchmark::DoNotOptimize(product);
-    }
-    state.SetItemsProcessed(state.iterations() * k);
+    time_compose_span(state, rotations<lib_quat<T>, quaternion_rep>(static_cast<std::size_t>(k)));
 }
 
 constexpr long long apply_k = 8;  // rotations in the apply_chain benchmarks

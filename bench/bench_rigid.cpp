@@ -209,27 +209,15 @@ auto motions(std::size_t n) {
     return r;
 }
 
-// Left to right, each product waiting for the previous one: what users of GLM and Eigen write.
 template <class Lib, class Rep>
 void rigid_chain(benchmark::State& state, long long k) {
-    const auto r = motions<Lib, Rep>(static_cast<std::size_t>(k));
-    for (auto _ : state) {
-        auto product = Rep::template identity<Lib>();
-        for (const auto& factor : r) product = Lib::compose(product, factor);
-        benchmark::DoNotOptimize(product);
-    }
-    state.SetItemsProcessed(state.iterations() * k);
+    time_chain<Lib, Rep>(state, motions<Lib, Rep>(static_cast<std::size_t>(k)));
 }
 
-// quat::compose over the whole span: independent partial products, joined at the end.
 template <class T>
 void rigid_chain_span(benchmark::State& state, long long k) {
-    const auto r = motions<rigid_quat<T>, dual_quaternion_motion>(static_cast<std::size_t>(k));
-    for (auto _ : state) {
-        auto product = quat::compose(r);
-        benchmark::DoNotOptimize(product);
-    }
-    state.SetItemsProcessed(state.iterations() * k);
+    time_compose_span(state,
+                      motions<rigid_quat<T>, dual_quaternion_motion>(static_cast<std::size_t>(k)));
 }
 
 // One sclerp per iteration over seeded pairs and parameters t in [0, 1], as the slerp benchmark.

@@ -219,6 +219,28 @@ void cycle(benchmark::State& state, Make make, Operation f) {
     state.SetItemsProcessed(state.iterations());
 }
 
+/// Times the product of `factors` left to right, each product waiting for the previous one: what
+/// users of GLM and Eigen write. Lib::compose and Rep::identity<Lib> as in bench_compose.cpp.
+template <class Lib, class Rep, class Factors>
+void time_chain(benchmark::State& state, const Factors& factors) {
+    for (auto _ : state) {
+        auto product = Rep::template identity<Lib>();
+        for (const auto& factor : factors) product = Lib::compose(product, factor);
+        benchmark::DoNotOptimize(product);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(factors.size()));
+}
+
+/// Times quat::compose over the whole span: independent partial products, joined at the end.
+template <class Factors>
+void time_compose_span(benchmark::State& state, const Factors& factors) {
+    for (auto _ : state) {
+        auto product = quat::compose(factors);
+        benchmark::DoNotOptimize(product);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(factors.size()));
+}
+
 /// Registration entry points, one per source file; each registers float and double variants.
 void register_rotate();
 void register_compose();

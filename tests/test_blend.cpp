@@ -20,13 +20,6 @@ using quat::test::max_difference;
 
 namespace {
 
-template <class T>
-dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
-    const quaternion<T> q = random.unit_quaternion<T>();
-    const vec3<T> t = random.vector<T>(2.0);
-    return quat::to_dual_quaternion(q, t);
-}
-
 // The definition, in long double: sum of sign_i w_i dq_i, divided by |real|, dual made orthogonal.
 template <class T>
 dual_quaternion<long double> reference_blend(const std::vector<dual_quaternion<T>>& dqs,
@@ -53,7 +46,7 @@ TEMPLATE_TEST_CASE("blend is the normalized, hemisphere-aligned weighted sum", "
         std::vector<dual_quaternion<TestType>> dqs;
         std::vector<TestType> weights;
         for (int k = 0; k < 4; ++k) {
-            dqs.push_back(random_motion<TestType>(random));
+            dqs.push_back(random.rigid_motion<TestType>());
             weights.push_back(random.uniform<TestType>(0.0, 1.0));
         }
         const auto ours = quat::blend(dqs, weights);
@@ -73,8 +66,8 @@ TEMPLATE_TEST_CASE("blend is the normalized, hemisphere-aligned weighted sum", "
 
 TEST_CASE("blend with one weight 1 and the rest 0 gives that transform", "[blend]") {
     quat::test::random_rotations random;
-    const std::vector<dual_quaternion<double>> dqs{random_motion<double>(random),
-                                                   random_motion<double>(random)};
+    const std::vector<dual_quaternion<double>> dqs{random.rigid_motion<double>(),
+                                                   random.rigid_motion<double>()};
     const double first[] = {1, 0}, second[] = {0, 1};
     const auto a = quat::blend(dqs.data(), first, 2), b = quat::blend(dqs.data(), second, 2);
     CHECK(max_difference(a.real, dqs[0].real) <= 2 * eps<double>);

@@ -23,13 +23,6 @@ using quat::test::max_difference;
 
 namespace {
 
-template <class T>
-dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
-    const quaternion<T> q = random.unit_quaternion<T>();
-    const vec3<T> t = random.vector<T>(2.0);
-    return quat::to_dual_quaternion(q, t);
-}
-
 // R p + t from the long double matrix of dq.
 template <class T>
 vec3<long double> reference_transform(const dual_quaternion<T>& dq, const vec3<T>& p) {
@@ -70,8 +63,8 @@ TEMPLATE_TEST_CASE("a * b applies b first, as 4x4 products do", "[dual_quaternio
                    double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 200; ++i) {
-        const auto a = random_motion<TestType>(random);
-        const auto b = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
+        const auto b = random.rigid_motion<TestType>();
         const vec3<TestType> p = random.vector<TestType>(1.0);
         const auto ab = a * b;
         const quat::test::matrix4 reference =
@@ -90,7 +83,7 @@ TEMPLATE_TEST_CASE("inverse is the rigid inverse x -> R^T (x - t), also of scale
                    "[dual_quaternion]", float, double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 200; ++i) {
-        const auto a = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
         const vec3<TestType> p = random.vector<TestType>(1.0);
         const auto back = quat::transform(quat::inverse(a), quat::transform(a, p));
         CHECK(max_difference(back, p) <= 32 * eps<TestType>);
@@ -112,7 +105,7 @@ TEMPLATE_TEST_CASE("normalize gives a unit real part and a dual part orthogonal 
                    "[dual_quaternion]", float, double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 200; ++i) {
-        const auto a = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
         const TestType s = random.uniform<TestType>(0.01, 100.0);
         const TestType drift = random.uniform<TestType>(-0.1, 0.1);
         // Scaled, and the dual part pushed along the real part (as rounding in long chains does).

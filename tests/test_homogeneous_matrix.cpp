@@ -21,16 +21,7 @@ using quat::vec3;
 using quat::test::eps;
 using quat::test::max_difference;
 
-namespace {
-
-template <class T>
-dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
-    const quaternion<T> q = random.unit_quaternion<T>();
-    const vec3<T> t = random.vector<T>(2.0);
-    return quat::to_dual_quaternion(q, t);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("homogeneous_matrix is row-major, m(row, col), with the translation in column 3",
           "[homogeneous_matrix]") {
@@ -51,7 +42,7 @@ TEMPLATE_TEST_CASE("to_homogeneous and to_dual_quaternion are inverse conversion
                    "[homogeneous_matrix]", float, double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 300; ++i) {
-        const auto dq = random_motion<TestType>(random);
+        const auto dq = random.rigid_motion<TestType>();
         const homogeneous_matrix<TestType> m = quat::to_homogeneous(dq);
         CHECK(quat::test::max_difference(quat::test::reference_matrix(m),
                                          quat::test::reference_matrix(dq)) <= 16 * eps<TestType>);
@@ -69,8 +60,8 @@ TEMPLATE_TEST_CASE("the matrix product composes like the dual quaternion product
                    "[homogeneous_matrix]", float, double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 200; ++i) {
-        const auto a = quat::to_homogeneous(random_motion<TestType>(random));
-        const auto b = quat::to_homogeneous(random_motion<TestType>(random));
+        const auto a = quat::to_homogeneous(random.rigid_motion<TestType>());
+        const auto b = quat::to_homogeneous(random.rigid_motion<TestType>());
         const quat::test::matrix4 reference =
             quat::test::reference_matrix(a) * quat::test::reference_matrix(b);
         CHECK(quat::test::max_difference(quat::test::reference_matrix(a * b), reference) <=

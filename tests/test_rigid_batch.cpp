@@ -19,13 +19,6 @@ using quat::test::max_difference;
 namespace {
 
 template <class T>
-dual_quaternion<T> random_motion(quat::test::random_rotations& random) {
-    const quat::quaternion<T> q = random.unit_quaternion<T>();
-    const vec3<T> t = random.vector<T>(2.0);
-    return quat::to_dual_quaternion(q, t);
-}
-
-template <class T>
 std::vector<vec3<T>> random_points(quat::test::random_rotations& random, std::size_t n) {
     std::vector<vec3<T>> p(n);
     for (auto& v : p) v = random.vector<T>(10.0);
@@ -39,7 +32,7 @@ TEMPLATE_TEST_CASE("batch transform equals the scalar transform, both layouts, e
     using T = TestType;
     quat::test::random_rotations random;
     for (const std::size_t n : {0u, 1u, 3u, 7u, 255u, 256u, 257u, 1025u}) {
-        const dual_quaternion<T> dq = random_motion<T>(random);
+        const dual_quaternion<T> dq = random.rigid_motion<T>();
         const quat::homogeneous_matrix<T> m = quat::to_homogeneous(dq);
         const std::vector<vec3<T>> in = random_points<T>(random, n);
         std::vector<vec3<T>> by_dq(n), by_m(n);

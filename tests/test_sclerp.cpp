@@ -21,13 +21,6 @@ using quat::test::eps;
 
 namespace {
 
-template <class T>
-dual_quaternion<T> random_motion(quat::test::random_rotations& random, double reach = 2.0) {
-    const quaternion<T> q = random.unit_quaternion<T>();
-    const vec3<T> t = random.vector<T>(reach);
-    return quat::to_dual_quaternion(q, t);
-}
-
 // a followed (in a's frame) by a turn of `angle` about a random axis and a random translation.
 template <class T>
 dual_quaternion<T> nearby(quat::test::random_rotations& random, const dual_quaternion<T>& a,
@@ -62,8 +55,8 @@ TEMPLATE_TEST_CASE("sclerp agrees with the 4x4 form a exp(t log(a^-1 b)) for ran
     quat::test::random_rotations random;
     long double worst = 0;
     for (int i = 0; i < 300; ++i) {
-        const auto a = random_motion<TestType>(random);
-        const auto b = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
+        const auto b = random.rigid_motion<TestType>();
         const TestType t = random.uniform<TestType>(0.0, 1.0);
         worst = std::max(worst, error_against_matrix_form(a, b, t));
     }
@@ -74,8 +67,8 @@ TEMPLATE_TEST_CASE("sclerp is exact at its ends and takes the shorter path", "[s
                    double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 100; ++i) {
-        const auto a = random_motion<TestType>(random);
-        const auto b = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
+        const auto b = random.rigid_motion<TestType>();
         CHECK(quat::sclerp(a, b, TestType(0)) == a);
         const auto end = quat::sclerp(a, b, TestType(1));
         CHECK((end == b || end == -b));
@@ -94,8 +87,8 @@ TEMPLATE_TEST_CASE("sclerp turns and slides along the screw axis linearly in t",
                    double) {
     quat::test::random_rotations random;
     for (int i = 0; i < 100; ++i) {
-        const auto a = random_motion<TestType>(random);
-        const auto b = random_motion<TestType>(random);
+        const auto a = random.rigid_motion<TestType>();
+        const auto b = random.rigid_motion<TestType>();
         const auto whole = quat::to_screw(quat::inverse(a) * b);
         for (TestType t : {TestType(0.125), TestType(0.3), TestType(0.5), TestType(0.9)}) {
             const auto part = quat::to_screw(quat::inverse(a) * quat::sclerp(a, b, t));
@@ -130,7 +123,7 @@ TEMPLATE_TEST_CASE("sclerp stays accurate for nearly equal rotations", "[sclerp]
     long double worst = 0;
     for (double angle : {1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-13, 1e-20, 0.0}) {
         for (int i = 0; i < 30; ++i) {
-            const auto a = random_motion<TestType>(random);
+            const auto a = random.rigid_motion<TestType>();
             const auto b = nearby(random, a, angle);
             const TestType t = random.uniform<TestType>(0.0, 1.0);
             worst = std::max(worst, error_against_matrix_form(a, b, t));
@@ -144,7 +137,7 @@ TEMPLATE_TEST_CASE("sclerp stays accurate near half turns", "[sclerp]", float, d
     long double worst = 0;
     for (double gap : {1e-1, 1e-2, 1e-3, 1e-4}) {
         for (int i = 0; i < 30; ++i) {
-            const auto a = random_motion<TestType>(random);
+            const auto a = random.rigid_motion<TestType>();
             const auto b = nearby(random, a, quat::pi - gap);
             const TestType t = random.uniform<TestType>(0.0, 1.0);
             worst = std::max(worst, error_against_matrix_form(a, b, t));
@@ -169,8 +162,8 @@ TEST_CASE("sclerp through an exact half turn keeps the turn's axis", "[sclerp]")
 TEST_CASE("sclerp extrapolates along the same screw outside [0, 1]", "[sclerp]") {
     quat::test::random_rotations random;
     for (int i = 0; i < 50; ++i) {
-        const auto a = random_motion<double>(random);
-        const auto b = random_motion<double>(random);
+        const auto a = random.rigid_motion<double>();
+        const auto b = random.rigid_motion<double>();
         for (double t : {-0.5, 1.5, 2.0})
             CHECK(error_against_matrix_form(a, b, t) <= 64 * eps<double>);
     }

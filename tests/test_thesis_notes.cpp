@@ -194,8 +194,8 @@ TEST_CASE("6. homogeneous first: the thesis's 4x4 matrices are quat's with coord
           "[thesis]") {
     quat::test::random_rotations random;
     for (int i = 0; i < 100; ++i) {
-        const auto motion = quat::to_dual_quaternion(random.unit_quaternion<double>(),
-                                                     random.vector<double>(2.0));
+        const auto motion =
+            quat::to_dual_quaternion(random.unit_quaternion<double>(), random.vector<double>(2.0));
         const quat::homogeneous_matrix<double> m = quat::to_homogeneous(motion);
         // The thesis's layout (definitions 2.12-2.14): coordinate 0 is the homogeneous one, so
         // thesis(i, j) = m(i - 1, j - 1) with indices taken mod 4: first row (1, 0, 0, 0), first

@@ -42,6 +42,15 @@ public:
         return {T(scale * gauss_(engine_)), T(scale * gauss_(engine_)), T(scale * gauss_(engine_))};
     }
 
+    /// A random rigid motion: a uniform rotation, then a translation of Gaussian components of
+    /// standard deviation `reach`.
+    template <class T>
+    dual_quaternion<T> rigid_motion(double reach = 2.0) {
+        const quaternion<T> q = unit_quaternion<T>();  // one statement each: a fixed order
+        const vec3<T> t = vector<T>(reach);
+        return to_dual_quaternion(q, t);
+    }
+
     /// Uniform in [low, high).
     template <class T>
     T uniform(double low, double high) {
