@@ -1,6 +1,7 @@
 // Specification of sclerp.hpp: screw linear interpolation equals the matrix form a exp(t log(a^-1 b))
 // of the 4x4 transforms (long double series, tests/support/rigid_reference.hpp), moves at constant
 // screw velocity, and stays accurate for pure and nearly pure translations and near half turns.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -32,14 +33,17 @@ dual_quaternion<T> nearby(quat::test::random_rotations& random, const dual_quate
 }
 
 // Largest difference between sclerp(a, b, t) and the long double matrix form, relative to the
-// size of the translations involved.
+// sizes involved: the largest entry of a, b and the result (the computation passes through a's
+// and b's translations even where the path comes near the origin).
 template <class T>
 long double error_against_matrix_form(const dual_quaternion<T>& a, const dual_quaternion<T>& b,
                                       T t) {
-    const quat::test::matrix4 reference = quat::test::reference_sclerp(
-        quat::test::reference_matrix(a), quat::test::reference_matrix(b), t);
+    const quat::test::matrix4 ma = quat::test::reference_matrix(a);
+    const quat::test::matrix4 mb = quat::test::reference_matrix(b);
+    const quat::test::matrix4 reference = quat::test::reference_sclerp(ma, mb, t);
     const quat::test::matrix4 ours = quat::test::reference_matrix(quat::sclerp(a, b, t));
-    const long double scale = std::max(1.0L, quat::test::max_abs(reference));
+    const long double scale = std::max(
+        {1.0L, quat::test::max_abs(reference), quat::test::max_abs(ma), quat::test::max_abs(mb)});
     return quat::test::max_difference(ours, reference) / scale;
 }
 

@@ -4,6 +4,10 @@
 //   quat_accuracy [--quick] [--worst] [--conventions]
 //   quat_accuracy --slerp-fast [--quick]   (slerp_fast's error in radians; exit 1 above its bound)
 //   quat_accuracy --scipy                  (align_vectors, mean, Slerp, RotationSpline vs SciPy)
+//   quat_accuracy --rigid [--quick]        (dual quaternions, 4x4 matrices, sclerp, blend and
+//                                           transform vs long double; sclerp's constant speed
+//                                           against dual-quaternion blending, quat's and GLM's;
+//                                           exit 1 when a row exceeds its bound, measure_rigid.hpp)
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -12,6 +16,7 @@
 #include "measure_align.hpp"
 #include "measure_euler.hpp"
 #include "measure_fast_slerp.hpp"
+#include "measure_rigid.hpp"
 #include "measure_scipy.hpp"
 
 namespace accuracy {
@@ -23,6 +28,7 @@ struct options {
     bool worst = false;        // print the input behind each row's maximum
     bool conventions = false;  // print the Euler maximum of each convention
     bool slerp_fast = false;   // measure slerp_fast instead of printing the table
+    bool rigid = false;        // the rigid-motion tables of measure_rigid.hpp instead
 };
 
 // quat's targets from issue 7, in eps (double; float in the same ratio to its epsilon).
@@ -241,6 +247,7 @@ int run(const options& opt) {
     const std::uint64_t seed = 20240607;
     if (opt.slerp_fast) return run_fast_slerp(opt.quick, seed) > 0 ? 1 : 0;
     if (opt.scipy) return run_scipy();
+    if (opt.rigid) return rigid::run_rigid(opt.quick, seed) > 0 ? 1 : 0;
     std::vector<row> rows;
     runner<float> f{opt, rows, seed};
     runner<double> d{opt, rows, seed};
@@ -303,10 +310,12 @@ int main(int argc, char** argv) {
             opt.slerp_fast = true;
         } else if (std::strcmp(argv[i], "--scipy") == 0) {
             opt.scipy = true;
+        } else if (std::strcmp(argv[i], "--rigid") == 0) {
+            opt.rigid = true;
         } else {
             std::fprintf(stderr,
                          "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick] | "
-                         "--scipy\n",
+                         "--scipy | --rigid [--quick]\n",
                          argv[0]);
             return 2;
         }
