@@ -1,5 +1,7 @@
 // quat/interop/glm.hpp and quat/interop/eigen.hpp: conversions keep every value, and the converted
 // objects rotate, multiply and convert to matrices exactly as quat's do.
+#include <cmath>
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <quat/interop/eigen.hpp>
@@ -65,6 +67,43 @@ TEMPLATE_TEST_CASE("Eigen round trips are exact and keep the meaning of w, x, y,
         CHECK(max_difference(quat::from_eigen(Eigen::Quaternion<TestType>(e * quat::to_eigen(p))),
                              q * p) <= tolerance<TestType>::glm);
     }
+}
+
+TEMPLATE_TEST_CASE("rigid motions convert to glm::mat4 and Eigen::Isometry3 and act alike",
+                   "[interop][glm][eigen]", float, double) {
+    quat::test::random_rotations random;
+    for (int n = 0; n < 200; ++n) {
+        const auto motion = random.rigid_motion<TestType>();
+        const vec3<TestType> p = random.vector<TestType>();
+        const quat::homogeneous_matrix<TestType> m = quat::to_homogeneous(motion);
+        CHECK(quat::from_eigen(quat::to_eigen(m)) == m);
+        CHECK(quat::from_glm(quat::to_glm(m)) == m);
+        const vec3<TestType> moved = quat::transform(m, p);
+        const Eigen::Transform<TestType, 3, Eigen::Isometry> iso(quat::to_eigen(m));
+        CHECK(quat::from_eigen(iso) == m);
+        CHECK(
+            max_difference(quat::from_eigen(Eigen::Matrix<TestType, 3, 1>(iso * quat::to_eigen(p))),
+                           moved) <= tolerance<TestType>::glm * (1 + quat::norm(p)));
+        const auto g = quat::to_glm(m) * glm::vec<4, TestType>(p.x, p.y, p.z, 1);
+        CHECK(max_difference(vec3<TestType>{g.x, g.y, g.z}, moved) <=
+              tolerance<TestType>::glm * (1 + quat::norm(p)));
+        // Eigen's own construction from a rotation and a translation gives the same motion.
+        const auto t = quat::translation_of(motion);
+        const Eigen::Transform<TestType, 3, Eigen::Isometry> built =
+            Eigen::Translation<TestType, 3>(t.x, t.y, t.z) * quat::to_eigen(motion.real);
+        const quat::homogeneous_matrix<TestType> from_built = quat::from_eigen(built);
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c)
+                CHECK(std::abs(from_built(r, c) - m(r, c)) <= tolerance<TestType>::glm);
+    }
+    // An AffineCompact3 has no stored last row: from_eigen writes (0, 0, 0, 1).
+    Eigen::Transform<double, 3, Eigen::AffineCompact> compact =
+        Eigen::Transform<double, 3, Eigen::AffineCompact>::Identity();
+    compact.translation() = Eigen::Vector3d(1, 2, 3);
+    const quat::homogeneous_matrix<double> from_compact = quat::from_eigen(compact);
+    CHECK(from_compact(0, 3) == 1);
+    CHECK(from_compact(3, 3) == 1);
+    CHECK(from_compact(3, 0) == 0);
 }
 
 TEST_CASE("from_eigen reads row-major Eigen matrices by element, not by memory",

@@ -1,4 +1,5 @@
-// Opt-in conversions between quat and Eigen (not included by quat.hpp; needs Eigen's headers).
+// Opt-in conversions between quat and Eigen (not included by quat.hpp; needs Eigen's headers):
+// quaternions, 3x3 and 4x4 matrices (Eigen::Transform in), vectors.
 // Eigen::Quaternion is Hamilton with q v q* like quat, so values carry over unchanged; only the
 // layout differs (coeffs() is x, y, z, w; the constructor takes w, x, y, z).
 #ifndef QUAT_INTEROP_EIGEN_HPP_INCLUDED
@@ -7,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "../homogeneous_matrix.hpp"
 #include "../quaternion.hpp"
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
@@ -41,6 +43,37 @@ template <class T, int Options, int MaxRows, int MaxCols>
     rotation_matrix<T> out{};
     for (int row = 0; row < 3; ++row)
         for (int col = 0; col < 3; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same matrix as Eigen::Matrix4: element (row, col) to (row, col). A rigid motion becomes an
+/// Eigen::Isometry3 by Eigen::Transform<T, 3, Eigen::Isometry>(to_eigen(m)).
+template <class T>
+[[nodiscard]] Eigen::Matrix<T, 4, 4> to_eigen(const homogeneous_matrix<T>& m) {
+    Eigen::Matrix<T, 4, 4> out;
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same matrix from a 4x4 Eigen matrix (row- or column-major).
+template <class T, int Options, int MaxRows, int MaxCols>
+[[nodiscard]] homogeneous_matrix<T> from_eigen(
+    const Eigen::Matrix<T, 4, 4, Options, MaxRows, MaxCols>& m) {
+    homogeneous_matrix<T> out{};
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same motion from an Eigen::Transform in 3D (Isometry3, Affine3, Projective3, or an
+/// AffineCompact3, whose implicit last row (0, 0, 0, 1) is written out).
+template <class T, int Mode, int Options>
+[[nodiscard]] homogeneous_matrix<T> from_eigen(const Eigen::Transform<T, 3, Mode, Options>& t) {
+    homogeneous_matrix<T> out = homogeneous_matrix<T>::identity();
+    const auto& m = t.matrix();
+    for (int row = 0; row < static_cast<int>(m.rows()); ++row)
+        for (int col = 0; col < 4; ++col) out(row, col) = m(row, col);
     return out;
 }
 
