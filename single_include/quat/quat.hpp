@@ -3767,7 +3767,7 @@ inline namespace isa_baseline {
 #endif
 
 /// output[i] = R input[i] + t for i < count (array of structs), the rigid motion of the 4x4 matrix
-/// m: 9 multiply-adds and 3 additions per point. output == input is allowed; other overlaps are
+/// m: 9 multiplications and 9 additions per point. output == input is allowed; other overlaps are
 /// not. Precondition: last row (0, 0, 0, 1), not read.
 template <class T>
 void transform(const homogeneous_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
