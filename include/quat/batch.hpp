@@ -228,25 +228,6 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<
                                input.count);
 }
 
-// The product f[0] f[1] ... f[count - 1] in four interleaved chains (see compose): for quaternions
-// and dual quaternions alike, anything with identity() and an associative operator*.
-template <class Factor>
-[[nodiscard]] constexpr Factor interleaved_product(const Factor* q, std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        Factor product = Factor::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    Factor acc[lanes] = {Factor::identity(), Factor::identity(), Factor::identity(),
-                         Factor::identity()};
-    for (std::size_t i = 0; i < run; ++i)
-        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
-    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
-    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
-}
-
 // sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
 // term is below epsilon / 100 at pi/2 (through x^13 for float, x^21 for double). Unlike std::sin it
 // vectorizes.
@@ -387,7 +368,19 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 /// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    return detail::interleaved_product(q, count);
+    constexpr std::size_t lanes = 4;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        quaternion<T> product = quaternion<T>::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
+                                quaternion<T>::identity(), quaternion<T>::identity()};
+    for (std::size_t i = 0; i < run; ++i)
+        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
+    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
+    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
 }
 
 /// compose over any contiguous container or view of quaternion<T>.
