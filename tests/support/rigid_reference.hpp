@@ -11,6 +11,7 @@
 
 #include <quat/dual_quaternion.hpp>
 #include <quat/homogeneous_matrix.hpp>
+#include <quat/sclerp.hpp>
 
 namespace quat::test {
 
@@ -168,6 +169,23 @@ inline matrix4 logm(matrix4 a) {
 /// a exp(t log(a^-1 b)): the screw motion from a to b, in long double.
 inline matrix4 reference_sclerp(const matrix4& a, const matrix4& b, long double t) {
     return a * expm(t * logm(inverse4(a) * b));
+}
+
+/// A difference and the size it is measured against.
+struct scaled_difference {
+    long double difference, scale;
+    [[nodiscard]] long double relative() const { return difference / scale; }
+};
+
+/// The largest entry difference of quat::sclerp(a, b, t) from the matrix form, and the sizes
+/// involved: the largest entry of a, b and the result, at least 1. (The computation passes through
+/// a's and b's translations even where the path comes near the origin.)
+template <class T>
+scaled_difference sclerp_difference(const dual_quaternion<T>& a, const dual_quaternion<T>& b, T t) {
+    const matrix4 ma = reference_matrix(a), mb = reference_matrix(b);
+    const matrix4 reference = reference_sclerp(ma, mb, t);
+    return {max_difference(reference_matrix(sclerp(a, b, t)), reference),
+            std::max({1.0L, max_abs(reference), max_abs(ma), max_abs(mb)})};
 }
 
 }  // namespace quat::test

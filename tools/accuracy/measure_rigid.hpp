@@ -212,8 +212,7 @@ inline screw_parameters screw_of(hdq a) {
 
 // ---- measurements ---------------------------------------------------------------------------
 
-template <class T>
-long double matrix_error_scale(const matrix4& reference) {
+inline long double matrix_error_scale(const matrix4& reference) {
     return std::max(1.0L, max_abs(reference));
 }
 
@@ -221,12 +220,8 @@ long double matrix_error_scale(const matrix4& reference) {
 template <class T>
 void measure_sclerp(scaled_stats& s, const dual_quaternion<T>& a, const dual_quaternion<T>& b,
                     T t) {
-    const matrix4 ref = quat::test::reference_sclerp(reference_matrix(a), reference_matrix(b),
-                                                     static_cast<long double>(t));
-    const matrix4 got = reference_matrix(quat::sclerp(a, b, t));
-    const long double scale = std::max(
-        {matrix_error_scale<T>(ref), max_abs(reference_matrix(a)), max_abs(reference_matrix(b))});
-    s.add(max_difference(got, ref), scale, eps<T>, [&] {
+    const quat::test::scaled_difference d = quat::test::sclerp_difference(a, b, t);
+    s.add(d.difference, d.scale, eps<T>, [&] {
         return "a = " + describe(a) + ", b = " + describe(b) + ", t = " + describe_scalar(t);
     });
 }
@@ -332,7 +327,7 @@ void measure_conversions(rng& g, int count, bool edge, conversion_stats<T>& out)
         // to_homogeneous of the dual quaternion rounded once from q, and the round trip.
         const dual_quaternion<T> dq = quat::to_dual_quaternion(to_quat(narrow<T>(q)), t);
         const matrix4 ref = reference_matrix(dq);
-        const long double scale = matrix_error_scale<T>(ref);
+        const long double scale = matrix_error_scale(ref);
         const auto what_dq = [&] { return "dq = " + describe(dq); };
         const quat::homogeneous_matrix<T> h = quat::to_homogeneous(dq);
         out.to_homogeneous.add(max_difference(reference_matrix(h), ref), scale, eps<T>, what_dq);
@@ -344,7 +339,7 @@ void measure_conversions(rng& g, int count, bool edge, conversion_stats<T>& out)
         const matrix4 m_ref = reference_matrix(m);
         const dual_quaternion<T> back = quat::to_dual_quaternion(m);
         out.to_dual_quaternion.add(
-            max_difference(reference_matrix(back), m_ref), matrix_error_scale<T>(m_ref), eps<T>,
+            max_difference(reference_matrix(back), m_ref), matrix_error_scale(m_ref), eps<T>,
             [&] { return "rotation " + describe(to_quat(narrow<T>(q))) + ", t = " + describe(t); });
     }
 }
@@ -356,7 +351,7 @@ scaled_stats measure_product(rng& g, int count) {
     for (int i = 0; i < count; ++i) {
         const dual_quaternion<T> a = random_motion<T>(g), b = random_motion<T>(g);
         const matrix4 ref = reference_matrix(a) * reference_matrix(b);
-        s.add(max_difference(reference_matrix(a * b), ref), matrix_error_scale<T>(ref), eps<T>,
+        s.add(max_difference(reference_matrix(a * b), ref), matrix_error_scale(ref), eps<T>,
               [&] { return "a = " + describe(a) + ", b = " + describe(b); });
     }
     return s;
@@ -376,7 +371,7 @@ scaled_stats measure_compose(rng& g, int chains, int factors) {
             ref = ref * reference_matrix(step);
         }
         const dual_quaternion<T> got = quat::compose(steps.data(), steps.size());
-        s.add(max_difference(reference_matrix(got), ref), matrix_error_scale<T>(ref), eps<T>,
+        s.add(max_difference(reference_matrix(got), ref), matrix_error_scale(ref), eps<T>,
               [&] { return "chain " + std::to_string(c) + ", result " + describe(got); });
     }
     return s;
