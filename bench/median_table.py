@@ -2,9 +2,11 @@
 """Prints the README's Performance table: the median over several quat_bench runs of each cell.
 
 Usage: python3 bench/median_table.py run1.json run2.json run3.json
-  each from: quat_bench --table --benchmark_out=runN.json --benchmark_out_format=json
+       python3 bench/median_table.py --levels x86-64=a1.json,a2.json x86-64-v3=b1.json native=c1.json
+  each run from: quat_bench --table --benchmark_out=runN.json --benchmark_out_format=json
 Cells are ns per item (point, product, call or value) from items_per_second, as `--table` prints
-them; ratio = other / quat (> 1: quat faster). Python 3 standard library only.
+them; ratio = other / quat (> 1: quat faster). With --levels, one column per build (instruction-set
+level), each cell "quat ns (GLM / quat, Eigen / quat)". Python 3 standard library only.
 """
 import json
 import statistics
@@ -26,6 +28,16 @@ ROWS = [
      "rotate_batch/{lib}/quaternion_soa/float/4194304"),
     ("memcpy of the same bytes, n = 1024", "rotate_batch/memcpy/bytes/float/1024"),
     ("memcpy of the same bytes, n = 4194304", "rotate_batch/memcpy/bytes/float/4194304"),
+    ("rotate_each, point i by quaternion i, n = 1024", "rotate_each/{lib}/quaternion/float/1024"),
+    ("rotate_each, struct of arrays, n = 1024", "rotate_each/{lib}/quaternion_soa/float/1024"),
+    ("rotate_each, n = 4194304", "rotate_each/{lib}/quaternion/float/4194304"),
+    ("rotate_each, struct of arrays, n = 4194304",
+     "rotate_each/{lib}/quaternion_soa/float/4194304"),
+    ("memcpy of rotate_each's bytes, n = 1024", "rotate_each/memcpy/bytes/float/1024"),
+    ("memcpy of rotate_each's bytes, n = 4194304", "rotate_each/memcpy/bytes/float/4194304"),
+    ("compose_each, a[i] * b[i], n = 1024", "compose_each/{lib}/quaternion/float/1024"),
+    ("to_matrix over an array, n = 1024", "to_matrix_each/{lib}/quaternion/float/1024"),
+    ("to_quaternion over an array, n = 1024", "to_quaternion_each/{lib}/matrix/float/1024"),
     ("compose, quaternion", "compose/{lib}/quaternion/float"),
     ("compose, matrix", "compose/{lib}/matrix/float"),
     ("chain k = 8, quaternion", "chain/{lib}/quaternion/float/8"),
@@ -47,7 +59,10 @@ ROWS = [
     ("slerp (one call), double", "slerp/{lib}/quaternion/double"),
     ("slerp_batch, 1024 t values (per value; GLM/Eigen: per-call loop)",
      "slerp_batch/{lib}/quaternion/float/1024"),
-    ("slerp_fast (one call)", "slerp_fast/{lib}/quaternion/float"),
+    ("slerp_fast family: nlerp (one call)", "slerp_fast/quat/nlerp/float"),
+    ("slerp_fast family: corrected_nlerp (one call)", "slerp_fast/quat/corrected_nlerp/float"),
+    ("slerp_fast family: eberly, `slerp_fast` (one call)", "slerp_fast/quat/eberly/float"),
+    ("slerp_fast family: exact `slerp` (one call)", "slerp_fast/quat/slerp/float"),
     ("nlerp", "nlerp/{lib}/quaternion/float"),
     ("normalize", "normalize/{lib}/quaternion/float"),
     ("transform_batch, dual quaternion (GLM: dualquat * p), n = 1024",
@@ -82,9 +97,54 @@ def ns_per_item(path):
     return data["context"], out
 
 
+def median_of(runs, name):
+    values = [r[name] for _, r in runs if name in r]
+    return statistics.median(values) if values else None
+
+
+def fmt(x, ratio=False):
+    if x is None:
+        return ""
+    if ratio:
+        return f"{x:.2f}"
+    return f"{x:.0f}" if x >= 100 else f"{x:.1f}" if x >= 10 else f"{x:.2f}" if x >= 1 else f"{x:.3f}"
+
+
+def level_cell(runs, pattern):
+    if "{lib}" not in pattern:
+        return fmt(median_of(runs, pattern))
+    cells = {lib: median_of(runs, pattern.format(lib=lib)) for lib in LIBRARIES}
+    q = cells["quat"]
+    ratios = [fmt(cells[lib] / q, ratio=True) for lib in ("glm", "eigen") if q and cells[lib]]
+    return fmt(q) + (f" ({', '.join(ratios)})" if ratios else "")
+
+
+def print_levels(arguments):
+    levels = []
+    for argument in arguments:
+        level, _, paths = argument.partition("=")
+        if not paths:
+            sys.exit(__doc__)
+        levels.append((level, [ns_per_item(p) for p in paths.split(",")]))
+    for level, runs in levels:
+        context = runs[0][0]
+        print(f"<!-- {level}: {len(runs)} runs; {context.get('quat_compiler', '?')}, "
+              f"{context.get('quat_compile_flags', '?')} -->")
+    print("| benchmark (float unless noted); quat ns (GLM / quat, Eigen / quat) | "
+          + " | ".join(level for level, _ in levels) + " |")
+    print("|---|" + "---|" * len(levels))
+    for label, pattern in ROWS:
+        cells = [level_cell(runs, pattern) for _, runs in levels]
+        if any(cells):
+            print(f"| {label} | " + " | ".join(cells) + " |")
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
+    if sys.argv[1] == "--levels":
+        print_levels(sys.argv[2:])
+        return
     runs = [ns_per_item(p) for p in sys.argv[1:]]
     context = runs[0][0]
     print(f"<!-- {len(runs)} runs; {context.get('quat_compiler', '?')}, "
@@ -93,15 +153,7 @@ def main():
     print("|---|---|---|---|---|---|")
 
     def median(name):
-        values = [r[name] for _, r in runs if name in r]
-        return statistics.median(values) if values else None
-
-    def fmt(x, ratio=False):
-        if x is None:
-            return ""
-        if ratio:
-            return f"{x:.2f}"
-        return f"{x:.0f}" if x >= 100 else f"{x:.1f}" if x >= 10 else f"{x:.2f}" if x >= 1 else f"{x:.3f}"
+        return median_of(runs, name)
 
     for label, pattern in ROWS:
         if "{lib}" not in pattern:

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's two commands.
-#   bash tools/quat.sh bench   build the release preset and print the benchmark comparison table
+#   bash tools/quat.sh bench   build quat_bench for this machine (preset release-native, -march=native)
+#                              and print the benchmark comparison table, naming the instruction set
 #   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does)
 # Both first make sure the Debian packages quat needs are installed: as root they are installed
 # with apt-get; otherwise the script stops and prints the apt-get line to run.
@@ -41,14 +42,17 @@ ensure_packages() {
     apt-get install -y --no-install-recommends "${missing[@]}"
 }
 
+# The benchmark is run where it is built, so it is built for this machine's instruction set; the
+# presets release (plain x86-64) and release-x86-64-v3 (AVX2 + FMA) build the other levels.
 run_bench() {
-    cmake --preset release
-    if ! cmake --build --preset release --target quat_bench; then
+    local preset=release-native
+    cmake --preset "$preset"
+    if ! cmake --build --preset "$preset" --target quat_bench; then
         echo "quat.sh: could not build the quat_bench target (is bench/ present?)" >&2
         exit 1
     fi
     local exe
-    exe="$(find build/release -type f -name quat_bench -perm -u+x | head -n 1)"
+    exe="$(find "build/$preset" -type f -name quat_bench -perm -u+x | head -n 1)"
     [[ -n "$exe" ]] || { echo "quat.sh: quat_bench executable not found" >&2; exit 1; }
     "$exe" --table
 }
