@@ -2,6 +2,7 @@
 // structs of arrays, compose over a span, slerp at many parameters.
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <quat/batch.hpp>
@@ -28,8 +29,11 @@ TEMPLATE_TEST_CASE("batch rotate equals the scalar rotate, array of structs, eve
                    float, double) {
     using T = TestType;
     quat::test::random_rotations random;
-    // Sizes around the block length (256) and odd ones, so every tail path runs.
-    for (const std::size_t n : {0u, 1u, 2u, 3u, 7u, 255u, 256u, 257u, 1000u, 1025u}) {
+    // Every size to 40 (the AVX steps of 16 and 8 points and each tail), sizes around the block
+    // length (256) and odd ones, so every path runs.
+    std::vector<std::size_t> sizes = {255u, 256u, 257u, 1000u, 1025u};
+    for (std::size_t n = 0; n <= 40; ++n) sizes.push_back(n);
+    for (const std::size_t n : sizes) {
         const quat::quaternion<T> q = random.unit_quaternion<T>();
         const quat::rotation_matrix<T> m = quat::to_matrix(q);
         const std::vector<quat::vec3<T>> in = random_points<T>(random, n);
@@ -86,6 +90,29 @@ TEST_CASE("batch rotate works in place (output == input), the documented aliasin
     for (std::size_t i = 0; i < 600; ++i)
         CHECK(max_difference(quat::vec3<float>{x[i], y[i], z[i]}, expected[i]) <=
               64 * quat::test::tolerance<float>::rotate);
+}
+
+TEST_CASE("batch rotate: a NaN or infinite point gives NaN in its own output only", "[batch]") {
+    quat::test::random_rotations random;
+    const quat::quatf q = random.unit_quaternion<float>();
+    for (const float bad :
+         {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        for (std::size_t at = 0; at < 40; at += 3) {  // every position in a 16- and 8-point step
+            std::vector<quat::vec3<float>> points = random_points<float>(random, 40);
+            points[at].y = bad;
+            std::vector<quat::vec3<float>> out(points.size());
+            quat::rotate(q, points, out);
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                const quat::vec3<float> expected = quat::rotate(q, points[i]);
+                if (i == at) {
+                    CHECK_FALSE(std::isfinite(out[i].x + out[i].y + out[i].z));
+                } else {
+                    CHECK(max_difference(out[i], expected) <=
+                          64 * quat::test::tolerance<float>::rotate);
+                }
+            }
+        }
+    }
 }
 
 TEST_CASE("batch rotate accepts std::array and C arrays", "[batch]") {

@@ -101,12 +101,19 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
     const T tx = t.x, ty = t.y, tz = t.z;
     std::size_t done = 0;
 #if defined(__AVX__)
-    // Float with AVX: whole groups of 8 points by the lane-wise shuffles (interleaved_points_avx.hpp),
-    // the rest below.
+    // Float with AVX: whole groups of 16 points (AVX-512) and of 8 points by the shuffles of
+    // interleaved_points_avx.hpp, the rest below.
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                       "vec3<float> must be three packed floats");
-        if (n >= 8) done = transform_interleaved<Translate>(m, t, &input[0].x, &output[0].x, n);
+        if (n >= 8) {
+            const float* in = &input[0].x;
+            float* out = &output[0].x;
+#if defined(__AVX512F__)
+            done = transform_interleaved_16<Translate>(m, t, in, out, n);
+#endif
+            done += transform_interleaved<Translate>(m, t, in + 3 * done, out + 3 * done, n - done);
+        }
     }
 #endif
     // Point i is read before it is written and no iteration touches another's point, so the
