@@ -1,10 +1,10 @@
 // Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
 // many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
-// objdump), no allocation, the same results for any scalar type. Intrinsics in two places: the
-// array-of-structs float loop in AVX builds (detail/interleaved_points_avx.hpp: shuffles that stay
-// inside 128-bit lanes, 1.6x faster than the compiled loop), and the non-temporal store of float
-// arrays beyond 16 MiB on x86 (struct of arrays with SSE, array of structs only in AVX-512 builds,
-// where it measured faster; plain stores elsewhere).
+// objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
+// structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
+// 1.6x the compiled loop at -march=x86-64-v3), and float arrays beyond 16 MiB on x86 are written
+// with non-temporal stores (struct of arrays with SSE, array of structs only in AVX-512 builds,
+// where it measured faster; plain stores elsewhere), the one use of intrinsics.
 //
 // Arrays are passed either as pointer + count or as any contiguous container or view with data()
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
@@ -100,22 +100,14 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
     const T tx = t.x, ty = t.y, tz = t.z;
     std::size_t done = 0;
-#if defined(__AVX__)
-    // Float with AVX: whole groups of 16 points (AVX-512) and of 8 points by the shuffles of
-    // interleaved_points_avx.hpp, the rest below.
+    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
+    // in AVX builds, the rest (all of it elsewhere) below.
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                       "vec3<float> must be three packed floats");
-        if (n >= 8) {
-            const float* in = &input[0].x;
-            float* out = &output[0].x;
-#if defined(__AVX512F__)
-            done = transform_interleaved_16<Translate>(m, t, in, out, n);
-#endif
-            done += transform_interleaved<Translate>(m, t, in + 3 * done, out + 3 * done, n - done);
-        }
+        if (n >= 8)
+            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
     }
-#endif
     // Point i is read before it is written and no iteration touches another's point, so the
     // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
 #if defined(__clang__)
