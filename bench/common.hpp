@@ -251,6 +251,7 @@ void register_align();       // bench_align.cpp
 void register_estimation();  // bench_estimation.cpp
 void register_keyframes();   // bench_keyframes.cpp
 void register_rigid();       // bench_rigid.cpp
+void register_each();        // bench_each.cpp
 
 /// `quat_bench --counts`: the operation-count tables.
 int print_counts();

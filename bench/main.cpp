@@ -262,6 +262,7 @@ int main(int argc, char** argv) {
     bench::register_estimation();
     bench::register_keyframes();
     bench::register_rigid();
+    bench::register_each();
     if (!table) {
         benchmark::RunSpecifiedBenchmarks();
     } else {

@@ -294,6 +294,34 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         std::vector<quat::dual_quaternion<T>> chain(20, motion);
         chain[13] = bad_rotation;
         CHECK(bad(quat::compose(chain).real));
+
+        // elementwise.hpp: the bad element only
+        std::vector<quaternion<T>> rotations(40, unit);
+        rotations[9] = q;
+        quat::rotate_each(rotations, points, rotated);
+        CHECK(bad(rotated[7]));  // the bad point
+        CHECK(bad(rotated[9]));  // the bad rotation
+        CHECK_FALSE(bad(rotated[8]));
+        std::vector<T> w(40, T(1)), zero(40, T(0));
+        quat::rotate_each(
+            quat::soa_quaternions<const T>{w.data(), zero.data(), zero.data(), zero.data(), 40},
+            quat::soa_points<const T>{x.data(), y.data(), z.data(), 40},
+            quat::soa_points<T>{ox.data(), oy.data(), oz.data(), 40});
+        CHECK(bad(vec3<T>{ox[3], oy[3], oz[3]}));
+        CHECK_FALSE(bad(vec3<T>{ox[4], oy[4], oz[4]}));
+        std::vector<quaternion<T>> products(40);
+        quat::compose_each(rotations, std::vector<quaternion<T>>(40, other), products);
+        CHECK(bad(products[9]));
+        CHECK_FALSE(bad(products[10]));
+        std::vector<rotation_matrix<T>> matrices(40);
+        quat::to_matrix(rotations, matrices);
+        CHECK(bad(matrices[9]));
+        CHECK_FALSE(bad(matrices[10]));
+        matrices[10] = m;
+        std::vector<quaternion<T>> converted(40);
+        quat::to_quaternion(matrices, converted);
+        CHECK(bad(converted[10]));
+        CHECK_FALSE(bad(converted[11]));
     }
 }
 

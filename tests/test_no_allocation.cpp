@@ -67,6 +67,7 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     // The streaming path (beyond 16 MiB) is its own branch; allocate its arrays before counting.
     const std::size_t big = (std::size_t(16) << 20) / sizeof(quat::vec3<float>) + 7;
     std::vector<quat::vec3<float>> big_points(big, quat::vec3<float>{1, 0, 0}), big_out(big);
+    std::vector<quat::rotation_matrix<float>> matrices(n);
 
     // The counter must see a probe allocation, or the check below would prove nothing. (A direct
     // call of operator new, which unlike a new-expression the compiler may not leave out.)
@@ -121,6 +122,18 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     quat::transform(quat::to_homogeneous(db), big_points, big_out);
     quat::transform(da, quat::soa_points<const float>{xs.data(), ys.data(), zs.data(), n},
                     quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
+    // Per-element batches (elementwise.hpp).
+    quat::rotate_each(factors, points, out);
+    quat::rotate_each(factors.data(), points.data(), points.data(), n);
+    quat::rotate_each(
+        quat::soa_quaternions<const float>{xs.data(), ys.data(), zs.data(), ts.data(), n},
+        quat::soa_points<const float>{xs.data(), ys.data(), zs.data(), n},
+        quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
+    quat::compose_each(factors, factors, slerped);
+    quat::compose_each(factors.data(), slerped.data(), slerped.data(), n);
+    quat::to_matrix(factors, matrices);
+    quat::to_quaternion(matrices.data(), slerped.data(), n);
+    sink += out[1].x + ox[2] + slerped[3].w + matrices[4](0, 0);
     const long after = allocations.load();
 
     CHECK(after == before);

@@ -31,6 +31,7 @@
 #include "continuous_euler.hpp"
 #include "conversions.hpp"
 #include "dual_quaternion.hpp"
+#include "elementwise.hpp"
 #include "euler.hpp"
 #include "fast_slerp.hpp"
 #include "homogeneous_matrix.hpp"

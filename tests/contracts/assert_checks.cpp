@@ -67,6 +67,23 @@ int valid() {
     quat::transform(motion, quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
                     quat::soa_points<double>{x.data(), y.data(), z.data(), 64});
     sink = sink + quat::to_homogeneous(motion)(3, 3);
+    // Per-element batches: drifted rotations, in place, adjacent halves, each SoA array in place.
+    const std::vector<quatd> rotations(300, drifted);
+    quat::rotate_each(rotations, points, points);
+    quat::rotate_each(rotations.data(), points.data(), points.data() + 150, 150);
+    std::vector<quatd> products = rotations;
+    quat::compose_each(products, rotations, products);
+    quat::compose_each(rotations, products, products);
+    quat::compose_each(products.data(), products.data(), products.data() + 150, 150);
+    std::vector<double> w(64, 1), zero(64, 0);
+    quat::rotate_each(
+        quat::soa_quaternions<const double>{w.data(), zero.data(), zero.data(), zero.data(), 64},
+        quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
+        quat::soa_points<double>{x.data(), y.data(), z.data(), 64});
+    std::vector<quat::rotation_matrix<double>> matrices(300);
+    quat::to_matrix(products, matrices);
+    quat::to_quaternion(matrices, products);
+    sink = sink + points[7].x + products[9].w;
     std::printf("no assertion fired (%g)\n", static_cast<double>(sink));
     return 0;
 }
@@ -162,6 +179,31 @@ int run(const char* name) {
     if (std::strcmp(name, "rigid_batch_short_output") == 0) {
         std::vector<vec3<double>> out(10);
         quat::transform(motion, points, out);
+    }
+    const std::vector<quatd> rotations(64, quatd::identity());
+    std::vector<quatd> products(64, quatd::identity());
+    if (std::strcmp(name, "rotate_each_overlap") == 0)
+        quat::rotate_each(rotations.data(), points.data(), points.data() + 1, 63);
+    if (std::strcmp(name, "rotate_each_short_output") == 0) {
+        std::vector<vec3<double>> out(10);
+        quat::rotate_each(rotations, points, out);
+    }
+    if (std::strcmp(name, "rotate_each_size") == 0)
+        quat::rotate_each(std::vector<quatd>(3, quatd::identity()), points, points);
+    if (std::strcmp(name, "rotate_each_soa_overlap") == 0)
+        quat::rotate_each(
+            quat::soa_quaternions<const double>{x.data(), y.data(), z.data(), x.data(), 60},
+            quat::soa_points<const double>{x.data(), y.data(), z.data(), 60},
+            quat::soa_points<double>{x.data(), y.data(), z.data() + 3, 60});
+    if (std::strcmp(name, "compose_each_overlap") == 0)
+        quat::compose_each(rotations.data(), products.data(), products.data() + 1, 63);
+    if (std::strcmp(name, "compose_each_short_output") == 0) {
+        std::vector<quatd> out(10);
+        quat::compose_each(rotations, products, out);
+    }
+    if (std::strcmp(name, "to_matrix_overlap") == 0) {
+        std::vector<quat::rotation_matrix<double>> matrices(64);
+        quat::to_matrix(reinterpret_cast<const quatd*>(matrices.data()), matrices.data(), 8);
     }
     std::printf("no assertion fired for '%s' (%g)\n", name, static_cast<double>(sink));
     return 0;
