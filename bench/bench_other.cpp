@@ -180,6 +180,42 @@ void slerp_batch(benchmark::State& state, long long n) {
     state.SetItemsProcessed(state.iterations() * n);
 }
 
+// The slerp_fast family, slerp_fast/quat/<method>/<type>, each labelled with its largest
+// rotation-angle error: the bounds tests/test_fast_slerp.cpp asserts for nlerp, corrected_nlerp and
+// slerp_fast ("eberly"), and for the exact slerp issue 7's 4 eps that `quat_accuracy --slerp-fast`
+// checks (tools/accuracy/measure_fast_slerp.hpp). Keep these strings equal to those bounds.
+struct slerp_fast_labels {
+    const char *nlerp, *corrected_nlerp, *eberly, *slerp;
+};
+constexpr slerp_fast_labels slerp_fast_float{"max error 0.143 rad", "max error 5.9e-4 rad",
+                                             "max error 4e-7 rad", "max error 4.8e-7 rad"};
+constexpr slerp_fast_labels slerp_fast_double{"max error 0.143 rad", "max error 5.9e-4 rad",
+                                              "max error 3.4e-8 rad", "max error 8.9e-16 rad"};
+
+template <class T, class F>
+void add_slerp_fast(const char* method, const char* label, F f) {
+    benchmark::RegisterBenchmark(name("slerp_fast", "quat", method, type_name<T>).c_str(),
+                                 [label, f](benchmark::State& state) {
+                                     interpolate<lib_quat<T>>(state, f);
+                                     state.SetLabel(label);
+                                 });
+}
+
+template <class T>
+void register_slerp_fast_family() {
+    using Q = quat::quaternion<T>;
+    const slerp_fast_labels& label =
+        std::is_same_v<T, float> ? slerp_fast_float : slerp_fast_double;
+    add_slerp_fast<T>("nlerp", label.nlerp,
+                      [](const Q& a, const Q& b, T t) { return quat::nlerp(a, b, t); });
+    add_slerp_fast<T>("corrected_nlerp", label.corrected_nlerp,
+                      [](const Q& a, const Q& b, T t) { return quat::corrected_nlerp(a, b, t); });
+    add_slerp_fast<T>("eberly", label.eberly,
+                      [](const Q& a, const Q& b, T t) { return quat::slerp_fast(a, b, t); });
+    add_slerp_fast<T>("slerp", label.slerp,
+                      [](const Q& a, const Q& b, T t) { return quat::slerp(a, b, t); });
+}
+
 template <template <class> class Lib, class T>
 void register_interpolation_for() {
     using L = Lib<T>;
@@ -199,13 +235,7 @@ void register_interpolation_for() {
         });
     benchmark::RegisterBenchmark(name("slerp_batch", L::name, "quaternion", type, 1024).c_str(),
                                  slerp_batch<L>, 1024);
-    if constexpr (std::is_same_v<L, lib_quat<T>>) {
-        benchmark::RegisterBenchmark(
-            name("slerp_fast", "quat", "quaternion", type).c_str(), [](benchmark::State& s) {
-                interpolate<L>(
-                    s, [](const Q& a, const Q& b, T t) { return quat::slerp_fast(a, b, t); });
-            });
-    }
+    if constexpr (std::is_same_v<L, lib_quat<T>>) register_slerp_fast_family<T>();
 }
 
 }  // namespace

@@ -247,6 +247,7 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     check_same(slerp(a, b, r(1.7)), slerp(ad, bd, 1.7));
     check_same(nlerp(a, b, r(0.3)), nlerp(ad, bd, 0.3));
     check_same(slerp_fast(a, b, r(0.3)), slerp_fast(ad, bd, 0.3));
+    check_same(corrected_nlerp(a, b, r(0.3)), corrected_nlerp(ad, bd, 0.3));
     check_same(pow(a, r(0.3)), pow(ad, 0.3));
     check_same(rotate_towards(a, b, r(0.2)), rotate_towards(ad, bd, 0.2));
     CHECK(same(to_mrp(a).y, to_mrp(ad).y));

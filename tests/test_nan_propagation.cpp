@@ -169,11 +169,13 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
             CHECK(bad(quat::slerp(q, unit, t)));
             CHECK(bad(quat::nlerp(unit, q, t)));
             CHECK(bad(quat::slerp_fast(q, unit, t)));
+            CHECK(bad(quat::corrected_nlerp(q, unit, t)));
         }
         CHECK(bad(quat::slerp(unit, other, value)));
         CHECK(bad(quat::slerp(unit, unit, value)));  // no motion to scale, but t is still bad
         CHECK(bad(quat::nlerp(unit, other, value)));
         CHECK(bad(quat::slerp_fast(unit, other, value)));
+        CHECK(bad(quat::corrected_nlerp(unit, other, value)));
 
         // interpolation.hpp: powers and bounded steps
         CHECK(bad(quat::pow(q, T(0.5))));

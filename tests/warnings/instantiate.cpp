@@ -67,7 +67,7 @@ T everything() {
     sum += euler_functions<T, sequence::zyx, frame::intrinsic>(q) +
            euler_functions<T, sequence::xzx, frame::extrinsic>(q);
     sum += slerp(q, r, T(0.3)).w + slerp(q, r, T(1.5)).x + nlerp(q, r, T(0.3)).y +
-           slerp_fast(q, r, T(0.3)).z;
+           slerp_fast(q, r, T(0.3)).z + corrected_nlerp(q, r, T(0.3)).w;
 
     std::vector<vec3<T>> points(64, v), out(64);
     rotate(q, points, out);

@@ -2,7 +2,8 @@
 // float and double, on random inputs (fixed seed) and on edge-case families; prints a markdown
 // table. Exit status 1 when any of quat's targets (issue 7) is missed.
 //   quat_accuracy [--quick] [--worst] [--conventions]
-//   quat_accuracy --slerp-fast [--quick]   (slerp_fast's error in radians; exit 1 above its bound)
+//   quat_accuracy --slerp-fast [--quick]   (nlerp, corrected_nlerp, slerp_fast, slerp: errors in
+//                                           radians; exit 1 above a bound, measure_fast_slerp.hpp)
 //   quat_accuracy --scipy                  (align_vectors, mean, Slerp, RotationSpline vs SciPy)
 //   quat_accuracy --rigid [--quick]        (dual quaternions, 4x4 matrices, sclerp, blend and
 //                                           transform vs long double; sclerp's constant speed
@@ -27,7 +28,7 @@ struct options {
     bool scipy = false;        // align_vectors and mean against SciPy's reference data
     bool worst = false;        // print the input behind each row's maximum
     bool conventions = false;  // print the Euler maximum of each convention
-    bool slerp_fast = false;   // measure slerp_fast instead of printing the table
+    bool slerp_fast = false;   // the fast-slerp family's table instead
     bool rigid = false;        // the rigid-motion tables of measure_rigid.hpp instead
 };
 
