@@ -342,3 +342,36 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     transform(da, points, rotated);
     CHECK(same(rotated[1].x, transform(dad, vd).x));
 }
+
+TEMPLATE_TEST_CASE("the element-wise batches give a user scalar the scalar functions' results",
+                   "[generic][elementwise]", user::real, user::runtime_real) {
+    using R = TestType;
+    const std::size_t n = 9;
+    std::vector<quat::quaternion<R>> q, products(n), back(n);
+    std::vector<quat::vec3<R>> p, out(n);
+    std::vector<quat::rotation_matrix<R>> m(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = static_cast<double>(i);
+        q.push_back(
+            quat::normalize(quat::quaternion<R>{R(1.0 + s), R(0.3 - s), R(0.2 * s), R(-0.7)}));
+        p.push_back(quat::vec3<R>{R(s), R(2.0 - s), R(0.5)});
+    }
+    quat::rotate_each(q, p, out);
+    quat::compose_each(q, q, products);
+    quat::to_matrix(q, m);
+    quat::to_quaternion(m, back);
+    for (std::size_t i = 0; i < n; ++i) {
+        const quat::vec3<R> rotated = quat::rotate(q[i], p[i]);
+        CHECK((same(out[i].x, rotated.x.value) && same(out[i].y, rotated.y.value) &&
+               same(out[i].z, rotated.z.value)));
+        const quat::quaternion<R> product = q[i] * q[i];
+        CHECK((same(products[i].w, product.w.value) && same(products[i].x, product.x.value) &&
+               same(products[i].y, product.y.value) && same(products[i].z, product.z.value)));
+        const quat::rotation_matrix<R> matrix = quat::to_matrix(q[i]);
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) CHECK(same(m[i](r, c), matrix(r, c).value));
+        const quat::quaternion<R> converted = quat::to_quaternion(m[i]);
+        CHECK((same(back[i].w, converted.w.value) && same(back[i].x, converted.x.value) &&
+               same(back[i].y, converted.y.value) && same(back[i].z, converted.z.value)));
+    }
+}
