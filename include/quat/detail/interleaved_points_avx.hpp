@@ -199,9 +199,10 @@ template <bool Translate>
 // `out` with the kernels above where the build has them (AVX, g++ 12 or clang), and returns how
 // many it did, leaving fewer than 8 to the caller; 0 elsewhere.
 template <bool Translate>
-[[nodiscard]] inline std::size_t transform_interleaved_floats(const rotation_matrix<float>& m,
-                                                              const vec3<float>& t, const float* in,
-                                                              float* out, std::size_t n) noexcept {
+[[nodiscard]] inline std::size_t transform_interleaved_floats(
+    const rotation_matrix<float>& m, const vec3<float>& t, const float* in,
+    // NOLINTNEXTLINE(readability-non-const-parameter): AVX builds write it
+    float* out, std::size_t n) noexcept {
     std::size_t done = 0;
 #if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
