@@ -3,8 +3,7 @@
 // objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
 // structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
 // 1.6x the compiled loop at -march=x86-64-v3), and float arrays beyond 16 MiB on x86 are written
-// with non-temporal stores (struct of arrays with SSE, array of structs only in AVX-512 builds,
-// where it measured faster; plain stores elsewhere), the one use of intrinsics.
+// with non-temporal stores (both layouts; plain stores elsewhere), the one use of intrinsics.
 //
 // Arrays are passed either as pointer + count or as any contiguous container or view with data()
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
@@ -198,18 +197,18 @@ template <class T>
 template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
                       vec3<T>* output, std::size_t count) noexcept {
-#if defined(__AVX512F__)
-    // Streaming pays off only where the loop below runs 512 bits wide: there, rotating 4M points
-    // out of cache took 3.4-3.8 ms with ordinary stores and 2.7-3.1 ms streamed (memcpy of the same
-    // bytes 2.3-2.5 ms). In SSE2 and AVX2 builds ordinary stores kept pace with memcpy (2.2-3.1 ms)
-    // and streaming through the buffer was slower (3.4-4.1 ms); Zen 5, g++ 12.
+    // Beyond 16 MiB the points go through a buffer and non-temporal stores, in every x86 build. The
+    // evidence differs by machine. Zen 5 (issue 6): streaming won only in AVX-512 builds (4M
+    // points 2.7-3.1 ms against 3.4-3.8 plain; memcpy 2.3-2.5) and lost with SSE2 and AVX2
+    // (3.4-4.1 against 2.2-3.1). The Intel Xeon of issue 16, where 4M points sit in a 480 MiB L3
+    // that memcpy's rep movsb fills without reading the destination: streaming won at every level
+    // (medians of 5: SSE2 5.7 ms against 6.6 plain, AVX2 4.7-4.9 against 5.2-6.0; memcpy 3.7).
     if constexpr (std::is_same_v<T, float>) {
-        if (count * sizeof(vec3<float>) >= streaming_bytes) {
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_bytes) {
             transform_streaming<Translate>(m, t, input, output, count);
             return;
         }
     }
-#endif
     // Each point is read before it is written, so output == input is safe here; g++ and clang
     // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
     transform_block<Translate>(m, t, input, output, count);

@@ -23,6 +23,13 @@ inline namespace isa_avx {
 inline namespace isa_baseline {
 #endif
 
+// True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
+#if defined(__SSE__) || defined(_M_X64)
+inline constexpr bool has_streaming_stores = true;
+#else
+inline constexpr bool has_streaming_stores = false;
+#endif
+
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
 // stores elsewhere.
 inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
