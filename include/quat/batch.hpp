@@ -59,11 +59,13 @@ inline namespace isa_avx {
 inline namespace isa_baseline {
 #endif
 
+// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
+template <class In, class Out, class Input, class Output>
+using if_arrays_of = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
 template <class T, class Input, class Output>
-using if_point_arrays = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())),
-                          const vec3<T>*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
+using if_point_arrays = if_arrays_of<vec3<T>, vec3<T>, Input, Output>;
 
 // True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
 // overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.

@@ -233,6 +233,15 @@ template <class T>
              {xz - wy, yz + wx, T(1) - (xx + yy)}}};
 }
 
+/// rotate(q, v) without its debug check of |q|: for loops that check once per call, or not at all.
+template <class T>
+[[nodiscard]] constexpr vec3<T> rotate_unchecked(const quaternion<T>& q,
+                                                 const vec3<T>& v) noexcept {
+    const T n2 = squared_norm(q);
+    const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
+    return rotate(scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
+}
+
 }  // namespace detail
 
 /// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
@@ -243,9 +252,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
-    const T n2 = squared_norm(q);
-    const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
-    return rotate(detail::scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
+    return detail::rotate_unchecked(q, v);
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.

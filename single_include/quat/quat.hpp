@@ -968,6 +968,15 @@ template <class T>
              {xz - wy, yz + wx, T(1) - (xx + yy)}}};
 }
 
+/// rotate(q, v) without its debug check of |q|: for loops that check once per call, or not at all.
+template <class T>
+[[nodiscard]] constexpr vec3<T> rotate_unchecked(const quaternion<T>& q,
+                                                 const vec3<T>& v) noexcept {
+    const T n2 = squared_norm(q);
+    const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
+    return rotate(scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
+}
+
 }  // namespace detail
 
 /// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
@@ -978,9 +987,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::rotate: q is not a unit quaternion");
-    const T n2 = squared_norm(q);
-    const T s = T(4) - (n2 + n2);  // exact for n2 >= 1, one rounding below
-    return rotate(detail::scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
+    return detail::rotate_unchecked(q, v);
 }
 
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
@@ -2355,11 +2362,13 @@ inline namespace isa_avx {
 inline namespace isa_baseline {
 #endif
 
+// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
+template <class In, class Out, class Input, class Output>
+using if_arrays_of = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
 template <class T, class Input, class Output>
-using if_point_arrays = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())),
-                          const vec3<T>*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), vec3<T>*>>;
+using if_point_arrays = if_arrays_of<vec3<T>, vec3<T>, Input, Output>;
 
 // True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
 // overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
@@ -3375,12 +3384,6 @@ template <class Matrices>
 using matrix_scalar_t =
     decltype(detail::matrix_scalar(detail::data_of(std::declval<const Matrices&>())));
 
-// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
-template <class In, class Out, class Input, class Output>
-using if_arrays_of = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
-
 // rotate(q, v) is M v with M = I + s (w [u]x + [u]x^2), u = (x, y, z), s = 4 - 2 |q|^2 (2 / |q|^2
 // to first order). Applied without forming M, as v + s (w t + u x t) with t = u x v: 24 operations
 // instead of 45, the same tolerance of |q| near 1, other roundings: over 200000 random pairs it
@@ -3403,9 +3406,7 @@ template <class T>
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
         return rotate_factored(q, v);
     } else {
-        const T n2 = squared_norm(q);
-        const T s = T(4) - (n2 + n2);
-        return rotate(scaled_matrix(q, q.x * s, q.y * s, q.z * s), v);
+        return rotate_unchecked(q, v);
     }
 }
 
