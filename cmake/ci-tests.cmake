@@ -1,7 +1,12 @@
-# CI steps as CTest tests, so `ctest` is the whole of CI. Included from tests/CMakeLists.txt.
-# The cheap checks are on by default; the slow or once-per-matrix ones are switched on by the CI
-# presets in CMakePresets.json (each preset runs a different subset, see README "CI").
-option(QUAT_TEST_CONSUMERS "Test the installed package, add_subdirectory and the single header" ON)
+# CI steps as CTest tests, so `ctest` is the whole of CI. Included from tests/CMakeLists.txt (before
+# tests/contracts, which reads QUAT_TEST_STRICT_WARNINGS). The cheap checks are on by default, and
+# so are the ones whose result does not depend on the configuration (consumers, strict warnings,
+# std::format), so that a single preset runs everything; the CI presets in CMakePresets.json switch
+# those off in all but one configuration and switch the slow once-per-matrix ones on (each preset
+# runs a different subset, see README "Continuous integration").
+option(QUAT_TEST_CONSUMERS "Test the installed package, add_subdirectory and the install without developer tools" ON)
+option(QUAT_TEST_STRICT_WARNINGS "Compile every header alone with g++ and clang++ under strict warnings" ON)
+option(QUAT_TEST_STD_FORMAT "Build the printing tests with clang++ and libc++ to test std::format" ON)
 option(QUAT_TEST_SINGLE_INCLUDE "Compile the test suite against single_include/ only" OFF)
 option(QUAT_TEST_FORMAT "Check formatting with clang-format" OFF)
 option(QUAT_TEST_TIDY "Run clang-tidy over representative translation units" OFF)
@@ -35,7 +40,9 @@ function(quat_add_consumer_test name source_dir)
                      --build-makeprogram "${CMAKE_MAKE_PROGRAM}"
                      --build-options ${_quat_consumer_options} ${ARGN}
                      --test-command "${CMAKE_CTEST_COMMAND}" --output-on-failure)
-    set_tests_properties(${name} PROPERTIES LABELS "ci;consumer")
+    # COST: with no timings recorded yet (a clean clone), CTest starts the highest cost first, so
+    # the tests that build whole projects do not end up alone at the end of a parallel run.
+    set_tests_properties(${name} PROPERTIES LABELS "ci;consumer" COST 50)
 endfunction()
 
 if(QUAT_TEST_CONSUMERS)
@@ -90,6 +97,8 @@ endif()
 if(QUAT_TEST_SINGLE_INCLUDE)
     quat_add_consumer_test(single_include_consumer "${PROJECT_SOURCE_DIR}/tests/single_include"
                            "-DQUAT_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+    # It builds most of the test suite again, one file at a time: start it first.
+    set_tests_properties(single_include_consumer PROPERTIES COST 200)
 endif()
 
 if(QUAT_TEST_FORMAT)
@@ -123,7 +132,7 @@ if(QUAT_TEST_TIDY)
     add_test(NAME tidy_check
              COMMAND "${QUAT_CLANG_TIDY}" -p "${PROJECT_BINARY_DIR}" --quiet ${_quat_tidy_std}
                      "--warnings-as-errors=*" ${_quat_tidy_sources})
-    set_tests_properties(tidy_check PROPERTIES LABELS "ci;lint" TIMEOUT 600)
+    set_tests_properties(tidy_check PROPERTIES LABELS "ci;lint" TIMEOUT 600 COST 100)
 endif()
 
 if(QUAT_TEST_VALGRIND)
@@ -132,14 +141,32 @@ if(QUAT_TEST_VALGRIND)
     # assertions that compare against long double references fail under it by design (they are
     # checked natively by the unit tests). A memory error or leak makes valgrind print a non-zero
     # ERROR SUMMARY, and that is what fails the test.
-    add_test(NAME memcheck
-             COMMAND "${QUAT_VALGRIND}" --error-exitcode=1 --leak-check=full
-                     --errors-for-leak-kinds=definite,indirect $<TARGET_FILE:quat_tests>
-                     --reporter compact)
-    set_tests_properties(memcheck PROPERTIES
-        LABELS "ci;valgrind" TIMEOUT 1800
-        PASS_REGULAR_EXPRESSION "ERROR SUMMARY: 0 errors from 0 contexts"
-        FAIL_REGULAR_EXPRESSION "ERROR SUMMARY: [1-9]")
+    # Under valgrind the whole suite is the longest test of the matrix, so it runs in
+    # QUAT_MEMCHECK_SHARDS parts (test files dealt round-robin; Catch2's "[#a],[#b]" is a or b),
+    # which CTest runs side by side; together they cover every test file once.
+    set(QUAT_MEMCHECK_SHARDS 4 CACHE STRING "Number of CTest tests the valgrind run is split into")
+    get_target_property(_quat_memcheck_files quat_tests SOURCES)
+    list(FILTER _quat_memcheck_files EXCLUDE REGEX "catch_main\\.cpp$")
+    set(_shard 0)
+    foreach(_file IN LISTS _quat_memcheck_files)
+        get_filename_component(_stem "${_file}" NAME_WE)
+        math(EXPR _shard "(${_shard} % ${QUAT_MEMCHECK_SHARDS}) + 1")
+        list(APPEND _quat_memcheck_spec_${_shard} "[#${_stem}]~[.]")
+    endforeach()
+    foreach(_shard RANGE 1 ${QUAT_MEMCHECK_SHARDS})
+        if(NOT _quat_memcheck_spec_${_shard})
+            continue()
+        endif()
+        list(JOIN _quat_memcheck_spec_${_shard} "," _spec)
+        add_test(NAME memcheck_${_shard}
+                 COMMAND "${QUAT_VALGRIND}" --error-exitcode=1 --leak-check=full
+                         --errors-for-leak-kinds=definite,indirect $<TARGET_FILE:quat_tests>
+                         "-#" "${_spec}" --reporter compact)
+        set_tests_properties(memcheck_${_shard} PROPERTIES
+            LABELS "ci;valgrind" TIMEOUT 1800 COST 100
+            PASS_REGULAR_EXPRESSION "ERROR SUMMARY: 0 errors from 0 contexts"
+            FAIL_REGULAR_EXPRESSION "ERROR SUMMARY: [1-9];No test cases matched")
+    endforeach()
 endif()
 
 if(QUAT_BUILD_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "Clang")

@@ -12,7 +12,7 @@ cd "$repo"
 
 packages=(g++ cmake clang libglm-dev catch2 libbenchmark-dev libeigen3-dev doxygen
           libclang-rt-14-dev valgrind clang-format clang-tidy python3 pkg-config libfmt-dev
-          clang-19 libc++-19-dev libc++abi-19-dev libclang-rt-19-dev)
+          clang-19 libc++-19-dev libc++abi-19-dev libclang-rt-19-dev qemu-user)
 matrix=(ci-gcc-cxx17-asan ci-clang-cxx20-asan ci-gcc-cxx20-release ci-clang-cxx17-release)
 jobs="${QUAT_JOBS:-2}"
 
@@ -57,32 +57,48 @@ run_bench() {
     "$exe" --table
 }
 
+# Seconds as 12m34s.
+duration() { printf '%dm%02ds' $(($1 / 60)) $(($1 % 60)); }
+
 run_tests() {
     local preset log status=0 summaries=() passed=0 total=0
     local logdir="build/logs"
+    local start_all t0 t1 t2 t3 times
     mkdir -p "$logdir"
+    start_all=$(date +%s)
     for preset in "${matrix[@]}"; do
         log="$logdir/$preset.log"
         echo "==== $preset: configure, build, test"
-        if ! cmake --preset "$preset" >"$log" 2>&1 ||
-           ! cmake --build --preset "$preset" -j "$jobs" >>"$log" 2>&1; then
+        local built=0
+        t0=$(date +%s)
+        if cmake --preset "$preset" >"$log" 2>&1; then
+            t1=$(date +%s)
+            if cmake --build --preset "$preset" -j "$jobs" >>"$log" 2>&1; then
+                built=1
+            fi
+        fi
+        t2=$(date +%s)
+        if ((!built)); then
             tail -n 60 "$log"
             echo "quat.sh: $preset failed to configure or build (full log: $log)" >&2
-            summaries+=("$preset: configure or build failed (counted as 1 failed test)")
+            summaries+=("$preset: configure or build failed (counted as 1 failed test) [wall $(duration $((t2 - t0)))]")
             total=$((total + 1))
             status=1
             continue
         fi
         ctest --preset "$preset" 2>&1 | tee -a "$log" || status=1
+        t3=$(date +%s)
+        times="wall $(duration $((t3 - t0))): configure $(duration $((t1 - t0))), build $(duration $((t2 - t1))), test $(duration $((t3 - t2)))"
+        echo "==== $preset: $times"
         local line
         line="$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)"
-        summaries+=("$preset: ${line:-no CTest summary}")
+        summaries+=("$preset: ${line:-no CTest summary} [$times]")
         if [[ $line =~ ([0-9]+)\ tests?\ failed\ out\ of\ ([0-9]+) ]]; then
             total=$((total + BASH_REMATCH[2]))
             passed=$((passed + BASH_REMATCH[2] - BASH_REMATCH[1]))
         fi
     done
-    echo "==== summary over ${#matrix[@]} configurations"
+    echo "==== summary over ${#matrix[@]} configurations (wall $(duration $(($(date +%s) - start_all))))"
     printf '%s\n' "${summaries[@]}"
     # Close with CTest's summary line, summed over the matrix.
     local pct=0
