@@ -10,7 +10,7 @@ set(QUAT_INSTALL_PKGCONFIGDIR "${CMAKE_INSTALL_DATADIR}/pkgconfig"
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/quat"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         COMPONENT quat_Development
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "*.inc")
 
 install(TARGETS quat EXPORT quatTargets)
 install(EXPORT quatTargets

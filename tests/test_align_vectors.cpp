@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -294,10 +295,15 @@ TEST_CASE("no pairs, NaN and infinity: documented results", "[align_vectors]") {
     const std::vector<vec3<double>> sources{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const std::vector<vec3<double>> with_nan{{1, 0, 0}, {0, nan, 0}, {0, 0, 1}};
     const std::vector<vec3<double>> with_inf{{1, 0, 0}, {0, inf, 0}, {0, 0, 1}};
+    // Infinite weights: one is a pair to meet exactly (see below); two or more, as scipy refuses
+    // them, and one on a zero vector (infinity times zero) give NaN.
+    const std::vector<vec3<double>> with_zero{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}};
     for (const auto& r :
          {quat::align_vectors(with_nan, sources), quat::align_vectors(sources, with_inf),
           quat::align_vectors(sources, sources, std::vector<double>{1, nan, 1}),
-          quat::align_vectors(sources, sources, std::vector<double>{1, inf, 1})}) {
+          quat::align_vectors(sources, sources, std::vector<double>{inf, inf, 1}),
+          quat::align_vectors(sources, with_zero, std::vector<double>{1, inf, 1}),
+          quat::align_vectors(with_zero, sources, std::vector<double>{1, inf, 1})}) {
         CHECK(std::isnan(r.rotation.w));
         CHECK(std::isnan(r.rssd));
         CHECK_FALSE(r.unique);
@@ -329,3 +335,229 @@ constexpr quat::alignment<double> quarter = quat::align_vectors(quarter_targets,
 static_assert(quarter.unique && quarter.rssd < 1e-15);
 static_assert(quarter.rotation.w - 0.70710678118654752 < 1e-15 &&
               0.70710678118654752 - quarter.rotation.z < 1e-15);
+
+// ---- Edges: weights spread over hundreds of orders of magnitude, infinite weights, sizes from
+// subnormal to huge (issue 23) ----
+
+namespace {
+
+// n pairs t = R s for random s and one weight of `heavy` (the first), the others near 1.
+template <class T>
+vector_pairs<T> exact_pairs(quat::test::random_rotations& random, const quaternion<T>& truth,
+                            std::size_t n, T heavy) {
+    vector_pairs<T> p;
+    for (std::size_t i = 0; i < n; ++i) {
+        p.sources.push_back(random.vector<T>());
+        p.targets.push_back(quat::rotate(truth, p.sources.back()));
+        p.weights.push_back(i == 0 ? heavy : random.uniform<T>(0.5, 2));
+    }
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("one pair outweighing the others by 1e10: still their exact answer, unique",
+          "[align_vectors][edges]") {
+    // x -> y with weight 1e10 and (1, 1, 0) -> (0, 1, 1) with weight 1: the third of a turn about
+    // (1, 1, 1) fits both exactly (cost 0). Davenport's K alone cannot tell its top two
+    // eigenvalues apart at this spread (they differ by 2e-10 of the largest): the earlier rule
+    // called it not unique and returned a quarter turn about z with cost 2.
+    const std::vector<vec3<double>> targets{{0, 1, 0}, {0, 1, 1}}, sources{{1, 0, 0}, {1, 1, 0}};
+    const quat::alignment<double> result =
+        quat::align_vectors(targets, sources, std::vector<double>{1e10, 1});
+    CHECK(result.unique);
+    CHECK(quat::angle_between(result.rotation, quaternion<double>{0.5, 0.5, 0.5, 0.5}) <=
+          4 * eps<double>);
+    CHECK(result.rssd <= 1e5 * 8 * eps<double>);  // sqrt(1e10) times the rotation's rounding
+}
+
+TEMPLATE_TEST_CASE("exact data with one weight from 1e6 to 1e300 times the others: the truth",
+                   "[align_vectors][edges]", float, double) {
+    // Measured (double, 100 sets per spread, 2 to 5 pairs): at most 12.5 eps at every spread;
+    // scipy 1.10 is 2.4e-6 off at 1e10, and the earlier quat wrong in 4 of 100 sets at 1e8.
+    using T = TestType;
+    const int top = std::numeric_limits<T>::max_exponent10 - 2;  // 36 for float, 306 for double
+    quat::test::random_rotations random;
+    for (int exponent = 6; exponent <= top; exponent += exponent < 20 ? 1 : 10) {
+        for (int trial = 0; trial < 40; ++trial) {
+            const quaternion<T> truth = random.unit_quaternion<T>();
+            const T heavy = T(std::pow(10.0, exponent));
+            const vector_pairs<T> p = exact_pairs(random, truth, 2 + std::size_t(trial % 4), heavy);
+            const quat::alignment<T> result = quat::align_vectors(p.targets, p.sources, p.weights);
+            CAPTURE(exponent, trial);
+            CHECK(result.unique);
+            CHECK(quat::angle_between(result.rotation, truth) <= 32 * eps<T>);
+        }
+    }
+}
+
+TEST_CASE("noisy data with one weight 1e2 to 1e40 times the others: the long double answer",
+          "[align_vectors][edges]") {
+    // No exact answer here; long double (64-bit significand on x86) carries 11 more bits through
+    // the same steps. Measured at most 17.9 eps at 1e2, 5.2 eps from 1e4 on (100 sets per
+    // spread); the earlier quat was 1.7e6 eps off at 1e6 and wrong by a half turn at 1e8.
+    quat::test::random_rotations random;
+    for (int exponent = 2; exponent <= 40; exponent += 2) {
+        for (int trial = 0; trial < 40; ++trial) {
+            const quaternion<double> truth = random.unit_quaternion<double>();
+            vector_pairs<double> p =
+                exact_pairs(random, truth, 3 + std::size_t(trial % 5), std::pow(10.0, exponent));
+            for (vec3<double>& t : p.targets) t += random.vector<double>(0.1);
+            std::vector<vec3<long double>> targets, sources;
+            std::vector<long double> weights;
+            for (std::size_t i = 0; i < p.targets.size(); ++i) {
+                targets.emplace_back(p.targets[i]);
+                sources.emplace_back(p.sources[i]);
+                weights.push_back(p.weights[i]);
+            }
+            const quat::alignment<double> d = quat::align_vectors(p.targets, p.sources, p.weights);
+            const quat::alignment<long double> l = quat::align_vectors(targets, sources, weights);
+            CAPTURE(exponent, trial);
+            CHECK(d.unique);
+            CHECK(quat::angle_between(quaternion<long double>(d.rotation), l.rotation) <=
+                  32 * eps<double>);
+        }
+    }
+}
+
+TEST_CASE("an infinite weight: its pair met exactly, the others turn about it (scipy 1.11)",
+          "[align_vectors][edges]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    // The example above with the heavy weight made infinite: the same answer, rssd without the
+    // infinite pair (scipy >= 1.11 leaves it out; scipy 1.10 raised "SVD did not converge").
+    const std::vector<vec3<double>> targets{{0, 1, 0}, {0, 1, 1}}, sources{{1, 0, 0}, {1, 1, 0}};
+    const quat::alignment<double> exact =
+        quat::align_vectors(targets, sources, std::vector<double>{inf, 1});
+    CHECK(exact.unique);
+    CHECK(quat::angle_between(exact.rotation, quaternion<double>{0.5, 0.5, 0.5, 0.5}) <=
+          4 * eps<double>);
+    CHECK(exact.rssd <= 4 * eps<double>);
+
+    quat::test::random_rotations random;
+    for (int trial = 0; trial < 100; ++trial) {
+        // Noisy others: the infinite pair's direction is still met to rounding, and the turn
+        // about it is the one the weight 1e200 gives (the limit of finite weights).
+        const quaternion<double> truth = random.unit_quaternion<double>();
+        vector_pairs<double> p = exact_pairs(random, truth, 6, inf);
+        for (std::size_t i = 1; i < p.targets.size(); ++i)
+            p.targets[i] += random.vector<double>(0.1);
+        p.targets[0] = p.targets[0] * 3.0;  // lengths differ: only its direction is met
+        const quat::alignment<double> result = quat::align_vectors(p.targets, p.sources, p.weights);
+        CAPTURE(trial);
+        CHECK(result.unique);
+        CHECK(quat::norm(quat::cross(quat::rotate(result.rotation, p.sources[0]), p.targets[0])) <=
+              8 * eps<double> * quat::norm(p.sources[0]) * quat::norm(p.targets[0]));
+        std::vector<double> huge = p.weights;
+        huge[0] = 1e200;
+        const quat::alignment<double> limit = quat::align_vectors(p.targets, p.sources, huge);
+        CHECK(quat::angle_between(result.rotation, limit.rotation) <= 8 * eps<double>);
+        vector_pairs<double> others = p;
+        others.weights[0] = 0;
+        CHECK(result.rssd ==
+              Approx(double(std::sqrt(cost(others, result.rotation)))).epsilon(1e-12));
+        const auto with_sensitivity =
+            quat::align_vectors_with_sensitivity(p.targets, p.sources, p.weights);
+        CHECK(with_sensitivity.rotation == result.rotation);
+        CHECK(std::isnan(with_sensitivity.sensitivity(0, 0)));  // scipy raises
+    }
+    // Nothing else pulls about the infinite pair's target: its shortest arc, not unique.
+    const std::vector<vec3<double>> alone_t{{0, 0, 2}, {0, 0, 5}}, alone_s{{1, 0, 0}, {3, 0, 0}};
+    const quat::alignment<double> alone =
+        quat::align_vectors(alone_t, alone_s, std::vector<double>{inf, 1});
+    CHECK_FALSE(alone.unique);
+    CHECK(alone.rotation == quat::rotation_between(alone_s[0], alone_t[0]));
+}
+
+TEMPLATE_TEST_CASE("every size from subnormal to near max() gives the same rotation",
+                   "[align_vectors][edges]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    // Noisy pairs of length up to 2, scaled by powers of ten: the inputs round, so the rotation
+    // moves by a few eps; rssd scales with them. The earlier code gave the identity (unique false)
+    // at 1e-200 and NaN at 1e200.
+    const std::vector<double> scales =
+        std::is_same_v<T, float>
+            ? std::vector<double>{1e-38, 1e-30, 1e-20, 1e20, 1e30, 1e38}
+            : std::vector<double>{1e-300, 1e-200, 1e-100, 1e-60, 1e60, 1e100, 1e200, 1e300};
+    for (int trial = 0; trial < 20; ++trial) {
+        const quaternion<T> truth = random.unit_quaternion<T>();
+        vector_pairs<T> p = exact_pairs(random, truth, 5, T(1));
+        for (vec3<T>& t : p.targets) t += random.vector<T>(T(0.05));
+        const auto plain = quat::align_vectors_with_sensitivity(p.targets, p.sources, p.weights);
+        REQUIRE(plain.unique);
+        for (const double scale : scales) {
+            vector_pairs<T> scaled = p;
+            for (vec3<T>& t : scaled.targets) t = vec3<T>(vec3<double>(t) * scale);
+            for (vec3<T>& s : scaled.sources) s = vec3<T>(vec3<double>(s) * scale);
+            const auto r = quat::align_vectors_with_sensitivity(scaled.targets, scaled.sources,
+                                                                scaled.weights);
+            CAPTURE(trial, scale);
+            CHECK(r.unique);
+            // float at 1e-38 is subnormal: 2^-149 steps on components near 1e-38 (2^-23 relative).
+            const T bound = scale < 1.2e-38 && std::is_same_v<T, float> ? T(2e-5) : 32 * eps<T>;
+            CHECK(quat::angle_between(r.rotation, plain.rotation) <= bound);
+            CHECK(double(r.rssd) == Approx(double(plain.rssd) * scale).epsilon(1e-4));
+            // sensitivity ~ 1 / |B|: scale^-2 (representable for these scales in double only).
+            if (std::is_same_v<T, double> && std::abs(std::log10(scale)) <= 100)
+                CHECK(double(r.sensitivity(1, 1)) ==
+                      Approx(double(plain.sensitivity(1, 1)) / (scale * scale)).epsilon(1e-6));
+        }
+        // Weights anywhere up to max(): only their ratios count.
+        std::vector<T> heavy = p.weights, light = p.weights;
+        for (T& w : heavy) w *= std::numeric_limits<T>::max() / 4;
+        for (T& w : light) w *= std::numeric_limits<T>::min();
+        CHECK(quat::angle_between(quat::align_vectors(p.targets, p.sources, heavy).rotation,
+                                  plain.rotation) <= 32 * eps<T>);
+        CHECK(quat::angle_between(quat::align_vectors(p.targets, p.sources, light).rotation,
+                                  plain.rotation) <= 32 * eps<T>);
+    }
+}
+
+TEST_CASE("subnormal vectors that are exact: exactly the unscaled answer",
+          "[align_vectors][edges]") {
+    // Small integers times 2^-1070 are exact subnormals; they are scaled by a power of two, so
+    // the problem solved is the unscaled one bit for bit. Likewise times 2^1000.
+    const std::vector<vec3<double>> sources{{1, 0, 0}, {0, 2, 0}, {1, 1, 3}};
+    const std::vector<vec3<double>> targets{{0, 1, 0}, {0, 0, 2}, {3, 1, 1}};  // x->y->z->x
+    const quat::alignment<double> plain = quat::align_vectors(targets, sources);
+    for (const double scale :
+         {std::ldexp(1.0, -1070), std::ldexp(1.0, -1040), std::ldexp(1.0, 1000)}) {
+        std::vector<vec3<double>> t = targets, s = sources;
+        for (vec3<double>& v : t) v = v * scale;
+        for (vec3<double>& v : s) v = v * scale;
+        const quat::alignment<double> r = quat::align_vectors(t, s);
+        CAPTURE(scale);
+        CHECK(r.unique);
+        CHECK(r.rotation == plain.rotation);
+        CHECK(quat::angle_between(r.rotation, quaternion<double>{0.5, 0.5, 0.5, 0.5}) <=
+              4 * eps<double>);
+    }
+}
+
+TEST_CASE("mixed precisions: weights of the other type convert", "[align_vectors][edges]") {
+    quat::test::random_rotations random;
+    const vector_pairs<double> p = exact_pairs(random, random.unit_quaternion<double>(), 6, 1.0);
+    std::vector<vec3<float>> tf, sf;
+    std::vector<float> wf;
+    for (std::size_t i = 0; i < p.sources.size(); ++i) {
+        tf.emplace_back(p.targets[i]);
+        sf.emplace_back(p.sources[i]);
+        wf.push_back(float(p.weights[i]));
+    }
+    std::vector<double> wd(wf.begin(), wf.end());
+    CHECK(quat::align_vectors(tf, sf, wd).rotation == quat::align_vectors(tf, sf, wf).rotation);
+    CHECK(quat::align_vectors_with_sensitivity(tf, sf, wd).rotation ==
+          quat::align_vectors(tf, sf, wf).rotation);
+    const std::vector<double> wd_exact(wf.begin(), wf.end());
+    CHECK(quat::align_vectors(p.targets, p.sources, wf).rotation ==
+          quat::align_vectors(p.targets, p.sources, wd_exact).rotation);
+}
+
+// The weight-spread path runs at compile time too: the example of "one pair outweighing the
+// others by 1e10" (K's top eigenvalues 2e-10 apart: best_turn and its atan2, then Newton steps).
+constexpr std::array<vec3<double>, 2> spread_targets{vec3<double>{0, 1, 0}, vec3<double>{0, 1, 1}};
+constexpr std::array<vec3<double>, 2> spread_sources{vec3<double>{1, 0, 0}, vec3<double>{1, 1, 0}};
+constexpr quat::alignment<double> spread =
+    quat::align_vectors(spread_targets, spread_sources, std::array<double, 2>{1e10, 1});
+static_assert(spread.unique && spread.rotation.w - 0.5 < 1e-15 && 0.5 - spread.rotation.w < 1e-15 &&
+              spread.rotation.x - 0.5 < 1e-15 && 0.5 - spread.rotation.z < 1e-15);

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <quat/batch.hpp>
@@ -254,4 +255,89 @@ TEST_CASE("struct-of-arrays rotate beyond 16 MiB (streaming stores) equals the s
             max_difference(quat::vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f ? 0 : 1;
     }
     CHECK(mismatches == 0);
+}
+
+TEMPLATE_TEST_CASE("batch slerp: a and b may be elements of the output (taken by value)", "[batch]",
+                   float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const quat::quaternion<T> a = random.unit_quaternion<T>();
+    const quat::quaternion<T> b = random.unit_quaternion<T>();
+    // More parameters than one block (128), so later blocks run after out[0] was written; no t is
+    // 0 or 1, where the result would be a or b exactly whatever was read.
+    std::vector<T> t(301);
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = (T(i) + T(0.5)) / T(301);
+    std::vector<quat::quaternion<T>> expected(t.size());
+    quat::slerp(a, b, t, expected);
+    std::vector<quat::quaternion<T>> out(t.size());
+    out[0] = a;
+    out.back() = b;
+    quat::slerp(out[0], out.back(), t, out);  // a is overwritten first, b last
+    CHECK(out == expected);
+    out[0] = a;
+    out.back() = b;
+    quat::slerp(out[0], out.back(), t.data(), out.data(), t.size());  // pointer form
+    CHECK(out == expected);
+}
+
+TEST_CASE("batch slerp: float rotations at double times, and double rotations at float times",
+          "[batch]") {
+    quat::test::random_rotations random;
+    const quat::quatf af = random.unit_quaternion<float>(), bf = random.unit_quaternion<float>();
+    const quat::quatd ad{af}, bd{bf};
+    std::vector<double> td(301);
+    std::vector<float> tf(td.size());
+    for (std::size_t i = 0; i < td.size(); ++i) {
+        td[i] = double(i) / 300.0;
+        tf[i] = float(td[i]);
+    }
+    // The scalar type is the rotations'; each t converts to it, so float rotations at double times
+    // are float rotations at the times rounded to float.
+    std::vector<quat::quatf> from_double(td.size()), from_float(td.size());
+    quat::slerp(af, bf, td, from_double);
+    quat::slerp(af, bf, tf, from_float);
+    CHECK(from_double == from_float);
+    quat::slerp(af, bf, td.data(), from_double.data(), td.size());
+    CHECK(from_double == from_float);
+    // Outside [0, 1] (the scalar fallback) too.
+    td[5] = 1.5;
+    tf[5] = 1.5f;
+    quat::slerp(af, bf, td, from_double);
+    quat::slerp(af, bf, tf, from_float);
+    CHECK(from_double == from_float);
+    // Double rotations at float times: the float times are exact in double.
+    std::vector<quat::quatd> at_float(tf.size()), at_double(tf.size());
+    std::vector<double> widened(tf.begin(), tf.end());
+    quat::slerp(ad, bd, tf, at_float);
+    quat::slerp(ad, bd, widened, at_double);
+    CHECK(at_float == at_double);
+    // A C array of double times and a std::array output.
+    const double times[3] = {0.0, 0.25, 1.0};
+    std::array<quat::quatf, 3> three{};
+    quat::slerp(af, bf, times, three);
+    CHECK(three[0] == af);
+    CHECK(quat::approx_equal(three[1], quat::slerp(af, bf, 0.25f), 1e-6f));  // a few ulp
+}
+
+TEMPLATE_TEST_CASE("struct-of-arrays rotate in place: soa_points<T> is also the const input",
+                   "[batch]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const quat::quaternion<T> q = random.unit_quaternion<T>();
+    const std::size_t n = 37;
+    std::vector<T> x(n), y(n), z(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = T(i), y[i] = T(1) - T(i), z[i] = T(0.5) * T(i);
+    std::vector<quat::vec3<T>> expected(n);
+    for (std::size_t i = 0; i < n; ++i)
+        expected[i] = quat::rotate(q, quat::vec3<T>{x[i], y[i], z[i]});
+    const quat::soa_points<T> points{x.data(), y.data(), z.data(), n};
+    static_assert(std::is_convertible_v<quat::soa_points<T>, quat::soa_points<const T>>);
+    static_assert(!std::is_convertible_v<quat::soa_points<const T>, quat::soa_points<T>>);
+    quat::rotate(q, points, points);
+    for (std::size_t i = 0; i < n; ++i)
+        CHECK(max_difference(quat::vec3<T>{x[i], y[i], z[i]}, expected[i]) <=
+              T(64) * std::numeric_limits<T>::epsilon());
+    quat::rotate(quat::to_matrix(quat::conjugate(q)), points, points);  // and back, by the matrix
+    for (std::size_t i = 0; i < n; ++i)
+        CHECK(std::abs(x[i] - T(i)) <= T(64) * std::numeric_limits<T>::epsilon());
 }

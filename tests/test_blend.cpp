@@ -110,3 +110,43 @@ TEST_CASE("blend is constexpr", "[blend][constexpr]") {
     constexpr auto middle = quat::blend(pair, weights);
     STATIC_REQUIRE(middle.dual.x == 0.5);  // half of a translation by 1
 }
+
+// ---- Edges (issue 23): weights of any finite size, mixed precisions ----
+
+TEMPLATE_TEST_CASE("weights from subnormal to max() blend as their ratios", "[blend][edges]", float,
+                   double) {
+    // The weights are divided by the largest |weight| first, so these are the same sums bit for
+    // bit. The earlier sums overflowed at max() (NaN) and lost the subnormals' digits.
+    using T = TestType;
+    quat::test::random_rotations random;
+    const T max = std::numeric_limits<T>::max(), tiny = std::numeric_limits<T>::denorm_min();
+    for (int trial = 0; trial < 50; ++trial) {
+        const std::vector<dual_quaternion<T>> dqs{
+            random.rigid_motion<T>(), random.rigid_motion<T>(), random.rigid_motion<T>()};
+        const auto plain = quat::blend(dqs, std::vector<T>{4, 2, -1});
+        const auto huge = quat::blend(dqs, std::vector<T>{max, max / 2, -max / 4});
+        const auto small = quat::blend(dqs, std::vector<T>{4 * tiny, 2 * tiny, -tiny});
+        CHECK(huge.real == plain.real);
+        CHECK(huge.dual == plain.dual);
+        CHECK(small.real == plain.real);
+        CHECK(small.dual == plain.dual);
+    }
+}
+
+TEST_CASE("mixed precisions: the transforms' precision, weights converted", "[blend][edges]") {
+    // blend(vector<dual_quaternionf>, vector<double>) did not compile ("invalid static_cast").
+    quat::test::random_rotations random;
+    const std::vector<quat::dual_quaternionf> bones{random.rigid_motion<float>(),
+                                                    random.rigid_motion<float>()};
+    const std::vector<quat::dual_quaterniond> bones_d{random.rigid_motion<double>(),
+                                                      random.rigid_motion<double>()};
+    const std::vector<float> wf{0.25f, 0.75f};
+    const std::vector<double> wd{0.25, 0.75};
+    const quat::dual_quaternionf f = quat::blend(bones, wd);
+    CHECK(f.real == quat::blend(bones, wf).real);
+    CHECK(f.dual == quat::blend(bones, wf).dual);
+    const quat::dual_quaterniond d = quat::blend(bones_d, wf);
+    CHECK(d.real == quat::blend(bones_d, wd).real);
+    CHECK(d.dual == quat::blend(bones_d.data(), wd.data(), 2).dual);
+    CHECK(quat::blend(bones.data(), wd.data(), 2).dual == f.dual);  // pointers too
+}

@@ -189,3 +189,46 @@ TEST_CASE("dual quaternion algebra is constexpr", "[dual_quaternion][constexpr]"
     constexpr auto back = quat::inverse(a) * a;
     STATIC_REQUIRE(back.real.w == 1);
 }
+
+TEMPLATE_TEST_CASE("inverse is the multiplicative inverse of any dual quaternion with real part",
+                   "[dual_quaternion][edge]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    quat::test::random_rotations rng;
+    const dual_quaternion<T> one{quaternion<T>::identity(), quaternion<T>{0, 0, 0, 0}};
+    for (int i = 0; i < 100; ++i) {
+        // A dual part not orthogonal to the real part, as GLM's inverse also handles.
+        const dual_quaternion<T> dq{rng.unit_quaternion<T>(), rng.unit_quaternion<T>() * T(3)};
+        const dual_quaternion<T> product = dq * quat::inverse(dq);
+        CHECK(quat::test::max_difference(product.real, one.real) <= 16 * limits::epsilon());
+        CHECK(quat::test::max_difference(product.dual, one.dual) <= 64 * limits::epsilon());
+        // Huge and tiny real parts whose inverse is representable.
+        const T big = sizeof(T) == 4 ? T(1e30) : T(1e300);
+        for (T scale : {big, T(1) / big}) {
+            INFO("scale " << scale);
+            const dual_quaternion<T> scaled{dq.real * scale, dq.dual * scale};
+            const dual_quaternion<T> inverse = quat::inverse(scaled);
+            const dual_quaternion<T> expected = quat::inverse(dq);
+            CHECK(quat::test::max_difference(inverse.real * scale, expected.real) <=
+                  16 * limits::epsilon());
+            CHECK(quat::test::max_difference(inverse.dual * scale, expected.dual) <=
+                  64 * limits::epsilon());
+        }
+    }
+    const dual_quaternion<T> zero_real{quaternion<T>{0, 0, 0, 0}, quaternion<T>{0, 1, 0, 0}};
+    CHECK(std::isnan(quat::inverse(zero_real).real.w));
+    CHECK(std::isnan(quat::inverse(zero_real).dual.x));
+}
+
+TEST_CASE("try_normalize of a dual quaternion is empty when the dual part overflows",
+          "[dual_quaternion][edge]") {
+    // The float case: |real| = 1e-20, so the dual part 1e30 becomes 1e50.
+    const dual_quaternion<float> dq{quaternion<float>{1e-20f, 0, 0, 0},
+                                    quaternion<float>{0, 1e30f, 0, 0}};
+    CHECK_FALSE(quat::try_normalize(dq).has_value());
+    const dual_quaternion<float> fine{quaternion<float>{1e-20f, 0, 0, 0},
+                                      quaternion<float>{0, 1e-19f, 0, 0}};
+    const auto normalized = quat::try_normalize(fine);
+    REQUIRE(normalized.has_value());
+    CHECK(normalized->dual.x == Approx(10.0f));
+}

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 #include <quat/quat.hpp>
 
@@ -371,5 +372,208 @@ TEMPLATE_TEST_CASE("constexpr results equal run-time results within constexpr_vs
         const T scale = std::max(T(1), std::abs(runtime[k]));
         CHECK(std::abs(constexpr_results<T>[k] - runtime[k]) <=
               tolerance<T>::constexpr_vs_runtime * scale);
+    }
+}
+
+// ---- Issue 23: every function documented for "any non-zero length/scale" keeps its answer from
+// the smallest subnormal to the largest finite scale (norms formed from user input are scaled by
+// the largest component first, as hypot does).
+
+namespace {
+
+/// Scales spanning the whole finite range of T: the normal extremes, 1e-300/1e300 (double) or
+/// 1e-38/1e38 (float, where 1e-38 is subnormal), subnormals and max().
+template <class T>
+std::vector<T> extreme_scales() {
+    using limits = std::numeric_limits<T>;
+    const T big = sizeof(T) == 4 ? T(1e38) : T(1e300), small = sizeof(T) == 4 ? T(1e-38) : T(1e-300);
+    return {limits::max(), limits::max() / 3, big, T(1) / limits::epsilon(), small,
+            limits::min(), limits::min() / 1024, limits::denorm_min() * T(1 << 20)};
+}
+
+/// The error a scaled input may carry: a few eps, plus the relative spacing of subnormals at scale.
+template <class T>
+T scaled_tolerance(T scale) {
+    return 16 * std::numeric_limits<T>::epsilon() + 4 * std::numeric_limits<T>::denorm_min() / scale;
+}
+
+template <class T>
+bool unit_within(const quat::vec3<T>& v, T tolerance) {
+    return std::abs(quat::norm(v) - 1) <= tolerance;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("normalize and try_normalize of a vec3 accept any finite non-zero length",
+                   "[edge][magnitude]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    const T half = std::sqrt(T(0.5)), eps = limits::epsilon();
+    // Both lengths of the issue: |v|^2 overflows, and |v| itself overflows or underflows.
+    for (T component : {T(0.9) * limits::max(), limits::max(), limits::denorm_min(),
+                        limits::denorm_min() * 3, limits::min()}) {
+        INFO("component " << component);
+        const quat::vec3<T> v{component, component, 0};
+        const quat::vec3<T> n = quat::normalize(v);
+        CHECK(std::abs(n.x - half) <= 2 * eps);
+        CHECK(std::abs(n.y - half) <= 2 * eps);
+        CHECK(n.z == 0);
+        const auto checked = quat::try_normalize(v);
+        REQUIRE(checked.has_value());
+        CHECK(*checked == n);
+    }
+    quat::test::random_rotations rng;
+    for (int i = 0; i < 100; ++i) {
+        const quat::vec3<T> u = rng.unit_vector<T>();
+        for (T scale : extreme_scales<T>()) {
+            INFO("scale " << scale);
+            const quat::vec3<T> n = quat::normalize(u * scale);
+            CHECK(unit_within(n, 4 * eps));  // unit even where the input has few digits
+            CHECK(quat::test::max_difference(n, u) <= scaled_tolerance(scale));
+            CHECK(quat::try_normalize(u * scale).has_value());
+        }
+    }
+    CHECK_FALSE(quat::try_normalize(quat::vec3<T>{0, 0, 0}).has_value());
+    CHECK(std::isnan(quat::normalize(quat::vec3<T>{0, 0, 0}).x));
+    CHECK(std::isnan(quat::normalize(quat::vec3<T>{limits::infinity(), 1, 0}).y));
+}
+
+TEMPLATE_TEST_CASE("the direction-only conversions of q keep their answer at any scale of q",
+                   "[edge][magnitude]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations rng;
+    for (int i = 0; i < 100; ++i) {
+        const quat::quaternion<T> q = rng.unit_quaternion<T>();
+        const quat::axis_angle<T> reference = quat::to_axis_angle(q);
+        const quat::vec3<T> rotation_vector = quat::to_rotation_vector(q);
+        const quat::vec3<T> mrp = quat::to_mrp(q);
+        for (T scale : extreme_scales<T>()) {
+            INFO("scale " << scale);
+            const quat::quaternion<T> scaled = q * scale;
+            const T tol = scaled_tolerance(scale);
+            const quat::axis_angle<T> a = quat::to_axis_angle(scaled);
+            CHECK(unit_within(a.axis, 4 * std::numeric_limits<T>::epsilon()));
+            CHECK(quat::test::max_difference(a.axis, reference.axis) <= 4 * tol);
+            CHECK(std::abs(a.angle - reference.angle) <= 4 * tol);
+            CHECK(quat::test::max_difference(quat::to_rotation_vector(scaled), rotation_vector) <=
+                  8 * tol);
+            CHECK(quat::test::max_difference(quat::to_mrp(scaled), mrp) <= 4 * tol);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("try_to_quaternion(axis_angle) normalizes any finite non-zero axis",
+                   "[edge][magnitude]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    quat::test::random_rotations rng;
+    for (int i = 0; i < 100; ++i) {
+        const quat::vec3<T> axis = rng.unit_vector<T>();
+        const T angle = rng.uniform<T>(-6, 6);
+        const quat::quaternion<T> reference = quat::to_quaternion(quat::axis_angle<T>{axis, angle});
+        for (T scale : extreme_scales<T>()) {
+            INFO("scale " << scale);
+            const auto q = quat::try_to_quaternion(quat::axis_angle<T>{axis * scale, angle});
+            REQUIRE(q.has_value());
+            CHECK(quat::test::max_difference(*q, reference) <= 2 * scaled_tolerance(scale));
+        }
+    }
+    // The issue's subnormal axis: engaged, unit, and no debug check fires on the way.
+    const auto q = quat::try_to_quaternion(
+        quat::axis_angle<T>{{limits::denorm_min(), limits::denorm_min(), 0}, T(1)});
+    REQUIRE(q.has_value());
+    CHECK(std::abs(quat::norm(*q) - 1) <= 4 * limits::epsilon());
+}
+
+TEMPLATE_TEST_CASE("rotation_between and swing_twist take directions of any finite length",
+                   "[edge][magnitude][align]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    const T eps = limits::epsilon();
+    quat::test::random_rotations rng;
+    for (int i = 0; i < 100; ++i) {
+        const quat::vec3<T> from = rng.unit_vector<T>(), to = rng.unit_vector<T>();
+        const quat::quaternion<T> reference = quat::rotation_between(from, to);
+        const quat::quaternion<T> q = rng.unit_quaternion<T>();
+        const quat::swing_twist_parts<T> parts = quat::swing_twist(q, from);
+        for (T scale : extreme_scales<T>()) {
+            INFO("scale " << scale);
+            const T tol = 4 * scaled_tolerance(scale);
+            const quat::quaternion<T> r = quat::rotation_between(from * scale, to);
+            CHECK(quat::angle_between(r, reference) <= tol);
+            CHECK(std::abs(quat::norm(r) - 1) <= 4 * eps);
+            const auto checked = quat::try_rotation_between(from, to * scale);
+            REQUIRE(checked.has_value());
+            CHECK(quat::angle_between(*checked, reference) <= tol);
+            CHECK(std::abs(quat::norm(*checked) - 1) <= 4 * eps);
+            const quat::swing_twist_parts<T> scaled_parts = quat::swing_twist(q, from * scale);
+            CHECK(quat::angle_between(scaled_parts.twist, parts.twist) <= tol);
+            CHECK(quat::angle_between(scaled_parts.swing, parts.swing) <= tol);
+        }
+    }
+    // Float's largest lengths (the products are formed in double).
+    const auto huge = quat::try_rotation_between(quat::vec3<T>{T(3e38), T(3e38), 0},
+                                                 quat::vec3<T>{0, T(3e38), T(3e38)});
+    REQUIRE(huge.has_value());
+    CHECK(quat::angle_between(*huge, quat::rotation_between(quat::vec3<T>{1, 1, 0},
+                                                            quat::vec3<T>{0, 1, 1})) <= 8 * eps);
+    // Nearly opposite with a subnormal cross product: still a unit quaternion.
+    const T tiny = limits::denorm_min() * 16;
+    const quat::quaternion<T> opposite =
+        quat::rotation_between(quat::vec3<T>{1, 0, 0}, quat::vec3<T>{-1, tiny, tiny});
+    CHECK(std::abs(quat::squared_norm(opposite) - 1) <= 4 * eps);
+}
+
+TEMPLATE_TEST_CASE("inverse of a quaternion is accurate wherever it is representable",
+                   "[edge][magnitude]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    quat::test::random_rotations rng;
+    const T big = sizeof(T) == 4 ? T(1e37) : T(1e300);
+    for (int i = 0; i < 100; ++i) {
+        const quat::quaternion<T> q = rng.unit_quaternion<T>();
+        for (T scale : {big, T(1) / big, limits::min(), T(1) / limits::min()}) {
+            INFO("scale " << scale);
+            // (s q)^-1 = q* / s
+            const quat::quaternion<T> expected = quat::conjugate(q) / scale;
+            const T tol = 8 * limits::epsilon() / scale;
+            CHECK(quat::test::max_difference(quat::inverse(q * scale), expected) <= tol);
+            const auto checked = quat::try_inverse(q * scale);
+            REQUIRE(checked.has_value());
+            CHECK(quat::test::max_difference(*checked, expected) <= tol);
+        }
+    }
+    CHECK(quat::inverse(quat::quaternion<T>{T(sizeof(T) == 4 ? 1e38 : 1e300), 0, 0, 0}).w > 0);
+    // No representable inverse, or no inverse at all: NaN or an empty optional.
+    CHECK_FALSE(quat::try_inverse(quat::quaternion<T>{limits::denorm_min(), 0, 0, 0}).has_value());
+    CHECK_FALSE(quat::try_inverse(quat::quaternion<T>{0, 0, 0, 0}).has_value());
+    CHECK(std::isnan(quat::inverse(quat::quaternion<T>{0, 0, 0, 0}).w));
+    CHECK(std::isnan(quat::inverse(quat::quaternion<T>{limits::infinity(), 0, 0, 0}).w));
+}
+
+TEMPLATE_TEST_CASE("is_unit is false for infinite components whatever the tolerance", "[edge]",
+                   float, double) {
+    using T = TestType;
+    const T inf = std::numeric_limits<T>::infinity();
+    for (int i = 0; i < 4; ++i) {
+        quat::quaternion<T> q{0, 0, 0, 0};
+        (i == 0 ? q.w : i == 1 ? q.x : i == 2 ? q.y : q.z) = inf;
+        CHECK_FALSE(quat::is_unit(q, inf));
+        CHECK_FALSE(quat::is_unit(-q, inf));
+    }
+    CHECK(quat::is_unit(quat::quaternion<T>{2, 0, 0, 0}, inf));
+}
+
+TEMPLATE_TEST_CASE("an infinite w gives NaN, not a clean rotation, from the angle readers",
+                   "[edge]", float, double) {
+    using T = TestType;
+    const T inf = std::numeric_limits<T>::infinity();
+    for (T w : {inf, -inf}) {
+        const quat::quaternion<T> q{w, T(0.1), 0, 0};
+        INFO("w " << w);
+        CHECK(std::isnan(quat::to_axis_angle(q).angle));
+        CHECK(std::isnan(quat::to_rotation_vector(q).x));
+        CHECK(std::isnan(quat::to_mrp(q).x));
+        CHECK_FALSE(all_finite(quat::pow(q, T(0.5))));
     }
 }

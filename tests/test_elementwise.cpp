@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <quat/elementwise.hpp>
@@ -219,4 +220,28 @@ TEMPLATE_TEST_CASE("NaN in one element gives NaN in that element only", "[elemen
         CHECK(std::isnan(quat::dot(products[i], products[i])) == (i == 5));
         CHECK(std::isnan(quat::dot(back[i], back[i])) == (i == 5 || i == 9));
     }
+}
+
+TEMPLATE_TEST_CASE("struct-of-arrays rotate_each in place: the writable views are also the inputs",
+                   "[elementwise]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const std::size_t n = 23;
+    std::vector<T> w(n), x(n), y(n), z(n), px(n), py(n), pz(n);
+    std::vector<vec3<T>> expected(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const quaternion<T> q = random.unit_quaternion<T>();
+        w[i] = q.w, x[i] = q.x, y[i] = q.y, z[i] = q.z;
+        px[i] = T(i), py[i] = -T(i), pz[i] = T(1);
+        expected[i] = quat::rotate(q, vec3<T>{px[i], py[i], pz[i]});
+    }
+    // soa_quaternions<T> and soa_points<T> convert to their const forms.
+    static_assert(std::is_convertible_v<soa_quaternions<T>, soa_quaternions<const T>>);
+    static_assert(!std::is_convertible_v<soa_quaternions<const T>, soa_quaternions<T>>);
+    const soa_quaternions<T> rotations{w.data(), x.data(), y.data(), z.data(), n};
+    const soa_points<T> points{px.data(), py.data(), pz.data(), n};
+    quat::rotate_each(rotations, points, points);
+    for (std::size_t i = 0; i < n; ++i)
+        CHECK(max_difference(vec3<T>{px[i], py[i], pz[i]}, expected[i]) <=
+              rotate_each_vs_rotate<T> * T(i + 1));  // |p| <= i + 1
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <quat/keyframe_slerp.hpp>
@@ -96,4 +97,51 @@ TEST_CASE("keyframe_slerp of one keyframe is that keyframe; a NaN time or keyfra
     CHECK(std::isnan(quat::keyframe_slerp(times, rotations, nan).w));
     rotations[2] = {nan, 0.0, 0.0, 0.0};
     CHECK(std::isnan(quat::keyframe_slerp(times, rotations, 1.5).w));
+}
+
+#ifdef NDEBUG
+// Debug builds stop at these preconditions (tests/contracts); release builds must not read
+// through a null pointer or past the shorter array, but return NaN.
+TEST_CASE("a release-build keyframe_slerp of no keyframes or unequal sizes is NaN",
+          "[keyframe_slerp][nan]") {
+    using Q = quaternion<double>;
+    const std::vector<double> no_times, two_times{0.0, 1.0};
+    const std::vector<Q> no_rotations, three(3, Q::identity());
+    for (const double t : {-1.0, 0.5, 2.0}) {
+        CHECK(std::isnan(quat::keyframe_slerp(no_times, no_rotations, t).w));
+        CHECK(std::isnan(quat::keyframe_slerp(two_times, three, t).w));
+        CHECK(std::isnan(quat::keyframe_slerp(no_times, three, t).w));
+    }
+}
+
+TEST_CASE("a release-build keyframe_slerp converts a double time beyond float's range to infinity",
+          "[keyframe_slerp]") {
+    // Not an undefined cast: the time is float's infinity, and the keyframe before it is held up
+    // to there (debug builds stop at the non-finite time).
+    const double far_times[] = {0.0, 1.0, 1e300};
+    const quaternion<float> three[] = {quaternion<float>::identity(), quat::rotation_x(1.0f),
+                                       quat::rotation_y(1.0f)};
+    CHECK(quat::keyframe_slerp(far_times, three, 2.0) == three[1]);
+    CHECK(quat::keyframe_slerp(far_times, three, 0.5) == quat::slerp(three[0], three[1], 0.5f));
+}
+#endif
+
+TEST_CASE("keyframe_slerp takes times and t of another precision than its rotations",
+          "[keyframe_slerp]") {
+    // float rotations at double times, with a double t: both are converted to float, the
+    // rotations' scalar, and the result is the all-float call's.
+    quat::test::random_rotations random;
+    std::vector<float> times{0.0f};
+    std::vector<quaternion<float>> rotations{random.unit_quaternion<float>()};
+    for (int i = 1; i < 10; ++i) {
+        times.push_back(times.back() + random.uniform<float>(0.01, 3.0));
+        rotations.push_back(random.unit_quaternion<float>());
+    }
+    const std::vector<double> double_times(times.begin(), times.end());
+    for (int n = 0; n < 200; ++n) {
+        const double t = random.uniform<double>(-1.0, double(times.back()) + 1.0);
+        const quaternion<float> q = quat::keyframe_slerp(double_times, rotations, t);
+        static_assert(std::is_same_v<decltype(q), const quaternion<float>>);
+        CHECK(q == quat::keyframe_slerp(times, rotations, float(t)));
+    }
 }

@@ -227,3 +227,89 @@ constexpr std::array<quaternion<double>, 2> two_turns{
     quaternion<double>{-0.70710678118654752, 0, 0, -0.70710678118654752}};
 constexpr quaternion<double> eighth = quat::mean(two_turns);
 static_assert(eighth.w - 0.92387953251128676 < 1e-15 && 0.92387953251128676 - eighth.w < 1e-15);
+
+// ---- Edges (issue 23): weights of any finite size, try_mean on any input, mixed precisions ----
+
+TEST_CASE("weights from subnormal to max() give the mean of their ratios", "[mean][edges]") {
+    // The weights are divided by the largest first, so these are the same sums bit for bit. The
+    // earlier sums overflowed to infinity at max() (NaN mean) and lost the subnormals' digits.
+    quat::test::random_rotations random;
+    const double max = std::numeric_limits<double>::max();
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    for (int trial = 0; trial < 50; ++trial) {
+        const std::vector<quaternion<double>> rotations = cluster(random, 3, 2.0);
+        const quaternion<double> plain = quat::mean(rotations, std::vector<double>{4, 2, 1});
+        CHECK(quat::mean(rotations, std::vector<double>{max, max / 2, max / 4}) == plain);
+        CHECK(quat::mean(rotations, std::vector<double>{4 * tiny, 2 * tiny, tiny}) == plain);
+        CHECK(quat::try_mean(rotations, std::vector<double>{max, max / 2, max / 4}) ==
+              quat::try_mean(rotations, std::vector<double>{4, 2, 1}));
+        CHECK(quat::mean(rotations, std::vector<double>{max, max, max}) == quat::mean(rotations));
+    }
+    const std::vector<quaternion<float>> floats{quat::rotation_x(0.25f), quat::rotation_y(0.5f)};
+    const float fmax = std::numeric_limits<float>::max();
+    CHECK(quat::mean(floats, std::vector<float>{fmax, fmax}) == quat::mean(floats));
+    CHECK(quat::mean(floats, std::vector<float>{1e-45f, 1e-45f}) == quat::mean(floats));
+}
+
+TEST_CASE("try_mean returns empty, never asserts, for any bad input", "[mean][edges]") {
+    // Run in a debug build: the earlier try_mean fired mean's unit-quaternion check, and the
+    // weighted one its size check. Each bad value in each component of one rotation.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<quaternion<double>> good{quat::rotation_x(0.1), quat::rotation_y(0.2),
+                                               quat::rotation_z(0.3)};
+    const std::vector<double> ones{1, 1, 1};
+    for (const double bad : {nan, inf, -inf}) {
+        for (int component = 0; component < 4; ++component) {
+            std::vector<quaternion<double>> rotations = good;
+            double* q[] = {&rotations[1].w, &rotations[1].x, &rotations[1].y, &rotations[1].z};
+            *q[component] = bad;
+            CAPTURE(bad, component);
+            CHECK_FALSE(quat::try_mean(rotations).has_value());
+            CHECK_FALSE(quat::try_mean(rotations, ones).has_value());
+        }
+        std::vector<double> weights = ones;
+        weights[2] = bad;
+        CHECK_FALSE(quat::try_mean(good, weights).has_value());
+    }
+    // Zero and non-unit rotations (|q|^2 off 1 by more than 1/4096, mean's debug check).
+    for (const quaternion<double>& off : {quaternion<double>{0, 0, 0, 0}, good[1] * 2.0,
+                                          good[1] * 0.99, quaternion<double>{1e-300, 0, 0, 0}}) {
+        std::vector<quaternion<double>> rotations = good;
+        rotations[1] = off;
+        CHECK_FALSE(quat::try_mean(rotations).has_value());
+        CHECK_FALSE(quat::try_mean(rotations, ones).has_value());
+    }
+    // Empty, differing sizes, negative, zero weights.
+    const std::vector<quaternion<double>> none;
+    CHECK_FALSE(quat::try_mean(none).has_value());
+    CHECK_FALSE(quat::try_mean(none, std::vector<double>{}).has_value());
+    CHECK_FALSE(quat::try_mean(good, std::vector<double>{1, 1}).has_value());
+    CHECK_FALSE(quat::try_mean(good, std::vector<double>{1, 1, 1, 1}).has_value());
+    CHECK_FALSE(quat::try_mean(good, std::vector<double>{1, -1, 1}).has_value());
+    CHECK_FALSE(quat::try_mean(good, std::vector<double>{0, 0, 0}).has_value());
+    CHECK_FALSE(quat::try_mean(good, std::vector<double>{-0.0, 0, 0}).has_value());
+    // Within the tolerance: a value, unit, never NaN.
+    std::vector<quaternion<double>> rounded = good;
+    rounded[0] = rounded[0] * (1 + 1e-5);
+    const std::optional<quaternion<double>> m = quat::try_mean(rounded);
+    REQUIRE(m.has_value());
+    CHECK(quat::is_unit(*m, 4 * eps<double>));
+}
+
+TEST_CASE("mixed precisions: float rotations with double weights and the reverse",
+          "[mean][edges]") {
+    quat::test::random_rotations random;
+    const std::vector<quaternion<double>> rotations = cluster(random, 20, 1.0);
+    std::vector<quaternion<float>> floats;
+    std::vector<float> wf;
+    for (const quaternion<double>& q : rotations) {
+        floats.emplace_back(q);
+        wf.push_back(random.uniform<float>(0.5f, 2.0f));
+    }
+    const std::vector<double> wd(wf.begin(), wf.end());  // the same values, exactly
+    CHECK(quat::mean(floats, wd) == quat::mean(floats, wf));
+    CHECK(quat::try_mean(floats, wd) == quat::try_mean(floats, wf));
+    CHECK(quat::mean(rotations, wf) == quat::mean(rotations, wd));
+    CHECK(quat::try_mean(rotations, wf) == quat::try_mean(rotations, wd));
+}

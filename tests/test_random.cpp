@@ -155,3 +155,29 @@ TEMPLATE_TEST_CASE("random_rotation stays unit and finite at the ends of the eng
     CHECK(std::abs(quat::norm(q) - 1) <= tolerance<T>::unit_norm);
     static_assert(noexcept(quat::random_rotation<T>(engine)));
 }
+
+namespace {
+
+/// A 32-bit generator that replays fixed outputs: one call per float uniform.
+struct replay_generator {
+    using result_type = std::uint32_t;
+    static constexpr result_type min() { return 0; }
+    static constexpr result_type max() { return 0xffffffffu; }
+    const std::uint32_t* values;
+    std::size_t next = 0;
+    result_type operator()() { return values[next++ % 3]; }
+};
+
+}  // namespace
+
+TEST_CASE("random_rotation<float> keeps w >= 0 at the ends of the third uniform", "[random][edge]") {
+    // u3 = 2^-31 (the issue's case) put theta2 just past -pi/2 with float's rounded pi: w < 0.
+    for (std::uint32_t g3 : {0u, 1u, 2u, 3u, 255u, 0xffffffffu, 0xfffffffeu, 0xffffff00u}) {
+        const std::uint32_t values[3] = {0x80000000u, 0x12345678u, g3};
+        replay_generator generator{values};
+        const quaternion<float> q = quat::random_rotation<float>(generator);
+        INFO("third output " << g3);
+        CHECK(q.w >= 0.0f);
+        CHECK(std::abs(quat::norm(q) - 1.0f) <= 4 * std::numeric_limits<float>::epsilon());
+    }
+}

@@ -1,5 +1,6 @@
 // Specification of rigid_batch.hpp: moving many points by one rigid motion (both layouts, in place,
 // containers, the streaming path) and composing many dual quaternions.
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -108,4 +109,23 @@ TEMPLATE_TEST_CASE("compose(span) of rigid motions is their product", "[rigid_ba
             std::max(1.0L, quat::test::max_abs(reference));
         CHECK(error <= 8 * eps<T> * std::sqrt(T(n)) * 4);
     }
+}
+
+TEMPLATE_TEST_CASE("struct-of-arrays transform in place: soa_points<T> is also the const input",
+                   "[rigid_batch]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const dual_quaternion<T> dq = random.rigid_motion<T>(10.0);
+    const std::size_t n = 29;
+    std::vector<T> x(n), y(n), z(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = T(i), y[i] = T(2) - T(i), z[i] = T(0.25) * T(i);
+    std::vector<vec3<T>> expected(n);
+    for (std::size_t i = 0; i < n; ++i)
+        expected[i] = quat::transform(dq, vec3<T>{x[i], y[i], z[i]});
+    const soa_points<T> points{x.data(), y.data(), z.data(), n};
+    quat::transform(dq, points, points);  // soa_points<T> converts to soa_points<const T>
+    for (std::size_t i = 0; i < n; ++i)
+        CHECK(max_difference(vec3<T>{x[i], y[i], z[i]}, expected[i]) <= 256 * eps<T>);
+    quat::transform(quat::to_homogeneous(quat::inverse(dq)), points, points);  // and back
+    for (std::size_t i = 0; i < n; ++i) CHECK(std::abs(x[i] - T(i)) <= 1024 * eps<T>);
 }

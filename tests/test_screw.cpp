@@ -87,3 +87,28 @@ TEST_CASE("screw conversions are constexpr", "[screw][constexpr]") {
     constexpr auto back = quat::from_screw(s);
     STATIC_REQUIRE(back.dual.w < -0.99);  // (0, t) real / 2 = (-1, 0, 0, 0)
 }
+
+TEMPLATE_TEST_CASE("to_screw of a turn by a subnormal angle is finite", "[screw][edge]", float,
+                   double) {
+    using T = TestType;
+    const T tiny = std::numeric_limits<T>::denorm_min();
+    const T half = std::sqrt(T(0.5));
+    // Real part (1, tiny direction), a slide by 2 along the axis through the origin: the moment
+    // is exactly zero, and w / |v| overflows on the way.
+    const dual_quaternion<T> along_x{quaternion<T>{1, tiny, 0, 0}, quaternion<T>{0, 1, 0, 0}};
+    const dual_quaternion<T> along_xy{quaternion<T>{1, tiny, tiny, 0},
+                                      quaternion<T>{0, half, half, 0}};
+    for (const dual_quaternion<T>& dq : {along_x, along_xy}) {
+        const quat::screw<T> back = quat::to_screw(dq);
+        CHECK(std::abs(back.displacement - T(2)) <= 4 * eps<T>);
+        CHECK(std::abs(quat::norm(back.direction) - T(1)) <= 4 * eps<T>);
+        // The moment is cot(angle / 2) times what rounding leaves across the axis: finite, and
+        // exactly zero where nothing is left.
+        CHECK(std::isfinite(back.moment.x));
+        CHECK(std::isfinite(back.moment.y));
+        CHECK(back.moment.z == 0);
+    }
+    const quat::screw<T> exact = quat::to_screw(along_x);
+    CHECK(exact.moment.x == 0);
+    CHECK(exact.moment.y == 0);
+}

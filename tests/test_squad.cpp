@@ -1,5 +1,6 @@
 // Specification of squad.hpp: Shoemake's spherical cubic through keyframes, checked against its
 // definition, finite differences of the path, and GLM's glm::squad / glm::intermediate.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -208,4 +209,43 @@ TEST_CASE("squad of NaN gives NaN", "[squad][nan]") {
     CHECK(std::isnan(quat::squad_control(bad, q, q).w));
     CHECK(std::isnan(quat::squad(q, q, q, q, nan).w));
     CHECK(std::isnan(quat::squad(q, bad, q, q, 0.5).w));
+}
+
+TEST_CASE("GLM's squad(q1, q2, s1, s2, h) is quat's squad(q1, s1, s2, q2, h)", "[squad][glm]") {
+    // The keyframes come first and last in quat's order, in the middle in GLM's. A port that keeps
+    // GLM's order compiles (all four are quaternions) and passes through the wrong points.
+    quat::test::random_rotations random;
+    double glm_order_worst = 0;
+    for (int n = 0; n < 100; ++n) {
+        std::vector<quaternion<double>> q = random_walk<double>(random, 4, 1.5);
+        for (std::size_t i = 1; i < q.size(); ++i)
+            if (quat::dot(q[i - 1], q[i]) < 0) q[i] = -q[i];
+        const quaternion<double> a1 = quat::squad_control(q[0], q[1], q[2]);
+        const quaternion<double> a2 = quat::squad_control(q[1], q[2], q[3]);
+        const double h = random.uniform<double>(0.0, 1.0);
+        const quaternion<double> glm_path = quat::normalize(quat::from_glm(glm::squad(
+            quat::to_glm(q[1]), quat::to_glm(q[2]), quat::to_glm(a1), quat::to_glm(a2), h)));
+        CHECK(quat::angle_between(quat::squad(q[1], a1, a2, q[2], h), glm_path) <= 1e-12);
+        glm_order_worst = std::max(glm_order_worst,
+                                   quat::angle_between(quat::squad(q[1], q[2], a1, a2, 1.0), q[2]));
+    }
+    CHECK(glm_order_worst > 0.1);  // GLM's order in quat's squad misses the end keyframe
+}
+
+TEMPLATE_TEST_CASE("squad takes t of another precision than its quaternions", "[squad]", float,
+                   double) {
+    using T = TestType;
+    // A double t beside float quaternions (or a float t beside double ones) converts to the
+    // quaternions' scalar, as slerp's does.
+    quat::test::random_rotations random;
+    for (int n = 0; n < 100; ++n) {
+        const std::vector<quaternion<T>> q = random_walk<T>(random, 4, 1.5);
+        const quaternion<T> a1 = quat::squad_control(q[0], q[1], q[2]);
+        const quaternion<T> a2 = quat::squad_control(q[1], q[2], q[3]);
+        const double t = random.uniform<double>(0.0, 1.0);
+        const float t_float = float(t);
+        CHECK(quat::squad(q[1], a1, a2, q[2], t) == quat::squad(q[1], a1, a2, q[2], T(t)));
+        CHECK(quat::squad(q[1], a1, a2, q[2], t_float) ==
+              quat::squad(q[1], a1, a2, q[2], T(t_float)));
+    }
 }

@@ -57,7 +57,9 @@ def inline(path: Path, seen: set, out: list) -> None:
         target = resolve(match.group(2), match.group(1), path) if match else None
         if target is None:
             out.append(line)
-        elif target not in seen:
+        elif target not in seen or target.suffix == ".inc":
+            # A header once, as #pragma once would; an .inc fragment (the instruction-set
+            # namespace's opening) each time it is included.
             inline(target, seen, out)
         # A quat header already inlined earlier needs nothing here.
     out.append(f"// ---- end {name} ----")
@@ -101,7 +103,11 @@ def generate_io() -> str:
     included = False
     for line in lines:
         match = INCLUDE_RE.match(line)
-        if match and resolve(match.group(2), match.group(1), path) is not None:
+        target = resolve(match.group(2), match.group(1), path) if match else None
+        if target is not None and target.suffix == ".inc":
+            inline(target, set(), out)
+            continue
+        if target is not None:
             if not included:
                 out.append('#include "quat.hpp"')
                 included = True

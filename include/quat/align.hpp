@@ -15,6 +15,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// True when every component of v is finite and one is non-zero: a vector with a direction.
@@ -52,7 +53,9 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(vec3<T> v) noexcept {
     T largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
     // Steps of 2^32, 2^8 and 2: at most a few dozen exact multiplications even from subnormals.
-    for (const int e : {32, 8, 1}) {
+    // An array, not a braced list: std::initializer_list's members are not keyed by instruction set.
+    constexpr int exponents[] = {32, 8, 1};
+    for (const int e : exponents) {
         const T up = power_of_two<T>(e), down = power_of_two<T>(-e);
         while (largest >= up) {
             largest = largest * down;
@@ -96,7 +99,7 @@ template <class T>
                                                                        T s) noexcept {
     const vec3<T> c = accurate_cross(a, b);
     const T cc = dot(c, c);
-    if (!(cc >= std::numeric_limits<T>::min())) {  // |c|^2 underflows: at most a few ulp from -a
+    if (!(cc >= detail::smallest_normal<T>())) {  // |c|^2 underflows: at most a few ulp from -a
         if (c.x == T(0) && c.y == T(0) && c.z == T(0)) return half_turn_perpendicular_to(a);
         const vec3<T> axis = normalize(c);  // w = |c| / sqrt(|c|^2 + s^2), and s^2 >> |c|^2
         return {norm(c) / s, axis.x, axis.y, axis.z};
@@ -175,7 +178,7 @@ template <class T>
         c = accurate_cross(forward, up);
         cc = dot(c, c);
     }
-    const T eps = std::numeric_limits<T>::epsilon();
+    const T eps = detail::epsilon<T>();
     if (!(cc > eps * eps * fu)) return {quaternion<T>::identity(), look_status::parallel};
     const vec3<T> right = c / sqrt(cc);
     const vec3<T> back = forward / -sqrt(ff);
@@ -213,7 +216,7 @@ template <class T>
         if (detail::in_product_range(dot(from, from)) && detail::in_product_range(dot(to, to)))
             return detail::rotation_between_in_range(from, to);
         if (!detail::has_direction(from) || !detail::has_direction(to)) {
-            const T nan = std::numeric_limits<T>::quiet_NaN();
+            const T nan = detail::quiet_nan<T>();
             return {nan, nan, nan, nan};
         }
         return detail::rotation_between_in_range(detail::scaled_by_power_of_two(from),
@@ -245,7 +248,7 @@ template <class T>
     if (r.status == detail::look_status::ok) return r.rotation;
     if (r.status == detail::look_status::parallel)
         return rotation_between(vec3<T>{T(0), T(0), T(-1)}, forward);
-    const T nan = std::numeric_limits<T>::quiet_NaN();
+    const T nan = detail::quiet_nan<T>();
     return {nan, nan, nan, nan};
 }
 
@@ -259,6 +262,7 @@ template <class T>
     if (r.status != detail::look_status::ok) return std::nullopt;
     return r.rotation;
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

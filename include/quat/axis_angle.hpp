@@ -19,11 +19,11 @@ struct axis_angle {
     /// Members left uninitialized, as in a plain struct; axis_angle<T>{} is all zero.
     axis_angle() = default;
     /// The rotation by angle_value radians about unit_axis.
-    constexpr axis_angle(const vec3<T>& unit_axis, T angle_value) noexcept
+    [[gnu::always_inline]] constexpr axis_angle(const vec3<T>& unit_axis, T angle_value) noexcept
         : axis(unit_axis), angle(angle_value) {}
     /// Conversion from another precision: axis_angle<double>{af}.
     template <class U>
-    constexpr explicit axis_angle(const axis_angle<U>& rotation) noexcept
+    [[gnu::always_inline]] constexpr explicit axis_angle(const axis_angle<U>& rotation) noexcept
         : axis(rotation.axis), angle(static_cast<T>(rotation.angle)) {}
 };
 

@@ -12,16 +12,14 @@
 // check per call); with NDEBUG the values written are unspecified.
 //
 // One definition across instruction sets: the functions here are compiled differently under
-// different -m flags (vector width, the AVX-512 streaming branch), so they live in an inline
-// namespace named after the widest of AVX-512F, AVX2 and AVX the translation unit is compiled for.
-// Two translation units built with different flags then call different functions, and the linker
-// never substitutes one for the other. soa_points, a type, stays outside: it is the same everywhere.
+// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
+// live in the inline namespace named after the instruction set (detail/math.hpp says what the key
+// covers). soa_points, a type, stays outside: it is the same everywhere.
 #ifndef QUAT_BATCH_HPP_INCLUDED
 #define QUAT_BATCH_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <type_traits>
 
 #include "config.hpp"
@@ -37,27 +35,28 @@
 namespace quat {
 
 /// Points stored as three separate coordinate arrays (struct of arrays), each `count` long.
-/// Use soa_points<const T> for inputs and soa_points<T> for outputs.
+/// Use soa_points<const T> for inputs and soa_points<T> for outputs; soa_points<T> converts to
+/// soa_points<const T>, so one object can be both (an in-place rotate(q, points, points)).
 template <class T>
 struct soa_points {
     T* x;               ///< x coordinates
     T* y;               ///< y coordinates
     T* z;               ///< z coordinates
     std::size_t count;  ///< number of points in each array
+
+    /// The same arrays, read-only. Always inlined: a member function is not keyed by instruction
+    /// set as quat's free functions are (see detail/math.hpp), so no copy of it may be emitted.
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_points<const U>() const noexcept {
+        return {x, y, z, count};
+    }
 };
 
 }  // namespace quat
 
-namespace quat::detail {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+namespace quat {
+#include "detail/isa_namespace.inc"
+namespace detail {
 
 // Enables a container form: Input holds contiguous In, Output contiguous writable Out.
 template <class In, class Out, class Input, class Output>
@@ -188,8 +187,12 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 template <class T>
 [[nodiscard]] bool soa_same_or_disjoint(soa_points<const T> input, soa_points<T> output) noexcept {
     const std::size_t bytes = input.count * sizeof(T);
-    for (const T* out : {output.x, output.y, output.z})
-        for (const T* in : {input.x, input.y, input.z})
+    // Plain arrays, not braced lists: std::initializer_list's members are the standard library's
+    // inline functions, not keyed by instruction set.
+    const T* const outputs[] = {output.x, output.y, output.z};
+    const T* const inputs[] = {input.x, input.y, input.z};
+    for (const T* out : outputs)
+        for (const T* in : inputs)
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
 }
@@ -267,30 +270,34 @@ template <class T>
     return x * acc;
 }
 
-// The batch slerp for float and double: see slerp(a, b, t, output, count).
-template <class T>
-void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const T* t,
+// The batch slerp for float and double: see slerp(a, b, t, output, count). Each t converts to T
+// as it is read. a and b are the caller's copies, never elements of output.
+template <class T, class U>
+void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const U* t,
                       quaternion<T>* output, std::size_t count) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
     const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
     const T angle = T(2) * detail::atan2(chord, sum);      // in [0, pi/2]
-    bool in_range = angle * angle * angle * angle >= std::numeric_limits<T>::epsilon();
-    for (std::size_t i = 0; i < count && in_range; ++i) in_range = t[i] >= T(0) && t[i] <= T(1);
+    bool in_range = angle * angle * angle * angle >= detail::epsilon<T>();
+    for (std::size_t i = 0; i < count && in_range; ++i) {
+        const T ti = static_cast<T>(t[i]);
+        in_range = ti >= T(0) && ti <= T(1);
+    }
     if (!in_range) {
-        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, t[i]);
+        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
         return;
     }
     const T inverse_sine = T(2) / (chord * sum);
     for (std::size_t start = 0; start < count; start += detail::batch_block_slerp) {
         const std::size_t n =
             count - start < detail::batch_block_slerp ? count - start : detail::batch_block_slerp;
-        const T* tb = t + start;
+        const U* tb = t + start;
         // Uninitialized: every used slot is written first.
         T rw[detail::batch_block_slerp], rx[detail::batch_block_slerp],
             ry[detail::batch_block_slerp], rz[detail::batch_block_slerp];
         for (std::size_t i = 0; i < n; ++i) {
-            const T ti = tb[i];
+            const T ti = static_cast<T>(tb[i]);
             T wa = detail::sin_half_pi((T(1) - ti) * angle) * inverse_sine;
             T wb = detail::sin_half_pi(ti * angle) * inverse_sine;
             // Exact ends by arithmetic on 0/1 flags (selects here keep g++ from vectorizing for
@@ -308,19 +315,7 @@ void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const T* t
     }
 }
 
-}  // inline namespace isa_...
-}  // namespace quat::detail
-
-namespace quat {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+}  // namespace detail
 
 /// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
 /// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
@@ -342,9 +337,10 @@ void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
 }
 
 /// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
-/// any input. Precondition: output.count >= input.count.
+/// any input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
 template <class T>
-void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T> output) noexcept {
+void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
+            soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
     QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
                 "quat::rotate: an output array partially overlaps an input array");
@@ -353,7 +349,8 @@ void rotate(const rotation_matrix<T>& m, soa_points<const T> input, soa_points<T
 
 /// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
 template <class T>
-void rotate(const quaternion<T>& q, soa_points<const T> input, soa_points<T> output) noexcept {
+void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>> input,
+            soa_points<T> output) noexcept {
     rotate(to_matrix(q), input, output);
 }
 
@@ -407,29 +404,36 @@ template <class Range,
 
 /// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
 /// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.
-/// Preconditions: unit a and b; output does not overlap t. For t outside [0, 1], nearly equal a and
-/// b, or non-float/double scalars, each value falls back to the scalar slerp.
-template <class T>
-void slerp(const quaternion<T>& a, const quaternion<T>& b, const T* t, quaternion<T>* output,
+/// a and b are taken by value, so they may be elements of output (slerp(out[0], b, t, out, n)).
+/// The scalar type is the rotations'; t may be of another (double times for float rotations), and
+/// each t converts to T. Preconditions: unit a and b (checked in debug builds, as by the scalar
+/// slerp); output does not overlap t. For t outside [0, 1], nearly equal a and b, or
+/// non-float/double scalars, each value falls back to the scalar slerp.
+template <class T, class U, class = std::enable_if_t<std::is_convertible_v<const U&, T>>>
+void slerp(quaternion<T> a, quaternion<T> b, const U* t, quaternion<T>* output,
            std::size_t count) noexcept {
-    QUAT_ASSERT(detail::disjoint(t, count * sizeof(T), output, count * sizeof(quaternion<T>)),
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp: a or b is not a unit quaternion, checked once for the batch");
+    QUAT_ASSERT(detail::disjoint(t, count * sizeof(U), output, count * sizeof(quaternion<T>)),
                 "quat::slerp: output overlaps t");
     if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
-        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, t[i]);
+        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
     } else {
         detail::slerp_polynomial(a, b, t, output, count);
     }
 }
 
-/// slerp at every t of a contiguous container into a contiguous output of quaternion<T>.
-/// Precondition: size(output) >= size(t).
-template <class T, class Parameters, class Output>
-void slerp(const quaternion<T>& a, const quaternion<T>& b, const Parameters& t,
-           Output&& output) noexcept {
+/// slerp at every t of a contiguous container (of T or another scalar type, which converts) into a
+/// contiguous output of quaternion<T>; a and b may be elements of output. Precondition:
+/// size(output) >= size(t).
+template <class T, class Parameters, class Output,
+          class = std::enable_if_t<std::is_convertible_v<
+              decltype(detail::data_of(std::declval<Output&>())), quaternion<T>*>>>
+void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(t),
-                "output shorter than the parameters");
-    slerp(a, b, static_cast<const T*>(detail::data_of(t)),
-          static_cast<quaternion<T>*>(detail::data_of(output)), detail::size_of(t));
+                "quat::slerp: output shorter than the parameters");
+    slerp(a, b, detail::data_of(t), static_cast<quaternion<T>*>(detail::data_of(output)),
+          detail::size_of(t));
 }
 
 }  // inline namespace isa_...

@@ -4,7 +4,6 @@
 #define QUAT_BLEND_HPP_INCLUDED
 
 #include <cstddef>
-#include <type_traits>
 #include <utility>
 
 #include "config.hpp"
@@ -14,36 +13,70 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
+namespace detail {
+
+// The T of a container of dual_quaternion<T>: declared only, for the type of its data.
+template <class T>
+T dual_quaternion_scalar(const dual_quaternion<T>*) noexcept;
+template <class Transforms>
+using dual_quaternion_scalar_t =
+    decltype(detail::dual_quaternion_scalar(detail::data_of(std::declval<const Transforms&>())));
+
+}  // namespace detail
+
 /// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
 /// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
 /// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
-/// twisted by 180 degrees keeps its volume. Weights need not sum to 1 (normalization removes the
-/// scale) and may be negative. Preconditions: unit transforms; a zero blended real part (count 0,
-/// zero weights, or weights cancelling) gives NaN.
-template <class T>
+/// twisted by 180 degrees keeps its volume. Weights (scalars convertible to T) need not sum to 1:
+/// they are divided by the largest |weight| first and normalization removes the scale, so any finite
+/// size works, subnormal to max(); they may be negative. Preconditions: unit real parts (QUAT_ASSERT;
+/// unchecked, longer ones count more); a zero blended real part (count 0, zero weights, or weights
+/// cancelling), a NaN or infinite weight or component gives NaN in every component.
+template <class T, class Weight>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
-                                                 const T* weights, std::size_t count) noexcept {
+                                                 const Weight* weights,
+                                                 std::size_t count) noexcept {
+    T largest = T(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        QUAT_ASSERT(detail::is_near_unit(transforms[i].real),
+                    "quat::blend: a transform's real part is not a unit quaternion");
+        const T w = static_cast<T>(weights[i]), size = w < T(0) ? -w : w;
+        largest = size > largest || !(size == size) ? size : largest;
+    }
+    // A NaN or infinite largest weight propagates as NaN: inf / inf.
+    const T scale = largest > T(0) ? largest : T(1);
     quaternion<T> real{T(0), T(0), T(0), T(0)}, dual{T(0), T(0), T(0), T(0)};
     for (std::size_t i = 0; i < count; ++i) {
-        const T w = dot(transforms[i].real, transforms[0].real) < T(0) ? -weights[i] : weights[i];
+        const T scaled = static_cast<T>(weights[i]) / scale;
+        const T w = dot(transforms[i].real, transforms[0].real) < T(0) ? -scaled : scaled;
         real += transforms[i].real * w;
         dual += transforms[i].dual * w;
     }
-    return normalize(dual_quaternion<T>{real, dual});
+    const dual_quaternion<T> result = normalize(dual_quaternion<T>{real, dual});
+    // NaN in every component when any is not finite: a NaN translation beside a finite rotation
+    // would pass for half a result.
+    const T parts[8] = {result.real.w, result.real.x, result.real.y, result.real.z,
+                        result.dual.w, result.dual.x, result.dual.y, result.dual.z};
+    for (const T& part : parts)
+        if (!detail::is_finite(part)) {
+            const T nan = detail::quiet_nan<T>();
+            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        }
+    return result;
 }
 
 /// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
-/// dual_quaternion<T> and of T. Precondition: equal sizes (checked in debug builds).
-template <class Transforms, class Weights,
-          class T = std::remove_cv_t<
-              std::remove_pointer_t<decltype(detail::data_of(std::declval<const Weights&>()))>>>
+/// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
+/// Precondition: equal sizes (QUAT_ASSERT).
+template <class Transforms, class Weights, class T = detail::dual_quaternion_scalar_t<Transforms>>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
                                                  const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),
                 "quat::blend: transforms and weights differ in size");
-    return blend(static_cast<const dual_quaternion<T>*>(detail::data_of(transforms)),
-                 detail::data_of(weights), detail::size_of(weights));
+    return blend(detail::data_of(transforms), detail::data_of(weights), detail::size_of(weights));
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

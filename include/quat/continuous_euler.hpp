@@ -11,6 +11,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 // The angle equal to x modulo 2 pi that is nearest to `near`: near + (x - near) wrapped into
@@ -50,7 +51,8 @@ template <class T, sequence S, frame F>
 /// extraction's third angle of 0 is as arbitrary), and wherever else that changes the rotation by
 /// at most 2 epsilon (|middle-angle distance to the lock| times the change of the third angle). So
 /// the free angle never jumps, and the result represents q within 10 epsilon at the lock.
-/// Precondition: unit q, or any non-zero scale of it. NaN or infinite q or previous gives NaN.
+/// Precondition: unit q, or any non-zero scale of it. NaN or infinite q gives NaN; a NaN or
+/// infinite angle of previous gives NaN in that angle.
 template <sequence S, frame F, class T>
 [[nodiscard]] constexpr euler<T, S, F> to_euler(const quaternion<T>& q,
                                                 const euler<T, S, F>& previous) noexcept {
@@ -73,7 +75,7 @@ template <sequence S, frame F, class T>
     const T from_lock = detail::abs(proper ? detail::sin(best[1]) : detail::cos(best[1]));
     const T third_change = previous[2] - best[2];  // within pi after unwrapping
     if (extraction.gimbal_lock ||
-        from_lock * detail::abs(third_change) <= T(2) * std::numeric_limits<T>::epsilon()) {
+        from_lock * detail::abs(third_change) <= T(2) * detail::epsilon<T>()) {
         // At the lock R depends on a + sign c only. Intrinsic R_i(a) R_j(b) R_k(c): R_j(b) turns
         // e_k into sin(b) parity e_i (Tait–Bryan) or cos(b) e_i (proper, k = i), so sign is the
         // sign of that factor; extrinsic R_k(c) R_j(b) R_i(a) puts R_j(b)^T e_k there instead,
@@ -88,6 +90,7 @@ template <sequence S, frame F, class T>
     }
     return best;
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -16,6 +16,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 /// Rotation matrix of the unit quaternion q, so rotate(to_matrix(q), v) == rotate(q, v).
 /// Precondition: |q| = 1 (a non-unit q gives a matrix that is not a rotation).
 template <class T>
@@ -53,7 +54,7 @@ template <class T>
 /// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for double.
 template <class T>
 [[nodiscard]] constexpr T default_orthogonality_tolerance() noexcept {
-    return detail::sqrt(std::numeric_limits<T>::epsilon());
+    return detail::sqrt(detail::epsilon<T>());
 }
 
 /// to_quaternion(m), or std::nullopt when m has a non-finite element, det(m) <= 0 (a reflection),
@@ -63,7 +64,9 @@ template <class T>
     const rotation_matrix<T>& m,
     detail::type_identity_t<T> tolerance = default_orthogonality_tolerance<T>()) noexcept {
     const T error = orthogonality_error(m);
-    if (!(error <= tolerance) || !(determinant(m) > T(0))) return std::nullopt;  // NaN fails too
+    // An infinite element makes the error infinite or NaN, rejected even for an infinite tolerance.
+    if (!detail::is_finite(error) || !(error <= tolerance) || !(determinant(m) > T(0)))
+        return std::nullopt;
     return to_quaternion(m);
 }
 
@@ -92,10 +95,11 @@ template <class T>
 /// and NaN or infinite components give NaN.
 template <class T>
 [[nodiscard]] constexpr axis_angle<T> to_axis_angle(const quaternion<T>& q) noexcept {
-    const quaternion<T> p = q.w < T(0) ? -q : q;
+    const quaternion<T> r = detail::rescaled(q);
+    const quaternion<T> p = r.w < T(0) ? -r : r;
     const vec3<T> u{p.x, p.y, p.z};
     const T s = norm(u);
-    if (s == T(0) && p.w > T(0) && detail::is_finite(p.w)) return {{T(1), T(0), T(0)}, T(0)};
+    if (s == T(0) && p.w > T(0)) return {{T(1), T(0), T(0)}, T(0)};
     return {u / s, T(2) * detail::atan2(s, p.w)};
 }
 
@@ -106,9 +110,11 @@ template <class T>
 }
 
 /// Rodrigues' formula R = cos(angle) I + sin(angle) [axis]x + (1 - cos(angle)) axis axis^T.
-/// Precondition: unit axis.
+/// Precondition: unit axis (checked in debug builds; a zero axis would give cos(angle) I).
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> to_matrix(const axis_angle<T>& rotation) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(rotation.axis),
+                "quat::to_matrix: the axis of an axis_angle is not a unit vector");
     const T c = detail::cos(rotation.angle), s = detail::sin(rotation.angle), k = T(1) - c;
     const vec3<T>& a = rotation.axis;
     const T xk = a.x * k, yk = a.y * k, zk = a.z * k;
@@ -127,7 +133,7 @@ template <class T>
     const T angle = norm(rotation_vector);
     const T angle2 = angle * angle;
     T w{}, scale{};  // scale = sin(angle / 2) / angle
-    if (angle2 * angle2 < std::numeric_limits<T>::epsilon()) {
+    if (angle2 * angle2 < detail::epsilon<T>()) {
         // Taylor series; the first omitted terms are below epsilon^1.5.
         w = T(1) - angle2 / T(8) + angle2 * angle2 / T(384);
         scale = T(0.5) - angle2 / T(48) + angle2 * angle2 / T(3840);
@@ -142,11 +148,12 @@ template <class T>
 /// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same result.
 template <class T>
 [[nodiscard]] constexpr vec3<T> to_rotation_vector(const quaternion<T>& q) noexcept {
-    const quaternion<T> p = q.w < T(0) ? -q : q;
+    const quaternion<T> r = detail::rescaled(q);
+    const quaternion<T> p = r.w < T(0) ? -r : r;
     const vec3<T> u{p.x, p.y, p.z};
     const T s = norm(u);
     const T ratio = s / p.w;  // tan(angle / 2) when p.w > 0
-    if (p.w > T(0) && ratio * ratio * ratio * ratio < std::numeric_limits<T>::epsilon()) {
+    if (p.w > T(0) && ratio * ratio * ratio * ratio < detail::epsilon<T>()) {
         // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
         const T r2 = ratio * ratio;
         return (u / p.w) * (T(2) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
@@ -162,7 +169,8 @@ template <class T>
 /// or infinite components give NaN.
 template <class T>
 [[nodiscard]] constexpr vec3<T> to_mrp(const quaternion<T>& q) noexcept {
-    const quaternion<T> p = q.w < T(0) ? -q : q;
+    const quaternion<T> r = detail::rescaled(q);
+    const quaternion<T> p = r.w < T(0) ? -r : r;
     return vec3<T>{p.x, p.y, p.z} / (norm(p) + p.w);
 }
 
@@ -173,7 +181,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_mrp(const vec3<T>& p) noexcept {
     const T n2 = squared_norm(p);
-    if (n2 <= std::numeric_limits<T>::max()) {
+    if (n2 <= detail::largest<T>()) {
         const T scale = T(2) / (T(1) + n2);
         return {(T(1) - n2) / (T(1) + n2), p.x * scale, p.y * scale, p.z * scale};
     }
@@ -186,6 +194,7 @@ template <class T>
     const vec3<T> v = p / length * (T(2) * inverse / (inverse2 + T(1)));
     return {(inverse2 - T(1)) / (inverse2 + T(1)), v.x, v.y, v.z};
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

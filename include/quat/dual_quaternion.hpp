@@ -22,16 +22,16 @@ struct dual_quaternion {
     /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
     dual_quaternion() = default;
     /// The dual quaternion real_part + eps dual_part.
-    constexpr dual_quaternion(const quaternion<T>& real_part,
-                              const quaternion<T>& dual_part) noexcept
+    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
+                                                     const quaternion<T>& dual_part) noexcept
         : real(real_part), dual(dual_part) {}
     /// Conversion from another precision, component by component.
     template <class U>
-    constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
         : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
 
     /// The motion that moves nothing: real 1, dual 0.
-    [[nodiscard]] static constexpr dual_quaternion identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
         return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
     }
 };
@@ -39,6 +39,7 @@ struct dual_quaternion {
 using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
 using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
 
+#include "detail/isa_namespace.inc"
 /// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
 /// `translation`: real = rotation, dual = (0, translation) rotation / 2.
 template <class T>
@@ -103,12 +104,15 @@ template <class T>
     return !(a == b);
 }
 
-/// The inverse rigid motion x -> R^T (x - t): (real* + eps dual*) / |real|^2, which is the inverse
-/// of any non-zero multiple of a unit dual quaternion. Precondition: real non-zero, else Inf/NaN.
+/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
+/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
+/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
+/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
+/// parts; a NaN or infinite dual component, NaN in the dual part.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
-    const T s = squared_norm(dq.real);
-    return {conjugate(dq.real) / s, conjugate(dq.dual) / s};
+    const quaternion<T> real = inverse(dq.real);
+    return {real, -(real * dq.dual * real)};
 }
 
 /// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
@@ -122,7 +126,8 @@ template <class T>
     return {real, dual - real * dot(real, dual)};
 }
 
-/// normalize(dq), or std::nullopt when the real part is zero or any component is not finite.
+/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
+/// normalized dual part overflows.
 template <class T>
 [[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
     const dual_quaternion<T>& dq) noexcept {
@@ -130,7 +135,10 @@ template <class T>
     if (!try_normalize(dq.real) || !detail::is_finite(d.w) || !detail::is_finite(d.x) ||
         !detail::is_finite(d.y) || !detail::is_finite(d.z))
         return std::nullopt;
-    return normalize(dq);
+    const dual_quaternion<T> result = normalize(dq);
+    // A dual part huge beside a tiny real part can overflow once divided by |real|.
+    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
+    return result;
 }
 
 /// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
@@ -147,8 +155,11 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
                                                  const vec3<T>& v) noexcept {
-    return rotate(dq.real, v);
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform_vector: the real part is not a unit quaternion");
+    return detail::rotate_unchecked(dq.real, v);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -14,14 +14,12 @@
 // as in batch.hpp. Aliasing: an output may be exactly an input of its own type (in place) or
 // overlap no input; it may never overlap an input of another type. A partial overlap is a
 // precondition violation: QUAT_ASSERT reports it in debug builds (a constant number of pointer
-// range comparisons per call); with NDEBUG the values written are unspecified. The functions live
-// in batch.hpp's instruction-set namespaces, for the same reason: their loops compile differently
-// under different -m flags.
+// range comparisons per call); with NDEBUG the values written are unspecified. Like all of quat's
+// functions they live in the instruction-set namespace (detail/math.hpp).
 #ifndef QUAT_ELEMENTWISE_HPP_INCLUDED
 #define QUAT_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
-#include <initializer_list>
 #include <type_traits>
 #include <utility>
 
@@ -36,7 +34,8 @@
 namespace quat {
 
 /// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
-/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs.
+/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
+/// soa_quaternions<T> converts to it.
 template <class T>
 struct soa_quaternions {
     T* w;               ///< scalar parts
@@ -44,20 +43,19 @@ struct soa_quaternions {
     T* y;               ///< j components
     T* z;               ///< k components
     std::size_t count;  ///< number of rotations in each array
+
+    /// The same arrays, read-only; always inlined, as soa_points' conversion (batch.hpp).
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
+        return {w, x, y, z, count};
+    }
 };
 
 }  // namespace quat
 
-namespace quat::detail {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+namespace quat {
+#include "detail/isa_namespace.inc"
+namespace detail {
 
 // The T of a container of rotation_matrix<T>: declared only, for the type of its data.
 template <class T>
@@ -210,25 +208,16 @@ template <class T>
 [[nodiscard]] bool soa_same_or_disjoint(soa_quaternions<const T> q, soa_points<const T> p,
                                         soa_points<T> output) noexcept {
     const std::size_t bytes = p.count * sizeof(T);
-    for (const T* out : {output.x, output.y, output.z})
-        for (const T* in : {q.w, q.x, q.y, q.z, p.x, p.y, p.z})
+    // Plain arrays, not braced lists, as in batch.hpp.
+    const T* const outputs[] = {output.x, output.y, output.z};
+    const T* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
+    for (const T* out : outputs)
+        for (const T* in : inputs)
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
 }
 
-}  // inline namespace isa_...
-}  // namespace quat::detail
-
-namespace quat {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+}  // namespace detail
 
 /// output[i] = rotate(rotations[i], points[i]) for i < count (arrays of structs), for unit
 /// rotations; output == points is allowed, other overlaps are not. Like rotate(q, v) it tolerates
@@ -253,7 +242,8 @@ void rotate_each(const quaternion<T>* rotations, const vec3<T>* points, vec3<T>*
 /// none. Preconditions: rotations.count == points.count <= output.count; unit rotations as for the
 /// array-of-structs form.
 template <class T>
-void rotate_each(soa_quaternions<const T> rotations, soa_points<const T> points,
+void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
+                 soa_points<const detail::type_identity_t<T>> points,
                  soa_points<T> output) noexcept {
     QUAT_ASSERT(rotations.count == points.count,
                 "quat::rotate_each: rotations and points differ in size");

@@ -38,28 +38,31 @@ struct euler {
     /// Angles left uninitialized, as in a plain struct; euler<T, S, F>{} is all zero.
     euler() = default;
     /// The angles a0, a1, a2 in radians, in the order of the sequence's letters.
-    constexpr euler(T a0, T a1, T a2) noexcept : angles{a0, a1, a2} {}
+    [[gnu::always_inline]] constexpr euler(T a0, T a1, T a2) noexcept : angles{a0, a1, a2} {}
     /// The angles from an array: euler<T>{{a0, a1, a2}}.
-    constexpr euler(const T (&values)[3]) noexcept : angles{values[0], values[1], values[2]} {}
+    [[gnu::always_inline]] constexpr euler(const T (&values)[3]) noexcept
+        : angles{values[0], values[1], values[2]} {}
     /// Conversion from another precision, same convention: euler<double>{ef}. Conventions never
     /// convert into each other implicitly or explicitly; use to_euler<S, F>(e) for that.
     template <class U>
-    constexpr explicit euler(const euler<U, S, F>& e) noexcept
+    [[gnu::always_inline]] constexpr explicit euler(const euler<U, S, F>& e) noexcept
         : angles{static_cast<T>(e.angles[0]), static_cast<T>(e.angles[1]),
                  static_cast<T>(e.angles[2])} {}
 
     /// Angle i in {0, 1, 2}, in the order of the sequence's letters.
-    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator[](std::size_t i) noexcept {
         QUAT_ASSERT(i < 3, "Euler angle index out of range");
         return angles[i];
     }
     /// Angle i in {0, 1, 2}, read-only.
-    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator[](
+        std::size_t i) const noexcept {
         QUAT_ASSERT(i < 3, "Euler angle index out of range");
         return angles[i];
     }
 };
 
+#include "detail/isa_namespace.inc"
 /// Angle I of e, for structured bindings: auto [a0, a1, a2] = e;
 template <std::size_t I, class T, sequence S, frame F>
 [[nodiscard]] constexpr T& get(euler<T, S, F>& e) noexcept {
@@ -78,6 +81,7 @@ template <std::size_t I, class T, sequence S, frame F>
     static_assert(I < 3, "an euler has three angles");
     return static_cast<T&&>(e.angles[I]);
 }
+}  // inline namespace isa_...
 
 /// Result of extract_euler: the angles, and whether the rotation is at gimbal lock, where only the
 /// sum or difference of the first and third angles is determined and the third angle is set to 0.
@@ -87,6 +91,7 @@ struct euler_extraction {
     bool gimbal_lock;       ///< True when the middle angle is at its singular value.
 };
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 struct axis_triple {
@@ -183,7 +188,7 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const bool proper = order.first == order.third;
     const T parity = (j - i + 3) % 3 == 1 ? T(1) : T(-1);
     // Angles need no particular scale, but the products below must not overflow or underflow.
-    const T size = squared_norm(q), epsilon = std::numeric_limits<T>::epsilon();
+    const T size = squared_norm(q), epsilon = detail::epsilon<T>();
     const quaternion<T> p = size > epsilon && size < T(1) / epsilon ? q : normalize(q);
     const T v[3] = {p.x, p.y, p.z};
     // Proper i-j-i: (w, v_i, v_j, parity v_k) = (cos(b/2) cos(s), cos(b/2) sin(s), sin(b/2) cos(d),
@@ -255,6 +260,7 @@ template <class T, sequence S, frame F>
 [[nodiscard]] constexpr axis_angle<T> to_axis_angle(const euler<T, S, F>& e) noexcept {
     return to_axis_angle(to_quaternion(e));
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

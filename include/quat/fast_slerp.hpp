@@ -1,19 +1,21 @@
 // Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
 // much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
-// of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.3e-8 rad, plus
-// rounding). nlerp (interpolation.hpp) is the cheap end of the family (0.14 rad). The bounds are
-// asserted by tests/test_fast_slerp.cpp and measured on 10^6 samples by `quat_accuracy --slerp-fast`;
-// the times are the benchmarks slerp_fast/quat/<method>/<type>.
+// of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
+// double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
+// rad). The bounds are asserted by tests/test_fast_slerp.cpp and measured on 10^6 samples by
+// `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
 #ifndef QUAT_FAST_SLERP_HPP_INCLUDED
 #define QUAT_FAST_SLERP_HPP_INCLUDED
 
 #include <type_traits>
 
+#include "config.hpp"
 #include "detail/math.hpp"
 #include "quaternion.hpp"
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types:
@@ -42,6 +44,8 @@ template <class T>
 [[nodiscard]] constexpr quaternion<T> corrected_nlerp(const quaternion<T>& a,
                                                       const quaternion<T>& b,
                                                       detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::corrected_nlerp: a or b is not a unit quaternion");
     // nlerp at tau is slerp at t when tau = 1/2 + tan((t - 1/2) theta) / (2 tan(theta / 2)), theta
     // the 4D angle between a and the nearer of b, -b. zeux (Arseny Kapoulkine), "Approximating
     // slerp" (2015), writes tau = t + t (t - 1/2) (t - 1) k: tau is 0 and 1 at the ends whatever k
@@ -71,6 +75,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
                                                  detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp_fast: a or b is not a unit quaternion");
     // With psi half the 4D angle between a and the nearer of b, -b (psi <= pi/4), c = cos psi and
     // alpha = 2t - 1, slerp's weights are E - O for a and E + O for b, where E = cos(alpha psi) /
     // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves both.
@@ -81,7 +87,8 @@ template <class T>
     // R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where cubics
     // in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
     // bench/fit_slerp_fast.py fits the coefficients to the smallest largest rotation-angle and
-    // length errors (3.3e-8 both; the series themselves, cut after y^3, leave 1.4e-5 rad).
+    // length errors (3.33e-8 both before rounding, within the 3.4e-8 rad that the tests assert; the
+    // series themselves, cut after y^3, leave 1.4e-5 rad).
     // const, not constexpr: a user scalar need not be a literal type.
     const T p00 = T(2.0000036702103374);
     const T p10 = T(0.3335047863139534), p11 = T(-1.3337634041499677);
@@ -108,6 +115,7 @@ template <class T>
     const T odd = u - (u * w * y) * ((r00 + y * r1) + y2 * (r2 + y * r3));
     return a * (even - odd) + b * ((even + odd) * detail::sign_factor(d));
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

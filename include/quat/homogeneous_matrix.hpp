@@ -4,6 +4,7 @@
 #define QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
 
 #include <optional>
+#include <type_traits>
 
 #include "config.hpp"
 #include "conversions.hpp"
@@ -29,31 +30,34 @@ struct homogeneous_matrix {
     /// Elements left uninitialized, as in a plain struct; homogeneous_matrix<T>{} is zero.
     homogeneous_matrix() = default;
     /// The matrix with the given rows: homogeneous_matrix<T>{{{m00, m01, m02, m03}, {...}, ...}}.
-    constexpr homogeneous_matrix(const T (&rows)[4][4]) noexcept
+    [[gnu::always_inline]] constexpr homogeneous_matrix(const T (&rows)[4][4]) noexcept
         : elements{{rows[0][0], rows[0][1], rows[0][2], rows[0][3]},
                    {rows[1][0], rows[1][1], rows[1][2], rows[1][3]},
                    {rows[2][0], rows[2][1], rows[2][2], rows[2][3]},
                    {rows[3][0], rows[3][1], rows[3][2], rows[3][3]}} {}
     /// Conversion from another precision, element by element.
     template <class U>
-    constexpr explicit homogeneous_matrix(const homogeneous_matrix<U>& m) noexcept : elements{} {
+    [[gnu::always_inline]] constexpr explicit homogeneous_matrix(
+        const homogeneous_matrix<U>& m) noexcept
+        : elements{} {
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) elements[i][j] = static_cast<T>(m.elements[i][j]);
     }
 
     /// Element at (row, col), both in [0, 4).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
         return elements[row][col];
     }
     /// Element at (row, col), read-only.
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
+                                                                       int col) const noexcept {
         QUAT_ASSERT(row >= 0 && row < 4 && col >= 0 && col < 4, "matrix index out of range");
         return elements[row][col];
     }
 
     /// The motion that moves nothing.
-    [[nodiscard]] static constexpr homogeneous_matrix identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr homogeneous_matrix identity() noexcept {
         return {{{T(1), T(0), T(0), T(0)},
                  {T(0), T(1), T(0), T(0)},
                  {T(0), T(0), T(1), T(0)},
@@ -61,6 +65,7 @@ struct homogeneous_matrix {
     }
 };
 
+#include "detail/isa_namespace.inc"
 /// Matrix product: as motions, a * b applies b first, then a. 64 multiplications, 48 additions.
 template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> operator*(const homogeneous_matrix<T>& a,
@@ -143,11 +148,36 @@ template <class T>
              {T(0), T(0), T(0), T(1)}}};
 }
 
+namespace detail {
+
+/// The debug check of a rigid motion: rotation block within 1/4096 of orthogonal with a positive
+/// determinant, last row within 1/4096 of (0, 0, 0, 1). NaN and infinities pass and propagate; a
+/// user scalar is not checked.
+template <class T>
+[[nodiscard]] constexpr bool is_near_rigid(const homogeneous_matrix<T>& m) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        const rotation_matrix<T> r = rotation_block(m);
+        const T error = orthogonality_error(r);
+        if (!is_finite(error)) return true;
+        const T tolerance = T(1) / T(4096);
+        return error <= tolerance && determinant(r) > T(0) && abs(m(3, 0)) <= tolerance &&
+               abs(m(3, 1)) <= tolerance && abs(m(3, 2)) <= tolerance &&
+               abs(m(3, 3) - T(1)) <= tolerance;
+    } else {
+        return true;
+    }
+}
+
+}  // namespace detail
+
 /// The unit dual quaternion (real part w >= 0) of the rigid motion m, exact at half turns (through
-/// to_quaternion). Precondition: m is rigid; try_to_dual_quaternion checks untrusted matrices.
+/// to_quaternion). Precondition: m is rigid (checked in debug builds); try_to_dual_quaternion
+/// checks untrusted matrices.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
     const homogeneous_matrix<T>& m) noexcept {
+    QUAT_ASSERT(detail::is_near_rigid(m),
+                "quat::to_dual_quaternion: the matrix is not a rigid motion");
     return to_dual_quaternion(to_quaternion(rotation_block(m)), translation_of(m));
 }
 
@@ -168,6 +198,7 @@ template <class T>
     if (!rotation) return std::nullopt;
     return to_dual_quaternion(*rotation, translation_of(m));
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

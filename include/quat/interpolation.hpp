@@ -10,6 +10,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
 /// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
 /// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
@@ -81,7 +82,8 @@ template <class T>
     if (s == T(0) && p.w > T(0)) return detail::is_finite(t) ? identity + (p - p) : identity * t;
     const T half = t * detail::atan2(s, p.w);
     const vec3<T> v = u / s * detail::sin(half);
-    return {detail::cos(half), v.x, v.y, v.z};
+    // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
+    return quaternion<T>{detail::cos(half), v.x, v.y, v.z} + (p - p);
 }
 
 /// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
@@ -101,6 +103,7 @@ template <class T>
     if (angle <= step) return to;
     return slerp(from, to, step / angle);  // step / angle is in [0, 1), or NaN
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -55,6 +55,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 // Names in the enumerators' order (sequence and frame count from 0 without gaps).
@@ -399,6 +400,7 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
                                               const screw<T>& s) {
     return detail::print_to_stream(os, s);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

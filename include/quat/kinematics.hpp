@@ -10,6 +10,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// The relative rotation q0* q1 (Body) or q1 q0* (not Body), with q1's sign taken nearer q0. Its
@@ -58,7 +59,7 @@ template <class T>
 /// Orientation after turning unit q0 at the constant body-frame angular velocity omega (radians per
 /// unit of dt, body axes) for dt: q0 * from_rotation_vector(omega * dt), exact for any |omega dt|.
 /// Not renormalized: |q| drifts by a few eps per step, so renormalize a long chain of steps every
-/// few dozen (see tests/test_drift.cpp). NaN or infinite input gives NaN.
+/// few dozen (see tests/test_drift.cpp). NaN or infinite input gives a non-finite result.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> integrate_body(const quaternion<T>& q0, const vec3<T>& omega,
                                                      detail::type_identity_t<T> dt) noexcept {
@@ -74,6 +75,7 @@ template <class T>
     QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_world: q0 is not a unit quaternion");
     return from_rotation_vector(omega * dt) * q0;
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

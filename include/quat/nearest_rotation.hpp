@@ -13,6 +13,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 // Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
@@ -69,10 +70,10 @@ template <class T>
 [[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
     const rotation_matrix<T>& m) noexcept {
     const detail::horn_solution<T> result = detail::solve_horn(m);
-    if (!(result.eigenvalue_gap > detail::sqrt(std::numeric_limits<T>::epsilon())))
-        return std::nullopt;
+    if (!(result.eigenvalue_gap > detail::sqrt(detail::epsilon<T>()))) return std::nullopt;
     return to_matrix(result.rotation);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -13,6 +13,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// The debug check of a unit quaternion or axis v: |v|^2 within 1/4096 of 1, which a forgotten
@@ -23,14 +24,17 @@ template <class V>
 [[nodiscard]] constexpr bool is_near_unit(const V& v) noexcept {
     using T = decltype(squared_norm(v));
     if constexpr (std::is_floating_point_v<T>) {
-        const T s = squared_norm(v);
-        return !is_finite(s) || abs(s - T(1)) <= T(1) / T(4096);
+        // v * 0 is zero exactly when every component is finite; an |v|^2 that overflows from finite
+        // components is then caught by the comparison, not let through as "not finite".
+        if (!(squared_norm(v * T(0)) == T(0))) return true;
+        return abs(squared_norm(v) - T(1)) <= T(1) / T(4096);
     } else {
         return true;
     }
 }
 
 }  // namespace detail
+}  // inline namespace isa_...
 
 /// Quaternion w + xi + yj + zk, scalar first, Hamilton product (ij = k, jk = i, ki = j).
 /// A unit quaternion represents the active rotation v -> q v q*; q and -q are the same rotation.
@@ -44,18 +48,18 @@ struct quaternion {
     /// Components left uninitialized, as in a plain struct; quaternion<T>{} is zero.
     quaternion() = default;
     /// The quaternion w + xi + yj + zk.
-    constexpr quaternion(T w_value, T x_value, T y_value, T z_value) noexcept
+    [[gnu::always_inline]] constexpr quaternion(T w_value, T x_value, T y_value, T z_value) noexcept
         : w(w_value), x(x_value), y(y_value), z(z_value) {}
     /// Conversion from another precision, component by component: quatd{qf}.
     template <class U>
-    constexpr explicit quaternion(const quaternion<U>& q) noexcept
+    [[gnu::always_inline]] constexpr explicit quaternion(const quaternion<U>& q) noexcept
         : w(static_cast<T>(q.w)),
           x(static_cast<T>(q.x)),
           y(static_cast<T>(q.y)),
           z(static_cast<T>(q.z)) {}
 
     /// The rotation by zero angle, 1 + 0i + 0j + 0k.
-    [[nodiscard]] static constexpr quaternion identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr quaternion identity() noexcept {
         return {T(1), T(0), T(0), T(0)};
     }
 };
@@ -63,6 +67,7 @@ struct quaternion {
 using quatf = quaternion<float>;   ///< Single-precision quaternion.
 using quatd = quaternion<double>;  ///< Double-precision quaternion.
 
+#include "detail/isa_namespace.inc"
 /// Negation; -q is the same rotation as q.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& q) noexcept {
@@ -164,30 +169,68 @@ template <class T>
     return dot(q, q);
 }
 
-/// |q|, without overflow or underflow for huge or tiny components.
+namespace detail {
+
+/// The largest |component| of q.
+template <class T>
+[[nodiscard]] constexpr T largest_magnitude(const quaternion<T>& q) noexcept {
+    return max(max(abs(q.w), abs(q.x)), max(abs(q.y), abs(q.z)));
+}
+
+/// True when |q|^2 neither overflows nor loses digits to underflow, so that formulas built on it
+/// are accurate as written; always true for a user scalar.
+template <class T>
+[[nodiscard]] constexpr bool in_normal_range(T squared_length) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        return squared_length >= detail::smallest_normal<T>() &&
+               squared_length <= detail::largest<T>();
+    } else {
+        return true;
+    }
+}
+
+/// NaN in every component.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> nan_quaternion() noexcept {
+    const T nan = detail::quiet_nan<T>();
+    return {nan, nan, nan, nan};
+}
+
+/// q divided by its largest |component| where |q|^2 would over- or underflow (every ratio of
+/// components, hence the rotation, kept), q itself otherwise; NaN in every component when q has a
+/// NaN or infinite component, and q when it is zero.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rescaled(const quaternion<T>& q) noexcept {
+    const T s = squared_norm(q);
+    if (in_normal_range(s)) return q;
+    if (s != s) return nan_quaternion<T>();  // a NaN component, which largest_magnitude may skip
+    const T scale = largest_magnitude(q);
+    if (!is_finite(scale)) return nan_quaternion<T>();
+    return scale > T(0) ? q / scale : q;
+}
+
+}  // namespace detail
+
+/// |q|, without overflow or underflow for huge or tiny components (Inf when |q| exceeds max()).
 template <class T>
 [[nodiscard]] constexpr T norm(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
-        return detail::sqrt(s);
-    const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
-                                detail::max(detail::abs(q.y), detail::abs(q.z)));
+    if (detail::in_normal_range(s)) return detail::sqrt(s);
+    const T scale = detail::largest_magnitude(q);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(q / scale));
 }
 
 /// q / |q|, for components anywhere from the smallest subnormal to the largest finite value.
-/// Precondition: q is non-zero and finite, else the result holds NaN; try_normalize checks it.
+/// Precondition: q is non-zero and finite, else NaN in every component; try_normalize checks it.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> normalize(const quaternion<T>& q) noexcept {
     const T s = squared_norm(q);
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
-        return q / detail::sqrt(s);
-    const T scale = detail::max(detail::max(detail::abs(q.w), detail::abs(q.x)),
-                                detail::max(detail::abs(q.y), detail::abs(q.z)));
-    if (!(scale > T(0)) || !detail::is_finite(scale)) return q / detail::sqrt(s);  // NaN out
-    const quaternion<T> scaled = q / scale;
-    return scaled / detail::sqrt(squared_norm(scaled));
+    if (detail::in_normal_range(s)) return q / detail::sqrt(s);
+    const quaternion<T> scaled = detail::rescaled(q);
+    const T scaled_s = squared_norm(scaled);
+    if (!(scaled_s > T(0))) return detail::nan_quaternion<T>();  // zero or NaN
+    return scaled / detail::sqrt(scaled_s);
 }
 
 /// q / |q|, or std::nullopt when q is zero or has a non-finite component.
@@ -201,20 +244,28 @@ template <class T>
     return normalize(q);
 }
 
-/// Multiplicative inverse q* / |q|^2 (the thesis's q* / |q| is wrong for non-unit q).
-/// Precondition: q non-zero and |q|^2 finite and normal, else Inf/NaN; try_inverse checks it.
+/// Multiplicative inverse q* / |q|^2 (the thesis's q* / |q| is wrong for non-unit q), accurate
+/// wherever the inverse is representable: |q| = 1e300 gives 1e-300, a subnormal |q| a huge result
+/// (Inf past max()). The zero quaternion and NaN or infinite components give NaN in every
+/// component; try_inverse checks.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> inverse(const quaternion<T>& q) noexcept {
-    return conjugate(q) / squared_norm(q);
+    const T s = squared_norm(q);
+    if (detail::in_normal_range(s)) return conjugate(q) / s;
+    const T scale = detail::largest_magnitude(q);
+    if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::nan_quaternion<T>();
+    const quaternion<T> p = q / scale;  // q^-1 = p* / (|p|^2 scale)
+    return conjugate(p) / squared_norm(p) / scale;
 }
 
-/// q* / |q|^2, or std::nullopt when q is zero, non-finite, or |q|^2 over- or underflows.
+/// inverse(q), or std::nullopt when q is zero or non-finite or the inverse over- or underflows.
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_inverse(const quaternion<T>& q) noexcept {
-    const T s = squared_norm(q);
-    if (!(s >= std::numeric_limits<T>::min()) || !(s <= std::numeric_limits<T>::max()))
-        return std::nullopt;
-    return conjugate(q) / s;
+    if (!try_normalize(q)) return std::nullopt;  // zero or not finite
+    const quaternion<T> result = inverse(q);
+    const T n = norm(result);
+    if (!(n > T(0)) || !detail::is_finite(n)) return std::nullopt;  // over- or underflowed
+    return result;
 }
 
 namespace detail {
@@ -263,7 +314,7 @@ template <class T>
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     const T chord = norm(a - near), sum = norm(a + near);
     // Two infinite norms would give atan2(inf, inf) = pi/4, a plausible-looking angle of pi.
-    if (!detail::is_finite(chord + sum)) return std::numeric_limits<T>::quiet_NaN();
+    if (!detail::is_finite(chord + sum)) return detail::quiet_nan<T>();
     return T(4) * detail::atan2(chord, sum);
 }
 
@@ -275,11 +326,12 @@ template <class T>
     return angle_between(a, b) <= angle_tolerance;
 }
 
-/// True when ||q| - 1| <= tolerance; false for NaN or infinite components.
+/// True when ||q| - 1| <= tolerance; false for NaN or infinite components, whatever the tolerance.
 template <class T>
 [[nodiscard]] constexpr bool is_unit(const quaternion<T>& q,
                                      detail::type_identity_t<T> tolerance) noexcept {
-    return detail::abs(norm(q) - T(1)) <= tolerance;
+    const T n = norm(q);
+    return detail::is_finite(n) && detail::abs(n - T(1)) <= tolerance;
 }
 
 namespace detail {
@@ -312,6 +364,7 @@ template <class A>
 [[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
     return detail::axis_rotation<2>(angle);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -11,6 +11,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// A uniform number in [0, 1) from generator's bits, as std::generate_canonical defines it (enough
@@ -34,7 +35,7 @@ template <class T, class Generator>
         scale *= static_cast<T>(range);
     }
     const T u = sum / scale;
-    return u < T(1) ? u : T(1) - std::numeric_limits<T>::epsilon() / T(2);
+    return u < T(1) ? u : T(1) - detail::epsilon<T>() / T(2);
 }
 
 }  // namespace detail
@@ -56,9 +57,12 @@ template <class T, class Generator>
     // radii are uniform, which makes the point uniform on the 3-sphere.
     const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
     const T theta1 = T(2) * pi_v<T> * u2, theta2 = pi_v<T> * (u3 - T(0.5));
-    return {r2 * detail::cos(theta2), r1 * detail::sin(theta1), r1 * detail::cos(theta1),
-            r2 * detail::sin(theta2)};
+    // |cos|: pi rounded to float exceeds pi, so theta2 can land just past -pi/2 (u3 = 2^-31 gave
+    // w = -3.1e-8); mirroring that sliver keeps w >= 0 and moves no probability.
+    return {r2 * detail::abs(detail::cos(theta2)), r1 * detail::sin(theta1),
+            r1 * detail::cos(theta1), r2 * detail::sin(theta2)};
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

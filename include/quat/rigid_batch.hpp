@@ -16,16 +16,9 @@
 #include "homogeneous_matrix.hpp"
 #include "vec3.hpp"
 
-namespace quat::detail {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+namespace quat {
+#include "detail/isa_namespace.inc"
+namespace detail {
 
 // The product f[0] f[1] ... f[count - 1] in four interleaved chains, as compose of quaternions
 // does, but with the chains' components stored component-major (component c of chain j at
@@ -71,19 +64,7 @@ template <class T>
     return (chain[0] * chain[1]) * (chain[2] * chain[3]);
 }
 
-}  // inline namespace isa_...
-}  // namespace quat::detail
-
-namespace quat {
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+}  // namespace detail
 
 /// output[i] = R input[i] + t for i < count (array of structs), the rigid motion of the 4x4 matrix
 /// m: 9 multiplications and 9 additions per point. output == input is allowed; other overlaps are
@@ -108,7 +89,7 @@ void transform(const dual_quaternion<T>& dq, const vec3<T>* input, vec3<T>* outp
 /// Struct-of-arrays form of the matrix overload: each output array may be its own input array or
 /// not overlap any input. Precondition: output.count >= input.count.
 template <class T>
-void transform(const homogeneous_matrix<T>& m, soa_points<const T> input,
+void transform(const homogeneous_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
                soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
     QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
@@ -118,7 +99,7 @@ void transform(const homogeneous_matrix<T>& m, soa_points<const T> input,
 
 /// Struct-of-arrays form of the dual-quaternion overload; aliasing as for the matrix overload.
 template <class T>
-void transform(const dual_quaternion<T>& dq, soa_points<const T> input,
+void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_identity_t<T>> input,
                soa_points<T> output) noexcept {
     transform(to_homogeneous(dq), input, output);
 }

@@ -20,13 +20,13 @@ struct rotation_matrix {
     /// Elements left uninitialized, as in a plain struct; rotation_matrix<T>{} is zero.
     rotation_matrix() = default;
     /// The matrix with the given rows: rotation_matrix<T>{{{m00, m01, m02}, {m10, ...}, {...}}}.
-    constexpr rotation_matrix(const T (&rows)[3][3]) noexcept
+    [[gnu::always_inline]] constexpr rotation_matrix(const T (&rows)[3][3]) noexcept
         : elements{{rows[0][0], rows[0][1], rows[0][2]},
                    {rows[1][0], rows[1][1], rows[1][2]},
                    {rows[2][0], rows[2][1], rows[2][2]}} {}
     /// Conversion from another precision, element by element: rotation_matrix<float>{md}.
     template <class U>
-    constexpr explicit rotation_matrix(const rotation_matrix<U>& m) noexcept
+    [[gnu::always_inline]] constexpr explicit rotation_matrix(const rotation_matrix<U>& m) noexcept
         : elements{{static_cast<T>(m.elements[0][0]), static_cast<T>(m.elements[0][1]),
                     static_cast<T>(m.elements[0][2])},
                    {static_cast<T>(m.elements[1][0]), static_cast<T>(m.elements[1][1]),
@@ -35,33 +35,34 @@ struct rotation_matrix {
                     static_cast<T>(m.elements[2][2])}} {}
 
     /// Element at (row, col), both in [0, 3).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
         return elements[row][col];
     }
     /// Element at (row, col), read-only.
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
+                                                                       int col) const noexcept {
         QUAT_ASSERT(row >= 0 && row < 3 && col >= 0 && col < 3, "matrix index out of range");
         return elements[row][col];
     }
 
     /// The rotation by zero angle.
-    [[nodiscard]] static constexpr rotation_matrix identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr rotation_matrix identity() noexcept {
         return {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
     }
     /// The matrix whose rows are r0, r1, r2.
-    [[nodiscard]] static constexpr rotation_matrix from_rows(const vec3<T>& r0, const vec3<T>& r1,
-                                                             const vec3<T>& r2) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr rotation_matrix from_rows(
+        const vec3<T>& r0, const vec3<T>& r1, const vec3<T>& r2) noexcept {
         return {{{r0.x, r0.y, r0.z}, {r1.x, r1.y, r1.z}, {r2.x, r2.y, r2.z}}};
     }
     /// The matrix whose columns are c0, c1, c2: for a rotation, the images of the x, y and z axes.
-    [[nodiscard]] static constexpr rotation_matrix from_columns(const vec3<T>& c0,
-                                                                const vec3<T>& c1,
-                                                                const vec3<T>& c2) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr rotation_matrix from_columns(
+        const vec3<T>& c0, const vec3<T>& c1, const vec3<T>& c2) noexcept {
         return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
     }
 };
 
+#include "detail/isa_namespace.inc"
 /// Row i (0, 1 or 2) of m.
 template <class T>
 [[nodiscard]] constexpr vec3<T> row(const rotation_matrix<T>& m, int i) noexcept {
@@ -142,6 +143,7 @@ template <class T>
         }
     return worst;
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

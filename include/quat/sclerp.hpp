@@ -14,6 +14,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 /// Screw linear interpolation from unit a (t = 0) to unit b (t = 1): a (a^-1 b)^t, the motion at
 /// constant screw velocity, so the angle about the screw axis and the slide along it grow linearly
 /// in t; equal to the matrix form a exp(t log(a^-1 b)) of the 4x4 transforms. Takes the shorter
@@ -43,9 +44,8 @@ template <class T>
     const T sine = detail::sin(t * h), cosine = detail::cos(t * h);
     // ratio = sin(t h) / sin(h), with its series where sin(h) is tiny or zero (the next term,
     // t (1 - t^2)(7 - 3 t^2) h^4 / 360, is below eps there for t in [0, 1]).
-    const T ratio = h * h < std::numeric_limits<T>::epsilon()
-                        ? t + t * (T(1) - t * t) * (h * h) / T(6)
-                        : sine * n / s;
+    const T ratio =
+        h * h < detail::epsilon<T>() ? t + t * (T(1) - t * t) * (h * h) / T(6) : sine * n / s;
     // The screw moves u to (A I + B [l]x + (t - A) l l^T) u, l the axis, with A + i B =
     // sin(t h) / sin(h) e^{i (t - 1) h}: the ratio (1 - e^{i t 2h}) / (1 - e^{i 2h}) by which
     // (I - R) scales the plane across the axis, while the slide along l is t times u's. B and
@@ -59,6 +59,7 @@ template <class T>
     const vec3<T> turn = l * sine;
     return a * to_dual_quaternion(quaternion<T>{cosine, turn.x, turn.y, turn.z}, moved);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

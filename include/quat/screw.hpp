@@ -22,10 +22,12 @@ struct screw {
     T displacement;  ///< Slide along direction.
 };
 
+#include "detail/isa_namespace.inc"
 /// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
 /// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
 /// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
-/// moment: its axis lies far away. Precondition: unit dq; NaN in any component gives NaN.
+/// moment: its axis lies far away. Precondition: unit dq; a NaN or infinite component gives NaN in
+/// the result.
 template <class T>
 [[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
     const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
@@ -37,12 +39,13 @@ template <class T>
         const vec3<T> direction = length > T(0) ? t / length : vec3<T>{T(1), T(0), T(0)};
         return {direction, vec3<T>{T(0), T(0), T(0)}, T(0), length};
     }
-    const vec3<T> l = v / s;
+    const vec3<T> l = normalize(v);  // not v / s, which is not unit when v is subnormal
     const T displacement = dot(t, l);
     // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
     // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
+    // across w / s, not across (w / s): w / s overflows for a tiny angle even where across is 0.
     const vec3<T> across = t - l * displacement;
-    const vec3<T> moment = (cross(t, l) + across * (near.real.w / s)) * T(0.5);
+    const vec3<T> moment = (cross(t, l) + across * near.real.w / s) * T(0.5);
     return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
 }
 
@@ -59,6 +62,7 @@ template <class T>
     return {quaternion<T>{c, real.x, real.y, real.z},
             quaternion<T>{-d * sn, dual.x, dual.y, dual.z}};
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -13,6 +13,7 @@
 
 namespace quat {
 
+#include "detail/isa_namespace.inc"
 /// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
 /// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
 /// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
@@ -42,13 +43,21 @@ template <class T>
 /// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
 /// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
 /// neighbouring durations there (the controls know nothing of time), and rotation_spline is the
-/// path to use. Preconditions: unit inputs (debug-checked) and t in [0, 1]; NaN in gives NaN.
+/// path to use. Argument order: keyframe, control, control, keyframe (GLM's glm::squad takes
+/// q1, q2, s1, s2: a port that keeps GLM's order compiles and is wrong). Preconditions: unit
+/// inputs (debug-checked) and t in [0, 1]; a NaN or infinite input gives a non-finite component
+/// (at t = 0 and t = 1 only where that keyframe is returned).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
                                             const quaternion<T>& a2, const quaternion<T>& q2,
                                             detail::type_identity_t<T> t) noexcept {
+    // Checked here, although slerp checks too, so that the message names squad, not slerp.
+    QUAT_ASSERT(detail::is_near_unit(q1) && detail::is_near_unit(a1) && detail::is_near_unit(a2) &&
+                    detail::is_near_unit(q2),
+                "quat::squad: an input is not a unit quaternion");
     return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -20,6 +20,7 @@ struct swing_twist_parts {
     quaternion<T> twist;  ///< The rotation about the given axis.
 };
 
+#include "detail/isa_namespace.inc"
 namespace detail {
 
 /// swing_twist for a unit axis, or std::nullopt where the twist is undefined.
@@ -27,7 +28,7 @@ template <class T>
 [[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist_unit(
     const quaternion<T>& q, const vec3<T>& unit_axis) noexcept {
     const T along = dot(vec3<T>{q.x, q.y, q.z}, unit_axis);
-    const T eps = std::numeric_limits<T>::epsilon();
+    const T eps = detail::epsilon<T>();
     if (q.w * q.w + along * along <= eps * eps) return std::nullopt;  // NaN goes on, to NaN parts
     const vec3<T> v = unit_axis * along;
     const quaternion<T> twist = normalize(quaternion<T>{q.w, v.x, v.y, v.z});
@@ -51,18 +52,20 @@ template <class T>
 }
 
 /// swing_twist(q, axis), or std::nullopt where the twist is undefined (w^2 + (v . a)^2 <=
-/// epsilon^2) and when the axis is zero or q or the axis has a NaN or infinite component.
-/// Precondition: unit q.
+/// epsilon^2), when q is not a unit quaternion (|q|^2 off 1 by more than 1/4096, the debug check of
+/// swing_twist), when the axis is zero, or when q or the axis has a NaN or infinite component.
+/// Never asserts: the path for untrusted input.
 template <class T>
 [[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
     const quaternion<T>& q, const vec3<T>& axis) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q), "quat::try_swing_twist: q is not a unit quaternion");
     const std::optional<vec3<T>> unit_axis = try_normalize(axis);
     if (!unit_axis || !detail::is_finite(q.w) || !detail::is_finite(q.x) ||
-        !detail::is_finite(q.y) || !detail::is_finite(q.z))
+        !detail::is_finite(q.y) || !detail::is_finite(q.z) || !detail::is_near_unit(q))
         return std::nullopt;
     return detail::try_swing_twist_unit(q, *unit_axis);
 }
+
+}  // inline namespace isa_...
 
 }  // namespace quat
 

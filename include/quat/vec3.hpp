@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "detail/math.hpp"
 
@@ -20,13 +21,15 @@ struct vec3 {
     /// Components left uninitialized, as in a plain struct; vec3<T>{} is the zero vector.
     vec3() = default;
     /// The vector (x, y, z).
-    constexpr vec3(T x_value, T y_value, T z_value) noexcept : x(x_value), y(y_value), z(z_value) {}
+    [[gnu::always_inline]] constexpr vec3(T x_value, T y_value, T z_value) noexcept
+        : x(x_value), y(y_value), z(z_value) {}
     /// Conversion from another precision, component by component: vec3<float>{vd}.
     template <class U>
-    constexpr explicit vec3(const vec3<U>& v) noexcept
+    [[gnu::always_inline]] constexpr explicit vec3(const vec3<U>& v) noexcept
         : x(static_cast<T>(v.x)), y(static_cast<T>(v.y)), z(static_cast<T>(v.z)) {}
 };
 
+#include "detail/isa_namespace.inc"
 /// Negation.
 template <class T>
 [[nodiscard]] constexpr vec3<T> operator-(const vec3<T>& v) noexcept {
@@ -112,26 +115,44 @@ template <class T>
     const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
     const T s = squared_norm(v);
     // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
-    if (s >= std::numeric_limits<T>::min() && s <= std::numeric_limits<T>::max())
-        return detail::sqrt(s);
+    if (s >= detail::smallest_normal<T>() && s <= detail::largest<T>()) return detail::sqrt(s);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(v / scale));
 }
 
-/// v / |v|. Precondition: v is non-zero and finite (else the result holds NaN);
-/// try_normalize checks it.
+/// v / |v| for components anywhere from the smallest subnormal to the largest finite value (the
+/// length may overflow, the direction does not). Precondition: v is non-zero and finite, else the
+/// result holds NaN; try_normalize checks it.
 template <class T>
 [[nodiscard]] constexpr vec3<T> normalize(const vec3<T>& v) noexcept {
-    return v / norm(v);
+    const T s = squared_norm(v);
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!(s >= detail::smallest_normal<T>() && s <= detail::largest<T>())) {
+            // |v|^2 over- or underflowed (or v is zero or not finite): divide by the largest
+            // |component| first, which keeps every ratio and brings |v| into [1, sqrt(3)].
+            const T scale =
+                detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
+            if (scale > T(0) && detail::is_finite(scale)) {
+                const vec3<T> scaled = v / scale;
+                return scaled / detail::sqrt(squared_norm(scaled));
+            }
+            const T nan = detail::quiet_nan<T>();
+            return {nan, nan, nan};
+        }
+    }
+    return v / detail::sqrt(s);
 }
 
-/// v / |v|, or std::nullopt when v is zero or has a non-finite component.
+/// v / |v|, or std::nullopt when v is zero or has a non-finite component; any finite non-zero
+/// length is accepted, subnormal or near max().
 template <class T>
 [[nodiscard]] constexpr std::optional<vec3<T>> try_normalize(const vec3<T>& v) noexcept {
-    const T n = norm(v);
-    if (!(n > T(0)) || !detail::is_finite(n)) return std::nullopt;
-    return v / n;
+    if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z) ||
+        (v.x == T(0) && v.y == T(0) && v.z == T(0)))
+        return std::nullopt;
+    return normalize(v);
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

@@ -84,6 +84,15 @@ int valid() {
     quat::to_matrix(products, matrices);
     quat::to_quaternion(matrices, products);
     sink = sink + points[7].x + products[9].w;
+    // Keyframe paths: drifted keyframes at increasing times, t before, inside and after them.
+    const std::vector<double> key_times{0, 1, 2.5};
+    const std::vector<quatd> keys{drifted, turned, unit};
+    for (const double at : {-1.0, 0.0, 0.7, 2.5, 3.0})
+        sink = sink + quat::keyframe_slerp(key_times, keys, at).w +
+               quat::rotation_spline<double>(key_times, keys)(at).w;
+    sink = sink + quat::squad(drifted, quat::squad_control(drifted, drifted, turned),
+                              quat::squad_control(drifted, turned, unit), turned, 0.4)
+                      .w;
     std::printf("no assertion fired (%g)\n", static_cast<double>(sink));
     return 0;
 }
@@ -109,8 +118,22 @@ int run(const char* name) {
     if (std::strcmp(name, "integrate_body") == 0) sink = quat::integrate_body(not_unit, v, 0.1).w;
     if (std::strcmp(name, "integrate_world") == 0) sink = quat::integrate_world(not_unit, v, 0.1).w;
     if (std::strcmp(name, "swing_twist") == 0) sink = quat::swing_twist(not_unit, v).twist.w;
-    if (std::strcmp(name, "try_swing_twist") == 0)
-        sink = quat::try_swing_twist(not_unit, v).has_value() ? 1 : 0;
+    if (std::strcmp(name, "to_matrix_overflowing") == 0)  // |q|^2 overflows, yet q is finite
+        sink = quat::to_matrix(quatd{1e200, 1, 0, 0})(0, 0);
+    if (std::strcmp(name, "axis_angle_matrix") == 0)
+        sink = quat::to_matrix(quat::axis_angle<double>{{0, 0, 0}, 1})(0, 0);
+    if (std::strcmp(name, "slerp_fast") == 0)
+        sink = quat::slerp_fast(quatd::identity(), not_unit, 0.5).w;
+    if (std::strcmp(name, "corrected_nlerp") == 0)
+        sink = quat::corrected_nlerp(not_unit, quatd::identity(), 0.5).w;
+    if (std::strcmp(name, "transform_vector") == 0)
+        sink = quat::transform_vector(quat::dual_quaterniond{not_unit, quatd{0, 0, 0, 0}}, v).x;
+    if (std::strcmp(name, "homogeneous_to_dual_quaternion") == 0) {
+        quat::homogeneous_matrix<double> sheared = quat::to_homogeneous(
+            quat::to_dual_quaternion(quatd::identity(), v));
+        sheared(0, 1) = 0.5;
+        sink = quat::to_dual_quaternion(sheared).real.w;
+    }
     const std::vector<quatd> cluster{quatd::identity(), quat::rotation_x(0.5)};
     if (std::strcmp(name, "mean") == 0)
         sink = quat::mean(std::vector<quatd>{quatd::identity(), not_unit}).w;
@@ -139,6 +162,20 @@ int run(const char* name) {
                    .w;
     if (std::strcmp(name, "rotation_spline_unsorted") == 0)
         sink = quat::rotation_spline<double>(unsorted, three)(0.5).w;
+    const double nan_time = std::numeric_limits<double>::quiet_NaN();
+    if (std::strcmp(name, "keyframe_slerp_nan_time") == 0)  // sorted around t, NaN elsewhere
+        sink = quat::keyframe_slerp(std::vector<double>{0, 1, nan_time}, three, 0.5).w;
+    if (std::strcmp(name, "keyframe_slerp_not_unit") == 0)
+        sink = quat::keyframe_slerp(std::vector<double>{0, 1},
+                                    std::vector<quatd>{quatd::identity(), not_unit}, 0.5)
+                   .w;
+    if (std::strcmp(name, "rotation_spline_infinite_time") == 0)
+        sink = quat::rotation_spline<double>(
+                   std::vector<double>{0, 1, std::numeric_limits<double>::infinity()}, three)(0.5)
+                   .w;
+    if (std::strcmp(name, "squad") == 0)  // before slerp's check inside, which names slerp
+        sink = quat::squad(quatd::identity(), not_unit, quatd::identity(), quatd::identity(), 0.5)
+                   .w;
     if (std::strcmp(name, "euler_index") == 0) {
         const quat::euler<double> e{0.1, 0.2, 0.3};
         sink = e[static_cast<std::size_t>(3 + sink)];
@@ -161,6 +198,12 @@ int run(const char* name) {
         std::vector<quatd> out(8);
         quat::slerp(quatd::identity(), quat::rotation_z(1.0), &out[0].x, out.data(), 8);
     }
+    if (std::strcmp(name, "batch_slerp_unit") == 0) {
+        // t in [0, 1]: the polynomial path, which never calls the scalar slerp and its check.
+        const double t[3] = {0.0, 0.5, 1.0};
+        quatd out[3];
+        quat::slerp(quatd{1, 1, 0, 0}, quat::rotation_z(1.0), t, out);
+    }
     const auto bad_motion = quat::to_dual_quaternion(not_unit, v);
     const auto motion = quat::to_dual_quaternion(quatd::identity(), v);
     if (std::strcmp(name, "transform") == 0) sink = quat::transform(bad_motion, v).x;
@@ -169,6 +212,10 @@ int run(const char* name) {
         sink =
             quat::blend(std::vector<quat::dual_quaterniond>{motion, motion}, std::vector<double>{1})
                 .real.w;
+    if (std::strcmp(name, "blend_unit") == 0)
+        sink = quat::blend(std::vector<quat::dual_quaterniond>{motion, bad_motion},
+                           std::vector<double>{0.5, 0.5})
+                   .real.w;
     if (std::strcmp(name, "homogeneous_index") == 0)
         sink = quat::to_homogeneous(motion)(0, 4 + static_cast<int>(sink));
     if (std::strcmp(name, "rigid_batch_overlap") == 0)

@@ -1,8 +1,8 @@
-// Compiled with -mavx512f -mavx2 -mfma (see CMakeLists.txt).
-#include "isa_mix.hpp"
+// Built with -march=skylake-avx512 (see CMakeLists.txt).
+#include "isa_mix_compute.hpp"
 
 #if !defined(__AVX512F__)
-#error "this translation unit must be compiled with -mavx512f"
+#error "this translation unit must be compiled with -march=skylake-avx512"
 #endif
 
-rotate_function avx512_rotate() { return &quat::rotate<float>; }
+void isa_mix_avx512(isa_mix_results& results) noexcept { isa_mix_compute(results); }

@@ -1,32 +1,76 @@
-// One definition across instruction sets: quat's batch functions compiled with and without
-// AVX-512 are different functions (inline namespaces keyed by instruction set), so the linker
-// cannot keep one and drop the other, which would run AVX-512 code in a baseline caller on a CPU
-// without it, or silently skip the streaming branch. Both must also compute the right values,
-// on an array large enough (over 16 MiB) to take the AVX-512 build's streaming branch.
+// One definition across instruction sets. Three translation units compute the same things with quat
+// built for the baseline (x86-64), for AVX2 + FMA and for AVX-512; each must run its own code. If
+// the linker kept one unit's copy of a quat function for all three (a function whose name does not
+// say which instruction set it was compiled for), the baseline unit would run AVX code, and the
+// CTest run of this program under `qemu-x86_64 -cpu Nehalem` (no AVX) ends with SIGILL. On a CPU
+// with AVX2 or AVX-512 the other units run too: each must hold its own copy of quat's functions
+// (compared by address: the scalar to_matrix and the batch rotate) and agree with the baseline's
+// values.
+// This unit includes no quat header.
 #include <cmath>
 #include <cstdio>
-#include <vector>
 
 #include "isa_mix.hpp"
 
 namespace {
 
-bool rotates_correctly(rotate_function rotate, const char* name) {
-    const quat::quatf q = quat::normalize(quat::quatf{0.3f, -0.5f, 0.7f, 0.2f});
-    const auto m = quat::to_matrix(q);
-    std::vector<quat::vec3<float>> points(std::size_t(3) << 19), out(points.size());  // 18 MiB
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const float f = static_cast<float>(i % 1000);
-        points[i] = {f, 1 - f, 0.5f * f};
-    }
-    rotate(m, points.data(), out.data(), points.size());
-    for (std::size_t i = 0; i < points.size(); i += 997) {
-        const quat::vec3<float> expected = quat::rotate(m, points[i]);
-        if (std::abs(out[i].x - expected.x) > 1e-3f || std::abs(out[i].y - expected.y) > 1e-3f ||
-            std::abs(out[i].z - expected.z) > 1e-3f) {
-            std::printf("FAIL: %s rotate differs at point %zu\n", name, i);
+isa_mix_results baseline, other;
+
+bool agree(const double* a, const double* b, std::size_t n, const char* what, const char* unit) {
+    for (std::size_t i = 0; i < n; ++i) {
+        // Relative to the value's size: the units round differently (FMA contraction, wider loops).
+        if (!(std::fabs(a[i] - b[i]) <= 1e-5 * (1 + std::fabs(a[i])))) {
+            std::printf("FAIL: %s of the %s unit differs at %zu: %.9g against %.9g\n", what, unit,
+                        i, b[i], a[i]);
             return false;
         }
+    }
+    return true;
+}
+
+bool agrees_with_baseline(const char* unit) {
+    const isa_mix_results& a = baseline;
+    const isa_mix_results& b = other;
+    const std::size_t n = isa_mix_results::samples;
+    // Its own functions, whichever unit the linker met first.
+    if (a.to_matrix == b.to_matrix || a.batch_rotate == b.batch_rotate) {
+        std::printf("FAIL: the %s unit and the baseline share quat's functions\n", unit);
+        return false;
+    }
+    bool ok = agree(&a.rotated[0][0], &b.rotated[0][0], 3 * n, "rotate", unit);
+    ok = agree(&a.rotated_soa[0][0], &b.rotated_soa[0][0], 3 * n, "rotate (soa)", unit) && ok;
+    ok = agree(&a.transformed[0][0], &b.transformed[0][0], 3 * n, "transform", unit) && ok;
+    ok = agree(&a.rotated_each[0][0], &b.rotated_each[0][0], 3 * n, "rotate_each", unit) && ok;
+    ok = agree(a.matrix, b.matrix, 9, "to_matrix", unit) && ok;
+    ok = agree(a.slerped, b.slerped, 4, "slerp", unit) && ok;
+    ok = agree(&a.slerped_batch[0][0], &b.slerped_batch[0][0], 4 * n, "batch slerp", unit) && ok;
+    ok = agree(a.between, b.between, 4, "rotation_between", unit) && ok;
+    ok = agree(a.looking, b.looking, 4, "look_rotation", unit) && ok;
+    return ok;
+}
+
+// Spot checks of the baseline's own values against numbers worked out by hand.
+bool baseline_is_right() {
+    // rotation_between((1, 1e-9, 0), (-1, 0, 1e-9)): a half turn (w ~ 0) about the axis a x b,
+    // (1e-18, -1e-9, 1e-9) normalized, which only the compensated cross product gets right.
+    const double* b = baseline.between;
+    const double h = std::sqrt(0.5);
+    if (!(std::fabs(b[0]) < 1e-6 && std::fabs(b[1]) < 1e-6 && std::fabs(b[2] + h) < 1e-6 &&
+          std::fabs(b[3] - h) < 1e-6)) {
+        std::printf("FAIL: rotation_between gave (%g, %g, %g, %g)\n", b[0], b[1], b[2], b[3]);
+        return false;
+    }
+    // to_matrix gives an orthogonal matrix: row 0 has unit length.
+    const double* m = baseline.matrix;
+    if (!(std::fabs(m[0] * m[0] + m[1] * m[1] + m[2] * m[2] - 1) < 1e-12)) {
+        std::printf("FAIL: to_matrix's first row is not unit\n");
+        return false;
+    }
+    // The batch slerp starts at a and ends at b = (0, 1, 0, 0) or -b.
+    const double* end = baseline.slerped_batch[isa_mix_results::samples - 1];
+    if (!(std::fabs(std::fabs(end[1]) - 1) < 1e-6)) {
+        std::printf("FAIL: batch slerp does not end at b\n");
+        return false;
     }
     return true;
 }
@@ -34,17 +78,20 @@ bool rotates_correctly(rotate_function rotate, const char* name) {
 }  // namespace
 
 int main() {
-    if (baseline_rotate() == avx512_rotate()) {
-        std::printf(
-            "FAIL: the baseline and AVX-512 translation units share one quat::rotate<float>\n");
-        return 1;
+    isa_mix_baseline(baseline);
+    std::printf("baseline unit ran\n");
+    bool ok = baseline_is_right();
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+        isa_mix_avx2(other);
+        ok = agrees_with_baseline("AVX2") && ok;
+        std::printf("AVX2 unit ran\n");
     }
-    bool ok = rotates_correctly(baseline_rotate(), "baseline");
-    if (__builtin_cpu_supports("avx512f")) {
-        ok = rotates_correctly(avx512_rotate(), "AVX-512") && ok;
-    } else {
-        std::printf("this CPU has no AVX-512: only the baseline unit's values are checked\n");
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq")) {
+        isa_mix_avx512(other);
+        ok = agrees_with_baseline("AVX-512") && ok;
+        std::printf("AVX-512 unit ran\n");
     }
-    std::printf(ok ? "two definitions, both correct\n" : "FAIL\n");
+    std::printf(ok ? "every unit ran its own code and agreed\n" : "FAIL\n");
     return ok ? 0 : 1;
 }

@@ -6,7 +6,9 @@
 
 #include "../vec3.hpp"
 
-namespace quat::detail {
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
 
 template <class T>
 struct matrix3 {
@@ -113,6 +115,8 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
     for (std::size_t k = count - 1; k-- > 0;) x(k) = diagonal(k) * (x(k) - upper(k) * x(k + 1));
 }
 
-}  // namespace quat::detail
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED

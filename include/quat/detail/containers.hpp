@@ -11,6 +11,7 @@ namespace quat {
 template <class T>
 struct quaternion;
 
+#include "isa_namespace.inc"
 namespace detail {
 
 // std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
@@ -40,6 +41,7 @@ using quaternion_scalar_t =
     decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
 
 }  // namespace detail
+}  // inline namespace isa_...
 }  // namespace quat
 
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED

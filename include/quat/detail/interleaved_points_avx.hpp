@@ -22,18 +22,9 @@
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
 
-namespace quat::detail {
-
-// Keyed by instruction set like batch.hpp, whose functions call these.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
 
 #if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
@@ -217,7 +208,8 @@ template <bool Translate>
     return done;
 }
 
+}  // namespace detail
 }  // inline namespace isa_...
-}  // namespace quat::detail
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED

@@ -1,9 +1,35 @@
 // Scalar functions that work at compile time and at run time, and for user-defined scalars.
 //
-// For float, double and long double: <cmath> at run time, and during constant evaluation our own
-// long double implementations (correct to a few ulp of double for the argument ranges rotations
-// use: |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the
-// user's sqrt, sin, cos, atan2, asin and abs.
+// For float, double and long double: the C library's functions at run time, called through the
+// compiler's builtins (std::sqrt(float) and the like are the standard library's inline functions,
+// which quat cannot key by instruction set, see below), and during constant evaluation our own long
+// double implementations (correct to a few ulp of double for the argument ranges rotations use:
+// |x| < 1e6 for sin and cos). For any other scalar the call is unqualified, so ADL finds the user's
+// sqrt, sin, cos, atan2, asin and abs.
+//
+// One definition across instruction sets. An inline function compiled with -mavx (even plain scalar
+// code: at -O0 every load is VEX-encoded) and the same function compiled without it have one name,
+// and the linker keeps one copy for the whole program; a translation unit built for CPUs without
+// AVX may then run the AVX one. So every quat function lives in an inline namespace named after the
+// instruction set it is compiled for: the widest of AVX-512F, AVX2, AVX, SSE4.1 and SSE, and
+// whether FMA is on (which changes every multiply-add the compiler contracts, and fast_fma below).
+// Units built with different flags then call different functions. Every header opens the key by
+// including detail/isa_namespace.inc, the one place its #if chain is spelled out (quat's only macros
+// are its version and QUAT_ASSERT); detail, nested in it, is keyed with everything in it.
+// What it covers: every function quat defines, free or in detail; rotation_spline, a class whose
+// member functions do real work, is keyed whole (so it cannot cross between such units). The value
+// types (vec3, quaternion, the matrices, euler, dual_quaternion, ...) are not keyed, so that they
+// mean the same type in every unit and can cross between units built with different flags; their
+// few member functions (constructors, identity, element access) are [[gnu::always_inline]], so no
+// copy of them is ever emitted (unless a user takes their address). What it cannot cover: the
+// standard library's inline functions (those of std::vector, std::optional, std::numeric_limits,
+// ...) have one name whatever the flags; quat calls none of them on its computing paths (numeric
+// limits are read at compile time, below), but the try_... functions return std::optional, and user
+// code has its own. Nor does the key name every -m flag (-mbmi2, -mf16c, the AVX-512 subsets beyond
+// F): units that differ only in those share quat's functions. tests/contracts/isa_mix_*.cpp is the
+// proof: units built for x86-64, x86-64-v3 and AVX-512 in one program, whose baseline unit runs
+// under an emulated CPU without AVX; tests/contracts/isa_key_lint.cmake checks the habits above in
+// every header.
 #ifndef QUAT_DETAIL_MATH_HPP_INCLUDED
 #define QUAT_DETAIL_MATH_HPP_INCLUDED
 
@@ -11,12 +37,70 @@
 #include <limits>
 #include <type_traits>
 
-namespace quat::detail {
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
 
-/// True while the caller is being constant-evaluated. The builtin exists in GCC >= 9, Clang >= 9
-/// and MSVC >= 19.25 in every language mode, which lets C++17 code use <cmath> at run time.
+/// True while the caller is being constant-evaluated. The builtin exists in GCC >= 9 and Clang >= 9
+/// in every language mode, which lets C++17 code use <cmath> at run time. (MSVC is not supported:
+/// quat also needs __builtin_copysignl and other GCC/Clang builtins.)
 [[nodiscard]] constexpr bool constant_evaluated() noexcept {
     return __builtin_is_constant_evaluated();
+}
+
+// std::numeric_limits<T>'s constants, read during compilation: called at run time (as at -O0),
+// std::numeric_limits<double>::epsilon() is an inline function of the standard library, which the
+// linker may take from a unit compiled for another instruction set. Any other T asks
+// numeric_limits.
+/// The difference between 1 and the next larger T.
+template <class T>
+[[nodiscard]] constexpr T epsilon() noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T value = std::numeric_limits<T>::epsilon();
+        return value;
+    } else {
+        return std::numeric_limits<T>::epsilon();
+    }
+}
+/// The smallest positive normal T.
+template <class T>
+[[nodiscard]] constexpr T smallest_normal() noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T value = std::numeric_limits<T>::min();
+        return value;
+    } else {
+        return std::numeric_limits<T>::min();
+    }
+}
+/// The largest finite T.
+template <class T>
+[[nodiscard]] constexpr T largest() noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T value = std::numeric_limits<T>::max();
+        return value;
+    } else {
+        return std::numeric_limits<T>::max();
+    }
+}
+/// Positive infinity.
+template <class T>
+[[nodiscard]] constexpr T infinity() noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T value = std::numeric_limits<T>::infinity();
+        return value;
+    } else {
+        return std::numeric_limits<T>::infinity();
+    }
+}
+/// A quiet NaN.
+template <class T>
+[[nodiscard]] constexpr T quiet_nan() noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T value = std::numeric_limits<T>::quiet_NaN();
+        return value;
+    } else {
+        return std::numeric_limits<T>::quiet_NaN();
+    }
 }
 
 namespace compile_time {
@@ -31,8 +115,8 @@ inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
 [[nodiscard]] constexpr bool sign_bit(real x) noexcept { return __builtin_copysignl(1.0L, x) < 0; }
 
 [[nodiscard]] constexpr real sqrt(real x) noexcept {
-    if (is_nan(x) || x < 0) return std::numeric_limits<real>::quiet_NaN();
-    if (x == 0 || x == std::numeric_limits<real>::infinity()) return x;
+    if (is_nan(x) || x < 0) return quiet_nan<real>();
+    if (x == 0 || x == infinity<real>()) return x;
     // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
     real scale = 1;
     constexpr real big = 18446744073709551616.0L;  // 2^64
@@ -85,11 +169,9 @@ struct sine_cosine {
     real sin, cos;
 };
 [[nodiscard]] constexpr sine_cosine sin_cos(real x) noexcept {
-    if (is_nan(x) || x - x != 0)
-        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (is_nan(x) || x - x != 0) return {quiet_nan<real>(), quiet_nan<real>()};
     const real quotient = x / (pi / 2);
-    if (quotient > 9e15L || quotient < -9e15L)
-        return {std::numeric_limits<real>::quiet_NaN(), std::numeric_limits<real>::quiet_NaN()};
+    if (quotient > 9e15L || quotient < -9e15L) return {quiet_nan<real>(), quiet_nan<real>()};
     const long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
     const real r = (x - static_cast<real>(k) * half_pi_head) - static_cast<real>(k) * half_pi_tail;
     const real s = sin_kernel(r), c = cos_kernel(r);
@@ -123,8 +205,8 @@ struct sine_cosine {
 }
 
 [[nodiscard]] constexpr real atan2(real y, real x) noexcept {
-    if (is_nan(x) || is_nan(y)) return std::numeric_limits<real>::quiet_NaN();
-    constexpr real inf = std::numeric_limits<real>::infinity();
+    if (is_nan(x) || is_nan(y)) return quiet_nan<real>();
+    constexpr real inf = infinity<real>();
     const real ax = x < 0 ? -x : x, ay = y < 0 ? -y : y;
     real angle = 0;
     if (ax == inf && ay == inf) angle = pi / 4;
@@ -144,7 +226,13 @@ template <class T>
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated())
             return static_cast<T>(compile_time::sqrt(static_cast<compile_time::real>(x)));
-        return std::sqrt(x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_sqrtf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_sqrt(x);
+        } else {
+            return __builtin_sqrtl(x);
+        }
     } else {
         using std::sqrt;
         return sqrt(x);
@@ -157,7 +245,13 @@ template <class T>
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated())
             return static_cast<T>(compile_time::sin_cos(static_cast<compile_time::real>(x)).sin);
-        return std::sin(x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_sinf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_sin(x);
+        } else {
+            return __builtin_sinl(x);
+        }
     } else {
         using std::sin;
         return sin(x);
@@ -170,7 +264,13 @@ template <class T>
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated())
             return static_cast<T>(compile_time::sin_cos(static_cast<compile_time::real>(x)).cos);
-        return std::cos(x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_cosf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_cos(x);
+        } else {
+            return __builtin_cosl(x);
+        }
     } else {
         using std::cos;
         return cos(x);
@@ -184,7 +284,13 @@ template <class T>
         if (constant_evaluated())
             return static_cast<T>(compile_time::atan2(static_cast<compile_time::real>(y),
                                                       static_cast<compile_time::real>(x)));
-        return std::atan2(y, x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_atan2f(y, x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_atan2(y, x);
+        } else {
+            return __builtin_atan2l(y, x);
+        }
     } else {
         using std::atan2;
         return atan2(y, x);
@@ -197,10 +303,16 @@ template <class T>
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated()) {
             const auto r = static_cast<compile_time::real>(x);
-            if (!(r >= -1 && r <= 1)) return std::numeric_limits<T>::quiet_NaN();
+            if (!(r >= -1 && r <= 1)) return quiet_nan<T>();
             return static_cast<T>(compile_time::atan2(r, compile_time::sqrt((1 - r) * (1 + r))));
         }
-        return std::asin(x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_asinf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_asin(x);
+        } else {
+            return __builtin_asinl(x);
+        }
     } else {
         using std::asin;
         return asin(x);
@@ -212,7 +324,13 @@ template <class T>
 [[nodiscard]] constexpr T abs(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
         if (constant_evaluated()) return x < 0 ? -x : (x == 0 ? T(0) : x);
-        return std::abs(x);
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_fabsf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_fabs(x);
+        } else {
+            return __builtin_fabsl(x);
+        }
     } else {
         using std::abs;
         return abs(x);
@@ -222,7 +340,7 @@ template <class T>
 /// True unless x is NaN or infinite.
 template <class T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept {
-    return x == x && abs(x) <= std::numeric_limits<T>::max();
+    return x == x && abs(x) <= largest<T>();
 }
 
 /// pi in the scalar type T; a function, not a variable template, so that a scalar type without
@@ -276,8 +394,9 @@ template <class T>
 
 }  // namespace compile_time
 
-/// True where std::fma is a fused instruction rather than a library call (FP_FAST_FMA and
-/// FP_FAST_FMAL from <cmath>, defined by compilers that target FMA hardware, e.g. -march=haswell).
+/// True where fma is a fused instruction rather than a library call (FP_FAST_FMA and FP_FAST_FMAL
+/// from <cmath>, defined by compilers that target FMA hardware, e.g. -march=haswell). It differs
+/// between -m flags, as the code of difference_of_products does: keyed, as is all of this file.
 template <class T>
 inline constexpr bool fast_fma =
 #if defined(FP_FAST_FMA)
@@ -306,8 +425,13 @@ template <class T>
         if constexpr (fast_fma<T>) {
             if (!constant_evaluated()) {
                 const T w = c * d;
-                const T e = std::fma(-c, d, w);
-                return std::fma(a, b, -w) + e;
+                if constexpr (std::is_same_v<T, double>) {
+                    const T e = __builtin_fma(-c, d, w);
+                    return __builtin_fma(a, b, -w) + e;
+                } else {
+                    const T e = __builtin_fmal(-c, d, w);
+                    return __builtin_fmal(a, b, -w) + e;
+                }
             }
         }
         const compile_time::exact_product<T> ab = compile_time::two_product(a, b);
@@ -318,6 +442,8 @@ template <class T>
     }
 }
 
-}  // namespace quat::detail
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_MATH_HPP_INCLUDED

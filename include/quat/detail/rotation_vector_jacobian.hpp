@@ -15,7 +15,9 @@
 #include "../vec3.hpp"
 #include "math.hpp"
 
-namespace quat::detail {
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
 
 // sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
 // terms no longer change the sum (at most 40 terms; the series here are used where |ratio| < 1/2).
@@ -86,16 +88,37 @@ template <class T>
     return quartic_coefficient(n) / (T(2) * one_minus_cos_over_square(n));
 }
 
+/// n_minus_sin_over_cube, quartic_coefficient and quintic_coefficient at one |r|: a solve that
+/// evaluates right_jacobian_rate at a fixed r many times computes them once (they are most of its
+/// cost: each is a series or a sine).
+template <class T>
+struct jacobian_rate_coefficients {
+    T cubic, quartic, quintic;
+};
+
+/// The coefficients at n = |r|.
+template <class T>
+[[nodiscard]] constexpr jacobian_rate_coefficients<T> jacobian_rate_coefficients_of(T n) noexcept {
+    return {n_minus_sin_over_cube(n), quartic_coefficient(n), quintic_coefficient(n)};
+}
+
+/// (d/dt J(r)) v for r changing at the rate v, with k the coefficients at |r|.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian_rate(
+    const vec3<T>& r, const vec3<T>& v, const jacobian_rate_coefficients<T>& k) noexcept {
+    const vec3<T> c = cross(r, v);
+    return (c * k.quartic + cross(r, c) * k.quintic) * dot(r, v) + cross(v, c) * k.cubic;
+}
+
 /// (d/dt J(r)) v for r changing at the rate v: the part of the angular acceleration that is
 /// quadratic in v.
 template <class T>
 [[nodiscard]] constexpr vec3<T> right_jacobian_rate(const vec3<T>& r, const vec3<T>& v) noexcept {
-    const T n = norm(r);
-    const vec3<T> c = cross(r, v);
-    return (c * quartic_coefficient(n) + cross(r, c) * quintic_coefficient(n)) * dot(r, v) +
-           cross(v, c) * n_minus_sin_over_cube(n);
+    return right_jacobian_rate(r, v, jacobian_rate_coefficients_of(norm(r)));
 }
 
-}  // namespace quat::detail
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED

@@ -9,19 +9,11 @@
 #include <xmmintrin.h>
 #endif
 
-namespace quat::detail {
-
-// Keyed by instruction set like batch.hpp, whose functions call these: the same code compiled
-// with other -m flags must not be merged with this one by the linker.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#else
-inline namespace isa_baseline {
-#endif
+namespace quat {
+// Keyed by instruction set (see detail/math.hpp): has_streaming_stores and the code below depend on
+// __SSE__, which the key includes.
+#include "isa_namespace.inc"
+namespace detail {
 
 // True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
 #if defined(__SSE__) || defined(_M_X64)
@@ -48,7 +40,8 @@ inline void stream_fence() noexcept {
 #endif
 }
 
+}  // namespace detail
 }  // inline namespace isa_...
-}  // namespace quat::detail
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED

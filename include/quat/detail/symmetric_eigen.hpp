@@ -1,5 +1,6 @@
 // Eigenvalues and eigenvectors of a symmetric 4x4 matrix: the one solver behind nearest_rotation,
-// align_vectors and mean, whose answers are eigenvectors of such a matrix read as quaternions.
+// align_vectors and mean, whose answers are eigenvectors of such a matrix read as quaternions; and
+// the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
 #ifndef QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 #define QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 
@@ -9,7 +10,9 @@
 #include "../quaternion.hpp"
 #include "math.hpp"
 
-namespace quat::detail {
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
 
 // align_vectors and mean sum their matrices over the input in blocks of this many elements, each
 // block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
@@ -31,7 +34,7 @@ struct symmetric_eigen4 {
 // non-finite element gives NaN values and vectors.
 template <class T>
 [[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
-    const T nan = std::numeric_limits<T>::quiet_NaN();
+    const T nan = detail::quiet_nan<T>();
     T k[4][4] = {};
     for (int p = 0; p < 4; ++p)
         for (int q = 0; q < 4; ++q) {
@@ -51,8 +54,7 @@ template <class T>
         T off = T(0), total = T(0);
         for (int p = 0; p < 4; ++p)
             for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
-        if (!(off > std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * total))
-            break;
+        if (!(off > detail::epsilon<T>() * detail::epsilon<T>() * total)) break;
         for (int p = 0; p < 3; ++p)
             for (int q = p + 1; q < 4; ++q) {
                 if (k[p][q] == T(0)) continue;
@@ -95,6 +97,60 @@ template <class T>
     return result;
 }
 
-}  // namespace quat::detail
+// Solves h x = g for a symmetric positive definite 3x3 h: LDL^T elimination, each step on the
+// largest remaining diagonal element (symmetric complete pivoting, stable for positive definite
+// matrices however graded: Higham, Accuracy and Stability of Numerical Algorithms, 2002, 10.3).
+// False, x untouched, when a pivot is not positive (h not positive definite, or NaN).
+template <class T>
+[[nodiscard]] constexpr bool solve_positive_definite3(const T (&h)[3][3], const T (&g)[3],
+                                                      T (&x)[3]) noexcept {
+    T m[3][3] = {}, r[3] = {};
+    int order[3] = {0, 1, 2};
+    for (int i = 0; i < 3; ++i) {
+        r[i] = g[i];
+        for (int j = 0; j < 3; ++j) m[i][j] = h[i][j];
+    }
+    for (int k = 0; k < 3; ++k) {
+        int p = k;
+        for (int i = k + 1; i < 3; ++i)
+            if (m[i][i] > m[p][p]) p = i;
+        if (p != k) {  // swap row and column k with p
+            for (int j = 0; j < 3; ++j) {
+                const T row = m[k][j];
+                m[k][j] = m[p][j];
+                m[p][j] = row;
+            }
+            for (int i = 0; i < 3; ++i) {
+                const T column = m[i][k];
+                m[i][k] = m[i][p];
+                m[i][p] = column;
+            }
+            const T value = r[k];
+            r[k] = r[p];
+            r[p] = value;
+            const int index = order[k];
+            order[k] = order[p];
+            order[p] = index;
+        }
+        if (!(m[k][k] > T(0)) || !detail::is_finite(m[k][k])) return false;
+        for (int i = k + 1; i < 3; ++i) {
+            const T l = m[i][k] / m[k][k];
+            for (int j = k + 1; j < 3; ++j) m[i][j] -= l * m[k][j];
+            r[i] -= l * r[k];
+        }
+    }
+    T y[3] = {};
+    for (int k = 2; k >= 0; --k) {
+        T value = r[k];
+        for (int j = k + 1; j < 3; ++j) value -= m[k][j] * y[j];
+        y[k] = value / m[k][k];
+    }
+    for (int k = 0; k < 3; ++k) x[order[k]] = y[k];
+    return true;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
 #endif  // QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED

@@ -15,6 +15,7 @@
 
 namespace quat {
 
+#include "../detail/isa_namespace.inc"
 /// The same quaternion as Eigen::Quaternion (Eigen's constructor order is w, x, y, z).
 template <class T>
 [[nodiscard]] Eigen::Quaternion<T> to_eigen(const quaternion<T>& q) {
@@ -88,6 +89,7 @@ template <class T, int Options, int MaxRows, int MaxCols>
 [[nodiscard]] vec3<T> from_eigen(const Eigen::Matrix<T, 3, 1, Options, MaxRows, MaxCols>& v) {
     return {v.x(), v.y(), v.z()};
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 

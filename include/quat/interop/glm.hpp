@@ -16,6 +16,7 @@
 
 namespace quat {
 
+#include "../detail/isa_namespace.inc"
 /// The same quaternion as glm::qua: components copied by name (w to w, ...), so the result does not
 /// depend on GLM's storage order or on GLM_FORCE_QUAT_DATA_WXYZ.
 template <class T>
@@ -83,6 +84,7 @@ template <class T, glm::qualifier Q>
 [[nodiscard]] vec3<T> from_glm(const glm::vec<3, T, Q>& v) noexcept {
     return {v.x, v.y, v.z};
 }
+}  // inline namespace isa_...
 
 }  // namespace quat
 
