@@ -386,15 +386,23 @@ namespace {
 template <class T>
 std::vector<T> extreme_scales() {
     using limits = std::numeric_limits<T>;
-    const T big = sizeof(T) == 4 ? T(1e38) : T(1e300), small = sizeof(T) == 4 ? T(1e-38) : T(1e-300);
-    return {limits::max(), limits::max() / 3, big, T(1) / limits::epsilon(), small,
-            limits::min(), limits::min() / 1024, limits::denorm_min() * T(1 << 20)};
+    const T big = sizeof(T) == 4 ? T(1e38) : T(1e300),
+            small = sizeof(T) == 4 ? T(1e-38) : T(1e-300);
+    return {limits::max(),
+            limits::max() / 3,
+            big,
+            T(1) / limits::epsilon(),
+            small,
+            limits::min(),
+            limits::min() / 1024,
+            limits::denorm_min() * T(1 << 20)};
 }
 
 /// The error a scaled input may carry: a few eps, plus the relative spacing of subnormals at scale.
 template <class T>
 T scaled_tolerance(T scale) {
-    return 16 * std::numeric_limits<T>::epsilon() + 4 * std::numeric_limits<T>::denorm_min() / scale;
+    return 16 * std::numeric_limits<T>::epsilon() +
+           4 * std::numeric_limits<T>::denorm_min() / scale;
 }
 
 template <class T>

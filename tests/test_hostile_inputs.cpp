@@ -137,37 +137,37 @@ bool all_finite(const R& r) {
 }
 
 // Each check names the call and the input in its message, so a failure list reads as a report.
-#define EXPECT_ALL_NAN(where, expr)                                                       \
-    do {                                                                                  \
-        const auto result_ = (expr);                                                      \
-        INFO(where << " -> (" << show(result_) << "); expected NaN in every component"   \
+#define EXPECT_ALL_NAN(where, expr)                                                             \
+    do {                                                                                        \
+        const auto result_ = (expr);                                                            \
+        INFO(where << " -> (" << show(result_) << "); expected NaN in every component"          \
                    << (any_nonfinite(result_) ? " [weak rule holds]" : " [WEAK RULE BROKEN]")); \
-        CHECK(all_nan(result_));                                                          \
+        CHECK(all_nan(result_));                                                                \
     } while (0)
-#define EXPECT_NONFINITE(where, expr)                                                        \
-    do {                                                                                     \
-        const auto result_ = (expr);                                                         \
-        INFO(where << " -> (" << show(result_) << "); expected a non-finite component");    \
-        CHECK(any_nonfinite(result_));                                                       \
-    } while (0)
-#define EXPECT_SOME_NAN(where, expr)                                                     \
+#define EXPECT_NONFINITE(where, expr)                                                    \
     do {                                                                                 \
         const auto result_ = (expr);                                                     \
-        INFO(where << " -> (" << show(result_) << "); expected a NaN component");      \
-        CHECK(any_nan(result_));                                                         \
+        INFO(where << " -> (" << show(result_) << "); expected a non-finite component"); \
+        CHECK(any_nonfinite(result_));                                                   \
     } while (0)
-#define EXPECT_FALSE_(where, expr)                                \
-    do {                                                          \
-        const bool result_ = (expr);                              \
-        INFO(where << " -> " << result_ << "; expected false");   \
-        CHECK_FALSE(result_);                                     \
+#define EXPECT_SOME_NAN(where, expr)                                              \
+    do {                                                                          \
+        const auto result_ = (expr);                                              \
+        INFO(where << " -> (" << show(result_) << "); expected a NaN component"); \
+        CHECK(any_nan(result_));                                                  \
     } while (0)
-#define EXPECT_EMPTY(where, expr)                                                             \
-    do {                                                                                      \
-        const auto result_ = (expr);                                                          \
-        INFO(where << " -> " << (result_ ? "engaged (" + show(*result_) + ")" : "empty")      \
-                   << "; expected empty");                                                    \
-        CHECK_FALSE(result_.has_value());                                                     \
+#define EXPECT_FALSE_(where, expr)                              \
+    do {                                                        \
+        const bool result_ = (expr);                            \
+        INFO(where << " -> " << result_ << "; expected false"); \
+        CHECK_FALSE(result_);                                   \
+    } while (0)
+#define EXPECT_EMPTY(where, expr)                                                        \
+    do {                                                                                 \
+        const auto result_ = (expr);                                                     \
+        INFO(where << " -> " << (result_ ? "engaged (" + show(*result_) + ")" : "empty") \
+                   << "; expected empty");                                               \
+        CHECK_FALSE(result_.has_value());                                                \
     } while (0)
 
 // ---- the bad values and where they go ----
@@ -372,9 +372,11 @@ HOSTILE("is_unit", "quaternion") {
         EXPECT_FALSE_("is_unit(q, 0.1) with " << w, quat::is_unit(q, T(0.1)));
         EXPECT_FALSE_("is_unit(q, Inf) with " << w, quat::is_unit(q, inf));
     });
-    for_each_bad<T>("q", quaternion<T>::identity(), [&](const quaternion<T>& q, const std::string& w) {
-        EXPECT_FALSE_("is_unit(identity with bad component, Inf) with " << w, quat::is_unit(q, inf));
-    });
+    for_each_bad<T>("q", quaternion<T>::identity(),
+                    [&](const quaternion<T>& q, const std::string& w) {
+                        EXPECT_FALSE_("is_unit(identity with bad component, Inf) with " << w,
+                                      quat::is_unit(q, inf));
+                    });
     EXPECT_FALSE_("is_unit(q, NaN) [silent doc]",
                   quat::is_unit(g.q, std::numeric_limits<T>::quiet_NaN()));
 }
@@ -459,7 +461,8 @@ HOSTILE("axis_angle conversions", "conversions") {
     using T = TestType;
     const good<T> g;
     for_each_bad<T>("aa", g.aa, [&](const axis_angle<T>& aa, const std::string& w) {
-        EXPECT_NONFINITE("to_quaternion(axis_angle) [silent doc] with " << w, quat::to_quaternion(aa));
+        EXPECT_NONFINITE("to_quaternion(axis_angle) [silent doc] with " << w,
+                         quat::to_quaternion(aa));
         EXPECT_NONFINITE("to_matrix(axis_angle) [silent doc] with " << w, quat::to_matrix(aa));
         EXPECT_EMPTY("try_to_quaternion(axis_angle) with " << w, quat::try_to_quaternion(aa));
     });
@@ -480,7 +483,7 @@ HOSTILE("to_rotation_vector", "conversions") {
     for (const quaternion<T>& base : {g.q, g.q3, quaternion<T>::identity()})
         for_each_bad<T>("q", base, [&](const quaternion<T>& q, const std::string& w) {
             EXPECT_NONFINITE("to_rotation_vector(q) [silent doc] with " << w,
-                           quat::to_rotation_vector(q));
+                             quat::to_rotation_vector(q));
         });
 }
 
@@ -500,7 +503,7 @@ HOSTILE("from_mrp and from_rotation_vector", "conversions") {
         for_each_bad<T>("p", base, [&](const vec3<T>& p, const std::string& w) {
             EXPECT_ALL_NAN("from_mrp(p) (doc: NaN) with " << w, quat::from_mrp(p));
             EXPECT_NONFINITE("from_rotation_vector(v) [silent doc] with " << w,
-                           quat::from_rotation_vector(p));
+                             quat::from_rotation_vector(p));
         });
 }
 
@@ -512,19 +515,20 @@ void check_euler_convention(const good<T>& g, const char* convention) {
     const euler<T, S, F> e{T(0.3), T(-0.4), T(0.2)};
     for_each_bad<T>("e", e, [&](const euler<T, S, F>& bad, const std::string& w) {
         EXPECT_NONFINITE(convention << " to_quaternion(e) [silent doc] with " << w,
-                       quat::to_quaternion(bad));
-        EXPECT_NONFINITE(convention << " to_matrix(e) [silent doc] with " << w, quat::to_matrix(bad));
+                         quat::to_quaternion(bad));
+        EXPECT_NONFINITE(convention << " to_matrix(e) [silent doc] with " << w,
+                         quat::to_matrix(bad));
         EXPECT_NONFINITE(convention << " to_axis_angle(e) [silent doc] with " << w,
-                       quat::to_axis_angle(bad));
+                         quat::to_axis_angle(bad));
         EXPECT_NONFINITE(convention << " to_euler<zxz>(e) [silent doc] with " << w,
-                       (quat::to_euler<sequence::zxz, frame::intrinsic>(bad)));
+                         (quat::to_euler<sequence::zxz, frame::intrinsic>(bad)));
     });
     for (const quaternion<T>& base : {g.q, quaternion<T>::identity()})
         for_each_bad<T>("q", base, [&](const quaternion<T>& q, const std::string& w) {
             EXPECT_NONFINITE(convention << " extract_euler(q).angles [silent doc] with " << w,
-                           (quat::extract_euler<S, F>(q).angles));
+                             (quat::extract_euler<S, F>(q).angles));
             EXPECT_NONFINITE(convention << " to_euler(q) [silent doc] with " << w,
-                           (quat::to_euler<S, F>(q)));
+                             (quat::to_euler<S, F>(q)));
             EXPECT_ALL_NAN(convention << " to_euler(q, previous) (doc: NaN) with " << w,
                            (quat::to_euler<S, F>(q, e)));
         });
@@ -534,11 +538,11 @@ void check_euler_convention(const good<T>& g, const char* convention) {
     });
     for_each_bad<T>("m", g.m, [&](const rotation_matrix<T>& m, const std::string& w) {
         EXPECT_NONFINITE(convention << " to_euler(m) [silent doc] with " << w,
-                       (quat::to_euler<S, F>(m)));
+                         (quat::to_euler<S, F>(m)));
     });
     for_each_bad<T>("aa", g.aa, [&](const axis_angle<T>& aa, const std::string& w) {
         EXPECT_NONFINITE(convention << " to_euler(axis_angle) [silent doc] with " << w,
-                       (quat::to_euler<S, F>(aa)));
+                         (quat::to_euler<S, F>(aa)));
     });
 }
 }  // namespace
@@ -614,9 +618,10 @@ HOSTILE("rotate_towards", "interpolation") {
     // Documented: an infinite max_angle gives `to`; a negative one (-Inf too) counts as 0: `from`.
     CHECK(quat::rotate_towards(g.q, g.q2, std::numeric_limits<T>::infinity()) == g.q2);
     {
-        const quaternion<T> r = quat::rotate_towards(g.q, g.q2, -std::numeric_limits<T>::infinity());
-        INFO("rotate_towards(from, to, -Inf) -> (" << show(r) << "); expected from = ("
-                                                   << show(g.q) << ")");
+        const quaternion<T> r =
+            quat::rotate_towards(g.q, g.q2, -std::numeric_limits<T>::infinity());
+        INFO("rotate_towards(from, to, -Inf) -> (" << show(r) << "); expected from = (" << show(g.q)
+                                                   << ")");
         CHECK(quat::angle_between(r, g.q) <= T(16) * std::numeric_limits<T>::epsilon());
     }
 }
@@ -629,19 +634,19 @@ HOSTILE("corrected_nlerp and slerp_fast", "fast_slerp") {
     for (const T t : {T(0), T(0.3), T(1)})
         for_each_bad<T>("a", g.q, [&](const quaternion<T>& a, const std::string& w) {
             EXPECT_NONFINITE("corrected_nlerp(a, b, " << t << ") [silent doc] with " << w,
-                           quat::corrected_nlerp(a, g.q2, t));
+                             quat::corrected_nlerp(a, g.q2, t));
             EXPECT_NONFINITE("corrected_nlerp(b, a, " << t << ") [silent doc] with " << w,
-                           quat::corrected_nlerp(g.q2, a, t));
+                             quat::corrected_nlerp(g.q2, a, t));
             EXPECT_NONFINITE("slerp_fast(a, b, " << t << ") [silent doc] with " << w,
-                           quat::slerp_fast(a, g.q2, t));
+                             quat::slerp_fast(a, g.q2, t));
             EXPECT_NONFINITE("slerp_fast(b, a, " << t << ") [silent doc] with " << w,
-                           quat::slerp_fast(g.q2, a, t));
+                             quat::slerp_fast(g.q2, a, t));
         });
     for_each_bad<T>("t", g.t, [&](T t, const std::string& w) {
         EXPECT_NONFINITE("corrected_nlerp(a, b, t) [silent doc] with " << w,
-                       quat::corrected_nlerp(g.q, g.q2, t));
+                         quat::corrected_nlerp(g.q, g.q2, t));
         EXPECT_NONFINITE("slerp_fast(a, b, t) [silent doc] with " << w,
-                       quat::slerp_fast(g.q, g.q2, t));
+                         quat::slerp_fast(g.q, g.q2, t));
     });
 }
 
@@ -783,7 +788,8 @@ HOSTILE("mean", "mean") {
         });
     // Weights: NaN and +Inf only (a negative weight, -Inf too, is a debug-checked precondition).
     for (std::size_t k = 0; k < base.size(); ++k)
-        for (const T bad : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity()}) {
+        for (const T bad :
+             {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity()}) {
             std::vector<T> weights{T(1), T(2), T(0.5), T(1)};
             weights[k] = bad;
             EXPECT_ALL_NAN("weighted mean, weights[" << k << "]=" << bad << " (doc: NaN)",
@@ -846,11 +852,14 @@ HOSTILE("align_vectors", "align_vectors") {
                                quat::align_vectors(targets, sources, w));
         check_bad_alignment<T>("align_vectors_with_sensitivity [silent doc] " + at + "=nan",
                                quat::align_vectors_with_sensitivity(targets, sources, w));
-        check_bad_alignment<T>("weighted align_vectors (doc: NaN result) two infinite weights at " + at,
-                               quat::align_vectors(targets, sources, two_inf));
-        check_bad_alignment<T>("weighted align_vectors (doc: NaN result) infinite weight on a zero "
-                               "source at " + at,
-                               quat::align_vectors(targets, zero_source, one_inf));
+        check_bad_alignment<T>(
+            "weighted align_vectors (doc: NaN result) two infinite weights at " + at,
+            quat::align_vectors(targets, sources, two_inf));
+        check_bad_alignment<T>(
+            "weighted align_vectors (doc: NaN result) infinite weight on a zero "
+            "source at " +
+                at,
+            quat::align_vectors(targets, zero_source, one_inf));
         const quat::alignment<T> primary = quat::align_vectors(targets, sources, one_inf);
         INFO("weighted align_vectors, one infinite weight (doc: the primary pair) at "
              << at << " -> rotation (" << show(primary.rotation) << "), rssd " << primary.rssd
@@ -868,23 +877,26 @@ HOSTILE("squad", "squad") {
     const good<T> g;
     const quaternion<T> keys[4] = {g.q, g.q2, g.q3, g.q4};
     for (int k = 0; k < 3; ++k)
-        for_each_bad<T>("squad_control arg", keys[k], [&](const quaternion<T>& q, const std::string& w) {
-            quaternion<T> a[3] = {keys[0], keys[1], keys[2]};
-            a[k] = q;
-            EXPECT_ALL_NAN("squad_control arg " << k << " (doc: NaN) with " << w,
-                           quat::squad_control(a[0], a[1], a[2]));
-        });
+        for_each_bad<T>("squad_control arg", keys[k],
+                        [&](const quaternion<T>& q, const std::string& w) {
+                            quaternion<T> a[3] = {keys[0], keys[1], keys[2]};
+                            a[k] = q;
+                            EXPECT_ALL_NAN("squad_control arg " << k << " (doc: NaN) with " << w,
+                                           quat::squad_control(a[0], a[1], a[2]));
+                        });
     const quaternion<T> a1 = quat::squad_control(keys[0], keys[1], keys[2]);
     const quaternion<T> a2 = quat::squad_control(keys[1], keys[2], keys[3]);
     const quaternion<T> args[4] = {keys[1], a1, a2, keys[2]};
     for (const T t : {T(0), T(0.3), T(1)})
         for (int k = 0; k < 4; ++k)
-            for_each_bad<T>("squad arg", args[k], [&](const quaternion<T>& q, const std::string& w) {
-                quaternion<T> a[4] = {args[0], args[1], args[2], args[3]};
-                a[k] = q;
-                EXPECT_NONFINITE("squad arg " << k << ", t=" << t << " (doc: non-finite) with " << w,
-                                 quat::squad(a[0], a[1], a[2], a[3], t));
-            });
+            for_each_bad<T>(
+                "squad arg", args[k], [&](const quaternion<T>& q, const std::string& w) {
+                    quaternion<T> a[4] = {args[0], args[1], args[2], args[3]};
+                    a[k] = q;
+                    EXPECT_NONFINITE(
+                        "squad arg " << k << ", t=" << t << " (doc: non-finite) with " << w,
+                        quat::squad(a[0], a[1], a[2], a[3], t));
+                });
     for_each_bad<T>("t", g.t, [&](T t, const std::string& w) {
         EXPECT_ALL_NAN("squad(q1, a1, a2, q2, t) (doc: NaN; Inf t is outside [0, 1]) with " << w,
                        quat::squad(args[0], args[1], args[2], args[3], t));
@@ -898,7 +910,8 @@ HOSTILE("keyframe_slerp", "keyframe_slerp") {
     const std::vector<quaternion<T>> keys{g.q, g.q2, g.q3, g.q4};
     for (const T t : {T(-1), T(0), T(0.5), T(1), T(3), T(4), T(9)})
         for (std::size_t k = 0; k < keys.size(); ++k)
-            for_each_bad<T>("rotations[k]", keys[k], [&](const quaternion<T>& q, const std::string& w) {
+            for_each_bad<
+                T>("rotations[k]", keys[k], [&](const quaternion<T>& q, const std::string& w) {
                 std::vector<quaternion<T>> r = keys;
                 r[k] = q;
                 const quaternion<T> result = quat::keyframe_slerp(times, r, t);
@@ -908,15 +921,16 @@ HOSTILE("keyframe_slerp", "keyframe_slerp") {
                 bool at_key = false;
                 for (const T time : times) at_key = at_key || time == t;
                 const bool used =
-                    at_key ? times[k] == t
-                           : (t < times[0] && k == 0) || (t > times.back() && k + 1 == keys.size()) ||
-                                 (t > times[0] && t < times.back() &&
-                                  ((k > 0 && times[k - 1] < t && t < times[k]) ||
-                                   (k + 1 < keys.size() && times[k] < t && t < times[k + 1])));
+                    at_key
+                        ? times[k] == t
+                        : (t < times[0] && k == 0) || (t > times.back() && k + 1 == keys.size()) ||
+                              (t > times[0] && t < times.back() &&
+                               ((k > 0 && times[k - 1] < t && t < times[k]) ||
+                                (k + 1 < keys.size() && times[k] < t && t < times[k + 1])));
                 if (used)
-                    EXPECT_NONFINITE("keyframe_slerp(t=" << t << ") k=" << k
-                                                         << " (doc: non-finite) with " << w,
-                                     result);
+                    EXPECT_NONFINITE(
+                        "keyframe_slerp(t=" << t << ") k=" << k << " (doc: non-finite) with " << w,
+                        result);
             });
     for_each_bad<T>("t", g.t, [&](T t, const std::string& w) {
         if (std::isnan(t))
@@ -989,7 +1003,7 @@ HOSTILE("dual_quaternion functions", "dual_quaternion") {
         const dual_quaternion<T> dq{q, g.dq.dual};
         EXPECT_NONFINITE("translation_of(dq) [silent doc] with " << w, quat::translation_of(dq));
         EXPECT_NONFINITE("transform_vector(dq, v) [silent doc] with " << w,
-                       quat::transform_vector(dq, g.v2));
+                         quat::transform_vector(dq, g.v2));
     });
     for_each_bad<T>("dq.dual", g.dq.dual, [&](const quaternion<T>& q, const std::string& w) {
         const dual_quaternion<T> dq{g.dq.real, q};
@@ -998,7 +1012,7 @@ HOSTILE("dual_quaternion functions", "dual_quaternion") {
     for_each_bad<T>("p", g.v2, [&](const vec3<T>& p, const std::string& w) {
         EXPECT_NONFINITE("transform(dq, p) [silent doc] with " << w, quat::transform(g.dq, p));
         EXPECT_NONFINITE("transform_vector(dq, v) [silent doc] with " << w,
-                       quat::transform_vector(g.dq, p));
+                         quat::transform_vector(g.dq, p));
     });
     const quat::screw<T> s = quat::to_screw(g.dq);
     for_each_bad<T>("screw", s, [&](const quat::screw<T>& bad, const std::string& w) {
@@ -1030,7 +1044,8 @@ HOSTILE("homogeneous_matrix functions", "homogeneous_matrix") {
         EXPECT_NONFINITE("h * h2 with " << w, h * h2);
         EXPECT_NONFINITE("h2 * h with " << w, h2 * h);
         EXPECT_NONFINITE("transform(h, p) [silent doc] with " << w, quat::transform(h, g.v2));
-        EXPECT_NONFINITE("to_dual_quaternion(h) [silent doc] with " << w, quat::to_dual_quaternion(h));
+        EXPECT_NONFINITE("to_dual_quaternion(h) [silent doc] with " << w,
+                         quat::to_dual_quaternion(h));
         EXPECT_EMPTY("try_to_dual_quaternion(h) with " << w, quat::try_to_dual_quaternion(h));
     });
     // The last row: not read by transform (documented), but try_to_dual_quaternion checks it.
@@ -1048,13 +1063,13 @@ HOSTILE("homogeneous_matrix functions", "homogeneous_matrix") {
             homogeneous_matrix<T> h = g.h;
             h.elements[i / 3][i % 3] = bad;
             EXPECT_NONFINITE("transform_vector(h, v) [silent doc] with h[" << i / 3 << "][" << i % 3
-                                                                        << "]=" << bad,
-                           quat::transform_vector(h, g.v2));
+                                                                           << "]=" << bad,
+                             quat::transform_vector(h, g.v2));
         }
     for_each_bad<T>("p", g.v2, [&](const vec3<T>& p, const std::string& w) {
         EXPECT_NONFINITE("transform(h, p) [silent doc] with " << w, quat::transform(g.h, p));
         EXPECT_NONFINITE("transform_vector(h, v) [silent doc] with " << w,
-                       quat::transform_vector(g.h, p));
+                         quat::transform_vector(g.h, p));
     });
 }
 
@@ -1070,7 +1085,7 @@ HOSTILE("blend", "blend") {
                             std::vector<dual_quaternion<T>> d = transforms;
                             d[k] = dq;
                             EXPECT_NONFINITE("blend k=" << k << " [silent doc] with " << w,
-                                           quat::blend(d, weights));
+                                             quat::blend(d, weights));
                         });
     for (std::size_t k = 0; k < weights.size(); ++k)
         for (const T bad : bad_values<T>()) {
@@ -1166,7 +1181,8 @@ HOSTILE("batch rotate and compose", "batch") {
             std::vector<quaternion<T>> f = factors;
             f[k] = q;
             EXPECT_NONFINITE("compose(factors) k=" << k << " with " << w, quat::compose(f));
-            EXPECT_NONFINITE("compose(first 5) k=0 with " << w, quat::compose(f.data(), k < 5 ? 5 : k + 1));
+            EXPECT_NONFINITE("compose(first 5) k=0 with " << w,
+                             quat::compose(f.data(), k < 5 ? 5 : k + 1));
         });
 }
 
@@ -1182,9 +1198,8 @@ HOSTILE("batch slerp", "batch") {
                 tt[k] = t;
                 std::vector<quaternion<T>> out(batch_size);
                 quat::slerp(g.q, b, tt, out);
-                check_one_bad<T>("batch slerp (b = " + show(b) + "), k=" + std::to_string(k) +
-                                     " " + w,
-                                 out, k);
+                check_one_bad<T>(
+                    "batch slerp (b = " + show(b) + "), k=" + std::to_string(k) + " " + w, out, k);
             });
     for_each_bad<T>("a", g.q, [&](const quaternion<T>& a, const std::string& w) {
         std::vector<quaternion<T>> out(batch_size);
@@ -1257,7 +1272,8 @@ HOSTILE("elementwise", "elementwise") {
             }
             std::vector<T> ox(batch_size), oy(batch_size), oz(batch_size);
             quat::rotate_each(
-                quat::soa_quaternions<const T>{qw.data(), qx.data(), qy.data(), qz.data(), batch_size},
+                quat::soa_quaternions<const T>{qw.data(), qx.data(), qy.data(), qz.data(),
+                                               batch_size},
                 quat::soa_points<const T>{px.data(), py.data(), pz.data(), batch_size},
                 quat::soa_points<T>{ox.data(), oy.data(), oz.data(), batch_size});
             std::vector<vec3<T>> soa_out;
@@ -1316,12 +1332,12 @@ bool close(const flat_t& a, const flat_t& b, T tolerance) {
     return true;
 }
 
-#define EXPECT_SAME(where, got_expr, want_expr, tolerance)                                   \
-    do {                                                                                     \
-        const auto got_ = (got_expr);                                                        \
-        const auto want_ = (want_expr);                                                      \
-        INFO(where << " -> (" << show(got_) << "); expected (" << show(want_) << ")");       \
-        CHECK(close(flatten(got_), flatten(want_), tolerance));                              \
+#define EXPECT_SAME(where, got_expr, want_expr, tolerance)                             \
+    do {                                                                               \
+        const auto got_ = (got_expr);                                                  \
+        const auto want_ = (want_expr);                                                \
+        INFO(where << " -> (" << show(got_) << "); expected (" << show(want_) << ")"); \
+        CHECK(close(flatten(got_), flatten(want_), tolerance));                        \
     } while (0)
 }  // namespace
 
@@ -1329,7 +1345,7 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, vec3 and quaternion", "[hostile
                    float, double) {
     using T = TestType;
     const T tol = T(16) * std::numeric_limits<T>::epsilon();
-    const vec3<T> d{T(4), T(-2), T(4)};  // |d| = 6
+    const vec3<T> d{T(4), T(-2), T(4)};               // |d| = 6
     const quaternion<T> dq{T(4), T(1), T(-2), T(2)};  // |dq| = 5
     const vec3<T> unit_v = d / T(6);
     const quaternion<T> unit_q = dq / T(5);
@@ -1361,8 +1377,10 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, vec3 and quaternion", "[hostile
             T(1) / (T(5) * s.factor) <= std::numeric_limits<T>::max())
             EXPECT_SAME("inverse(q) * 5 scale" << at, quat::inverse(q) * (T(5) * s.factor),
                         quat::conjugate(unit_q), tol);
-        EXPECT_SAME("to_axis_angle(q)" << at, quat::to_axis_angle(q), quat::to_axis_angle(unit_q), tol);
-        EXPECT_SAME("to_axis_angle(-q)" << at, quat::to_axis_angle(-q), quat::to_axis_angle(unit_q), tol);
+        EXPECT_SAME("to_axis_angle(q)" << at, quat::to_axis_angle(q), quat::to_axis_angle(unit_q),
+                    tol);
+        EXPECT_SAME("to_axis_angle(-q)" << at, quat::to_axis_angle(-q), quat::to_axis_angle(unit_q),
+                    tol);
         EXPECT_SAME("to_rotation_vector(q)" << at, quat::to_rotation_vector(q),
                     quat::to_rotation_vector(unit_q), tol);
         EXPECT_SAME("to_mrp(q)" << at, quat::to_mrp(q), quat::to_mrp(unit_q), tol);
@@ -1371,7 +1389,8 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, vec3 and quaternion", "[hostile
         EXPECT_SAME("to_euler<zxz>(q)" << at, quat::to_euler<sequence::zxz>(q),
                     quat::to_euler<sequence::zxz>(unit_q), tol);
         const euler<T> previous{T(0.1), T(0.2), T(0.3)};
-        EXPECT_SAME("to_euler<zyx>(q, previous)" << at, (quat::to_euler<sequence::zyx>(q, previous)),
+        EXPECT_SAME("to_euler<zyx>(q, previous)" << at,
+                    (quat::to_euler<sequence::zyx>(q, previous)),
                     (quat::to_euler<sequence::zyx>(unit_q, previous)), tol);
         // A pure rotation about an axis (w = 0 and w = 0-ish), scaled.
         const quaternion<T> half_turn{T(0), T(4), T(0), T(0)};
@@ -1385,8 +1404,9 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, vec3 and quaternion", "[hostile
             const auto r = quat::try_to_quaternion(aa);
             INFO("try_to_quaternion(axis_angle with axis scaled)" << at);
             CHECK(r.has_value());
-            if (r) EXPECT_SAME("try_to_quaternion(axis_angle)" << at, *r,
-                        quat::to_quaternion(axis_angle<T>{unit_v, T(0.7)}), tol);
+            if (r)
+                EXPECT_SAME("try_to_quaternion(axis_angle)" << at, *r,
+                            quat::to_quaternion(axis_angle<T>{unit_v, T(0.7)}), tol);
         }
         {
             const quaternion<T> r = quat::from_mrp(v);
@@ -1418,7 +1438,9 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, align and swing_twist", "[hosti
                 const auto r = quat::try_rotation_between(from * s.factor, to * s2.factor);
                 INFO("try_rotation_between" << at);
                 CHECK(r.has_value());
-                if (r) EXPECT_SAME("try_rotation_between" << at, *r, quat::rotation_between(from, to), tol);
+                if (r)
+                    EXPECT_SAME("try_rotation_between" << at, *r, quat::rotation_between(from, to),
+                                tol);
             }
             EXPECT_SAME("look_rotation" << at, quat::look_rotation(from * s.factor, up * s2.factor),
                         quat::look_rotation(from, up), tol);
@@ -1426,7 +1448,8 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, align and swing_twist", "[hosti
                 const auto r = quat::try_look_rotation(from * s.factor, up * s2.factor);
                 INFO("try_look_rotation" << at);
                 CHECK(r.has_value());
-                if (r) EXPECT_SAME("try_look_rotation" << at, *r, quat::look_rotation(from, up), tol);
+                if (r)
+                    EXPECT_SAME("try_look_rotation" << at, *r, quat::look_rotation(from, up), tol);
             }
         }
     for (const auto& s : extreme_scales<T>()) {
@@ -1443,10 +1466,10 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, align and swing_twist", "[hosti
 TEST_CASE("hostile: extreme magnitudes, the named cases", "[hostile][magnitude]") {
     const double tol = 16 * std::numeric_limits<double>::epsilon();
     const double h = std::sqrt(0.5);
-    EXPECT_SAME("normalize(vec3{1.3e308, 1.3e308, 0})", quat::normalize(vec3<double>{1.3e308, 1.3e308, 0}),
-                (vec3<double>{h, h, 0}), tol);
-    EXPECT_SAME("normalize(vec3{5e-324, 5e-324, 0})", quat::normalize(vec3<double>{5e-324, 5e-324, 0}),
-                (vec3<double>{h, h, 0}), tol);
+    EXPECT_SAME("normalize(vec3{1.3e308, 1.3e308, 0})",
+                quat::normalize(vec3<double>{1.3e308, 1.3e308, 0}), (vec3<double>{h, h, 0}), tol);
+    EXPECT_SAME("normalize(vec3{5e-324, 5e-324, 0})",
+                quat::normalize(vec3<double>{5e-324, 5e-324, 0}), (vec3<double>{h, h, 0}), tol);
     EXPECT_SAME("normalize(vec3{max, max, max})",
                 quat::normalize(vec3<double>{std::numeric_limits<double>::max(),
                                              std::numeric_limits<double>::max(),
@@ -1461,8 +1484,8 @@ TEST_CASE("hostile: extreme magnitudes, the named cases", "[hostile][magnitude]"
     {
         const quaternion<double> q =
             quat::rotation_between(vec3<double>{1, 0, 0}, vec3<double>{-1, 1e-322, 1e-322});
-        INFO("rotation_between((1,0,0), (-1, 1e-322, 1e-322)) -> (" << show(q) << "), |q|^2 - 1 = "
-                                                                   << quat::squared_norm(q) - 1);
+        INFO("rotation_between((1,0,0), (-1, 1e-322, 1e-322)) -> ("
+             << show(q) << "), |q|^2 - 1 = " << quat::squared_norm(q) - 1);
         CHECK(std::fabs(quat::squared_norm(q) - 1) <= 4 * std::numeric_limits<double>::epsilon());
     }
     {
@@ -1479,7 +1502,8 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, nearest_rotation and rotation_s
     using L = std::numeric_limits<T>;
     const T tol = T(64) * L::epsilon();
     const good<T> g;
-    for (const T factor : {std::ldexp(T(1), L::min_exponent + 4), std::ldexp(T(1), L::max_exponent - 2)}) {
+    for (const T factor :
+         {std::ldexp(T(1), L::min_exponent + 4), std::ldexp(T(1), L::max_exponent - 2)}) {
         rotation_matrix<T> m = g.m;
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) m.elements[i][j] *= factor;
@@ -1496,13 +1520,14 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, nearest_rotation and rotation_s
     const std::vector<quaternion<T>> keys{g.q, k1, k2, k2 * quat::rotation_z(T(0.9))};
     const quat::rotation_spline<T> reference(times, keys);
     for (const auto& s : extreme_scales<T>()) {
-        if (s.factor < L::min()) continue;  // a unit quaternion times a subnormal loses its direction
+        if (s.factor < L::min())
+            continue;  // a unit quaternion times a subnormal loses its direction
         std::vector<quaternion<T>> scaled_keys;
         for (const quaternion<T>& q : keys) scaled_keys.push_back(q * s.factor);
         const quat::rotation_spline<T> spline(times, scaled_keys);
         for (const T t : {T(0), T(0.7), T(2), T(4)})
-            EXPECT_SAME("rotation_spline with keyframes scaled " << s.name << " at t=" << t, spline(t),
-                        reference(t), tol);
+            EXPECT_SAME("rotation_spline with keyframes scaled " << s.name << " at t=" << t,
+                        spline(t), reference(t), tol);
         const auto made = quat::rotation_spline<T>::try_make(times, scaled_keys);
         INFO("rotation_spline::try_make with keyframes scaled " << s.name);
         CHECK(made.has_value());

@@ -220,9 +220,9 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::align_vectors(sources, targets, std::vector<T>{T(1), T(2)}).rotation));
         // One infinite weight is a primary pair, aligned exactly (as scipy does); two, or a NaN
         // weight, give NaN.
-        CHECK(bad(quat::align_vectors(sources, sources,
-                                      std::vector<T>{std::abs(value), std::abs(value)})
-                      .rssd));
+        CHECK(bad(
+            quat::align_vectors(sources, sources, std::vector<T>{std::abs(value), std::abs(value)})
+                .rssd));
         CHECK(bad(quat::align_vectors_with_sensitivity(targets, sources, std::vector<T>{T(1), T(1)})
                       .rotation));
 

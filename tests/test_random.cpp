@@ -170,7 +170,8 @@ struct replay_generator {
 
 }  // namespace
 
-TEST_CASE("random_rotation<float> keeps w >= 0 at the ends of the third uniform", "[random][edge]") {
+TEST_CASE("random_rotation<float> keeps w >= 0 at the ends of the third uniform",
+          "[random][edge]") {
     // u3 = 2^-31 (the case) put theta2 just past -pi/2 with float's rounded pi: w < 0.
     for (std::uint32_t g3 : {0u, 1u, 2u, 3u, 255u, 0xffffffffu, 0xfffffffeu, 0xffffff00u}) {
         const std::uint32_t values[3] = {0x80000000u, 0x12345678u, g3};

@@ -129,8 +129,8 @@ int run(const char* name) {
     if (std::strcmp(name, "transform_vector") == 0)
         sink = quat::transform_vector(quat::dual_quaterniond{not_unit, quatd{0, 0, 0, 0}}, v).x;
     if (std::strcmp(name, "homogeneous_to_dual_quaternion") == 0) {
-        quat::homogeneous_matrix<double> sheared = quat::to_homogeneous(
-            quat::to_dual_quaternion(quatd::identity(), v));
+        quat::homogeneous_matrix<double> sheared =
+            quat::to_homogeneous(quat::to_dual_quaternion(quatd::identity(), v));
         sheared(0, 1) = 0.5;
         sink = quat::to_dual_quaternion(sheared).real.w;
     }
@@ -174,8 +174,8 @@ int run(const char* name) {
                    std::vector<double>{0, 1, std::numeric_limits<double>::infinity()}, three)(0.5)
                    .w;
     if (std::strcmp(name, "squad") == 0)  // before slerp's check inside, which names slerp
-        sink = quat::squad(quatd::identity(), not_unit, quatd::identity(), quatd::identity(), 0.5)
-                   .w;
+        sink =
+            quat::squad(quatd::identity(), not_unit, quatd::identity(), quatd::identity(), 0.5).w;
     if (std::strcmp(name, "euler_index") == 0) {
         const quat::euler<double> e{0.1, 0.2, 0.3};
         sink = e[static_cast<std::size_t>(3 + sink)];

@@ -21,11 +21,11 @@
 
 // The call being made, for the handler's message.
 static const char* quat_try_last_call = "";
-#define QUAT_ASSERT(condition, message)                                                      \
-    ((condition) ? void(0)                                                                   \
-                 : (std::fprintf(stdout, "QUAT_ASSERT fired in %s: %s\n", quat_try_last_call, \
-                                 message),                                                   \
-                    std::fflush(stdout), std::abort()))
+#define QUAT_ASSERT(condition, message)                                                         \
+    ((condition)                                                                                \
+         ? void(0)                                                                              \
+         : (std::fprintf(stdout, "QUAT_ASSERT fired in %s: %s\n", quat_try_last_call, message), \
+            std::fflush(stdout), std::abort()))
 
 #include <quat/quat.hpp>
 
@@ -162,9 +162,9 @@ std::string str(const rotation_matrix<T>& m) {
 template <class T>
 std::vector<T> scalars() {
     using L = std::numeric_limits<T>;
-    return {L::quiet_NaN(), L::infinity(), -L::infinity(), T(0),        -T(0),
-            L::denorm_min(), -L::denorm_min(), L::min(),     T(1e-30),   T(1e30),
-            L::max(),        L::lowest(),      T(1),         T(-1),      T(2)};
+    return {L::quiet_NaN(),  L::infinity(),    -L::infinity(), T(0),     -T(0),
+            L::denorm_min(), -L::denorm_min(), L::min(),       T(1e-30), T(1e30),
+            L::max(),        L::lowest(),      T(1),           T(-1),    T(2)};
 }
 
 template <class T>
@@ -236,9 +236,12 @@ std::vector<rotation_matrix<T>> matrices() {
         out.push_back(all);
         out.push_back(scaled);
     }
-    out.push_back(rotation_matrix<T>{{{T(-1), T(0), T(0)}, {T(0), T(-1), T(0)}, {T(0), T(0), T(-1)}}});
-    out.push_back(rotation_matrix<T>{{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(-1)}}});
-    out.push_back(rotation_matrix<T>{{{T(-1), T(0), T(0)}, {T(0), T(-1), T(0)}, {T(0), T(0), T(1)}}});
+    out.push_back(
+        rotation_matrix<T>{{{T(-1), T(0), T(0)}, {T(0), T(-1), T(0)}, {T(0), T(0), T(-1)}}});
+    out.push_back(
+        rotation_matrix<T>{{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(-1)}}});
+    out.push_back(
+        rotation_matrix<T>{{{T(-1), T(0), T(0)}, {T(0), T(-1), T(0)}, {T(0), T(0), T(1)}}});
     out.push_back(base);
     return out;
 }
@@ -251,9 +254,11 @@ void quaternion_cases() {
     for (const quaternion<T>& q : quaternions<T>())
         CHECK_TRY(quat::try_normalize(q), "try_normalize" + str(q));
     current = "try_inverse";
-    for (const quaternion<T>& q : quaternions<T>()) CHECK_TRY_NOT_ROTATION(quat::try_inverse(q), "try_inverse" + str(q));
+    for (const quaternion<T>& q : quaternions<T>())
+        CHECK_TRY_NOT_ROTATION(quat::try_inverse(q), "try_inverse" + str(q));
     current = "try_normalize(vec3)";
-    for (const vec3<T>& v : vectors<T>()) CHECK_TRY(quat::try_normalize(v), "try_normalize" + str(v));
+    for (const vec3<T>& v : vectors<T>())
+        CHECK_TRY(quat::try_normalize(v), "try_normalize" + str(v));
 }
 
 template <class T>
@@ -262,13 +267,14 @@ void to_quaternion_cases() {
     for (const rotation_matrix<T>& m : matrices<T>()) {
         CHECK_TRY(quat::try_to_quaternion(m), "try_to_quaternion(" + str(m) + ")");
         for (const T tolerance : scalars<T>())
-            CHECK_TRY(quat::try_to_quaternion(m, tolerance), "try_to_quaternion(" + str(m) + ", " + str(tolerance) + ")");
+            CHECK_TRY(quat::try_to_quaternion(m, tolerance),
+                      "try_to_quaternion(" + str(m) + ", " + str(tolerance) + ")");
     }
     current = "try_to_quaternion(axis_angle)";
     for (const vec3<T>& axis : vectors<T>())
         for (const T angle : scalars<T>())
             CHECK_TRY(quat::try_to_quaternion(axis_angle<T>{axis, angle}),
-                  "try_to_quaternion(axis " + str(axis) + ", angle " + str(angle) + ")");
+                      "try_to_quaternion(axis " + str(axis) + ", angle " + str(angle) + ")");
 }
 
 template <class T>
@@ -279,9 +285,9 @@ void align_cases() {
         for (const vec3<T>& b : v)
             CHECK_TRY(quat::try_rotation_between(a, b), "try_rotation_between" + str(a) + str(b));
     CHECK_TRY(quat::try_rotation_between(vec3<T>{T(1), T(0), T(0)},
-                                     vec3<T>{T(-1), std::numeric_limits<T>::denorm_min(),
-                                             std::numeric_limits<T>::denorm_min()}),
-          "try_rotation_between((1,0,0), (-1, denorm_min, denorm_min))");
+                                         vec3<T>{T(-1), std::numeric_limits<T>::denorm_min(),
+                                                 std::numeric_limits<T>::denorm_min()}),
+              "try_rotation_between((1,0,0), (-1, denorm_min, denorm_min))");
     current = "try_look_rotation";
     for (const vec3<T>& a : v)
         for (const vec3<T>& b : v)
@@ -302,8 +308,10 @@ void dual_quaternion_cases() {
     const quaternion<T> real = quat::normalize(quaternion<T>{T(0.9), T(0.1), T(-0.3), T(0.2)});
     const quaternion<T> dual{T(0.1), T(0.2), T(-0.3), T(0.05)};
     for (const quaternion<T>& p : q) {
-        CHECK_TRY(quat::try_normalize(dual_quaternion<T>{p, dual}), "try_normalize(dq real " + str(p) + ")");
-        CHECK_TRY(quat::try_normalize(dual_quaternion<T>{real, p}), "try_normalize(dq dual " + str(p) + ")");
+        CHECK_TRY(quat::try_normalize(dual_quaternion<T>{p, dual}),
+                  "try_normalize(dq real " + str(p) + ")");
+        CHECK_TRY(quat::try_normalize(dual_quaternion<T>{real, p}),
+                  "try_normalize(dq dual " + str(p) + ")");
     }
     current = "try_to_dual_quaternion";
     const homogeneous_matrix<T> base = quat::to_homogeneous(dual_quaternion<T>{real, dual});
@@ -311,10 +319,12 @@ void dual_quaternion_cases() {
         for (int i = 0; i < 16; ++i) {
             homogeneous_matrix<T> h = base;
             h.elements[i / 4][i % 4] = s;
-            CHECK_TRY(quat::try_to_dual_quaternion(h), "try_to_dual_quaternion(h[" + std::to_string(i / 4) +
-                                                       "][" + std::to_string(i % 4) + "] = " + str(s) + ")");
+            CHECK_TRY(quat::try_to_dual_quaternion(h),
+                      "try_to_dual_quaternion(h[" + std::to_string(i / 4) + "][" +
+                          std::to_string(i % 4) + "] = " + str(s) + ")");
         }
-        CHECK_TRY(quat::try_to_dual_quaternion(base, s), "try_to_dual_quaternion(h, tolerance " + str(s) + ")");
+        CHECK_TRY(quat::try_to_dual_quaternion(base, s),
+                  "try_to_dual_quaternion(h, tolerance " + str(s) + ")");
         homogeneous_matrix<T> all{};
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 4; ++c) all.elements[r][c] = s;
@@ -328,7 +338,8 @@ void swing_twist_cases() {
     const std::vector<vec3<T>> v = vectors<T>();
     for (const quaternion<T>& q : quaternions<T>())
         for (const vec3<T>& axis : v)
-            CHECK_TRY(quat::try_swing_twist(q, axis), "try_swing_twist(" + str(q) + ", " + str(axis) + ")");
+            CHECK_TRY(quat::try_swing_twist(q, axis),
+                      "try_swing_twist(" + str(q) + ", " + str(axis) + ")");
 }
 
 template <class T>
@@ -346,20 +357,23 @@ std::vector<std::vector<quaternion<T>>> rotation_sets() {
 template <class T>
 void mean_cases() {
     current = "try_mean";
-    for (const auto& r : rotation_sets<T>()) CHECK_TRY(quat::try_mean(r), "try_mean(" + std::to_string(r.size()) + " rotations)");
+    for (const auto& r : rotation_sets<T>())
+        CHECK_TRY(quat::try_mean(r), "try_mean(" + std::to_string(r.size()) + " rotations)");
     current = "try_mean(weights)";
     for (const auto& r : rotation_sets<T>())
         for (const T w : scalars<T>()) {
             std::vector<T> weights(r.size(), T(1));
             if (!weights.empty()) weights[weights.size() / 2] = w;
-            CHECK_TRY(quat::try_mean(r, weights), "try_mean(" + std::to_string(r.size()) + " rotations, weight " + str(w) + ")");
+            CHECK_TRY(quat::try_mean(r, weights), "try_mean(" + std::to_string(r.size()) +
+                                                      " rotations, weight " + str(w) + ")");
             const std::vector<T> all(r.size(), w);
             CHECK_TRY(quat::try_mean(r, all), "try_mean(all weights " + str(w) + ")");
         }
     current = "try_mean(weights, mismatched sizes)";
     for (const auto& r : rotation_sets<T>()) {
         const std::vector<T> longer(r.size() + 1, T(1));
-        CHECK_TRY(quat::try_mean(r, longer), "try_mean(" + std::to_string(r.size()) + " rotations, one weight more)");
+        CHECK_TRY(quat::try_mean(r, longer),
+                  "try_mean(" + std::to_string(r.size()) + " rotations, one weight more)");
         if (!r.empty()) {
             const std::vector<T> shorter(r.size() - 1, T(1));
             CHECK_TRY(quat::try_mean(r, shorter), "try_mean(one weight fewer)");
@@ -376,9 +390,18 @@ void rotation_spline_cases() {
     const std::vector<quaternion<T>> three{a, b, a};
     current = "rotation_spline::try_make(times)";
     const std::vector<std::vector<T>> time_sets{
-        {},          {T(0)},         {T(0), T(1)},       {T(0), T(1), T(2)}, {T(0), T(2), T(1)},
-        {T(0), T(0), T(1)}, {T(2), T(1), T(0)}, {nan, T(1), T(2)},  {T(0), nan, T(2)},
-        {-inf, T(0), T(1)}, {T(0), T(1), inf}, {T(0), T(1e-30), T(2e-30)},
+        {},
+        {T(0)},
+        {T(0), T(1)},
+        {T(0), T(1), T(2)},
+        {T(0), T(2), T(1)},
+        {T(0), T(0), T(1)},
+        {T(2), T(1), T(0)},
+        {nan, T(1), T(2)},
+        {T(0), nan, T(2)},
+        {-inf, T(0), T(1)},
+        {T(0), T(1), inf},
+        {T(0), T(1e-30), T(2e-30)},
         {T(0), std::numeric_limits<T>::denorm_min(), T(1)},
         {std::numeric_limits<T>::lowest(), T(0), std::numeric_limits<T>::max()},
         {T(0), T(1), T(1) + std::numeric_limits<T>::epsilon()}};
@@ -391,8 +414,9 @@ void rotation_spline_cases() {
                 ++failures;
                 std::string listed;
                 for (const T t : times) listed += " " + str(t);
-                std::printf("FAIL %s: try_make with times%s gave a spline that evaluates to %s at %s\n",
-                            current, listed.c_str(), str(q).c_str(), str(inside).c_str());
+                std::printf(
+                    "FAIL %s: try_make with times%s gave a spline that evaluates to %s at %s\n",
+                    current, listed.c_str(), str(q).c_str(), str(inside).c_str());
             }
         }
     }
@@ -407,8 +431,10 @@ void rotation_spline_cases() {
                 const quaternion<T> p = (*made)(T(0.5));
                 if (!finite(p) || !unit(p)) {
                     ++failures;
-                    std::printf("FAIL %s: try_make with keyframe %d = %s gave a spline that evaluates to %s\n",
-                                current, k, str(q).c_str(), str(p).c_str());
+                    std::printf(
+                        "FAIL %s: try_make with keyframe %d = %s gave a spline that evaluates to "
+                        "%s\n",
+                        current, k, str(q).c_str(), str(p).c_str());
                 }
             }
         }
