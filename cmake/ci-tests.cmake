@@ -143,7 +143,9 @@ if(QUAT_TEST_VALGRIND)
     # ERROR SUMMARY, and that is what fails the test.
     # Under valgrind the whole suite is the longest test of the matrix, so it runs in
     # QUAT_MEMCHECK_SHARDS parts (test files dealt round-robin; Catch2's "[#a],[#b]" is a or b),
-    # which CTest runs side by side; together they cover every test file once.
+    # which CTest runs side by side; together they cover every test file once. A file without test
+    # cases in this configuration (test_io_format.cpp without <format>) only makes Catch2 say "No
+    # test cases matched" for its part of the filter.
     set(QUAT_MEMCHECK_SHARDS 4 CACHE STRING "Number of CTest tests the valgrind run is split into")
     get_target_property(_quat_memcheck_files quat_tests SOURCES)
     list(FILTER _quat_memcheck_files EXCLUDE REGEX "catch_main\\.cpp$")
@@ -165,7 +167,7 @@ if(QUAT_TEST_VALGRIND)
         set_tests_properties(memcheck_${_shard} PROPERTIES
             LABELS "ci;valgrind" TIMEOUT 1800 COST 100
             PASS_REGULAR_EXPRESSION "ERROR SUMMARY: 0 errors from 0 contexts"
-            FAIL_REGULAR_EXPRESSION "ERROR SUMMARY: [1-9];No test cases matched")
+            FAIL_REGULAR_EXPRESSION "ERROR SUMMARY: [1-9]")
     endforeach()
 endif()
 

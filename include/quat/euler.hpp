@@ -91,7 +91,7 @@ struct euler_extraction {
     bool gimbal_lock;       ///< True when the middle angle is at its singular value.
 };
 
-#include "detail/isa_namespace.inc"
+#include "detail/isa_namespace.inc"  // NOLINT(readability-duplicate-include): opened again
 namespace detail {
 
 struct axis_triple {

@@ -67,7 +67,7 @@ struct quaternion {
 using quatf = quaternion<float>;   ///< Single-precision quaternion.
 using quatd = quaternion<double>;  ///< Double-precision quaternion.
 
-#include "detail/isa_namespace.inc"
+#include "detail/isa_namespace.inc"  // NOLINT(readability-duplicate-include): opened again
 /// Negation; -q is the same rotation as q.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> operator-(const quaternion<T>& q) noexcept {
