@@ -18,13 +18,6 @@ namespace quat {
 #include "detail/isa_namespace.inc"
 namespace detail {
 
-/// True when every component of v is finite and one is non-zero: a vector with a direction.
-template <class T>
-[[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
-           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
-}
-
 /// 2^e for a small |e|, exactly, in a constant expression.
 template <class T>
 [[nodiscard]] constexpr T power_of_two(int e) noexcept {
@@ -47,26 +40,28 @@ template <class T>
     }
 }
 
-/// v times the power of two that brings its largest |component| into [1/2, 2): the same
-/// direction exactly, whatever v's length. Precondition: has_direction(v).
+/// The power of two p with x / p in [1, 2), for a finite x > 0: dividing by it is exact (bar what
+/// underflows beside x), and it exists for every such x, subnormal ones included.
 template <class T>
-[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(vec3<T> v) noexcept {
-    T largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    // Steps of 2^32, 2^8 and 2: at most a few dozen exact multiplications even from subnormals.
-    // An array, not a braced list: std::initializer_list's members are not keyed by instruction set.
+[[nodiscard]] constexpr T binade_of(T x) noexcept {
+    T p(1);
+    // Steps of 2^32, 2^8 and 2: at most a few dozen exact products even for subnormal x. p is
+    // divided only while it stays above x, so it never underflows. An array, not a braced list:
+    // std::initializer_list's members are not keyed by instruction set.
     constexpr int exponents[] = {32, 8, 1};
     for (const int e : exponents) {
-        const T up = power_of_two<T>(e), down = power_of_two<T>(-e);
-        while (largest >= up) {
-            largest = largest * down;
-            v = v * down;
-        }
-        while (largest * up < T(1)) {
-            largest = largest * up;
-            v = v * up;
-        }
+        const T step = power_of_two<T>(e);
+        while (x / p >= step) p = p * step;
+        while (x / p < T(1) / step) p = p / step;
     }
-    return v;
+    return x / p < T(1) ? p / T(2) : p;  // x / p was in [1/2, 2)
+}
+
+/// v divided by the power of two that brings its largest |component| into [1, 2): the same
+/// direction exactly, whatever v's length. Precondition: has_direction(v).
+template <class T>
+[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(const vec3<T>& v) noexcept {
+    return v / binade_of(largest_magnitude(v));
 }
 
 /// a x b with each component from difference_of_products: relative error at most 2 units of

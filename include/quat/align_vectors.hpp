@@ -71,13 +71,7 @@ template <class T>
     const T high = detail::sqrt(detail::sqrt(detail::largest<T>()));
     const T low = detail::sqrt(detail::sqrt(detail::smallest_normal<T>()));
     if (!(x > high || (x < low && x > T(0)))) return T(1);
-    const T step = T(65536);
-    T p = T(1);
-    while (x / p >= step) p = p * step;
-    while (x / p >= T(2)) p = p * T(2);
-    while (x / p < T(1) / step) p = p / step;
-    while (x / p < T(1)) p = p / T(2);
-    return p;
+    return binade_of(x);
 }
 
 // max |component|, or infinity for a NaN or infinite component.
@@ -85,7 +79,7 @@ template <class T>
 [[nodiscard]] constexpr T largest_component(const vec3<T>& v) noexcept {
     if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z))
         return detail::infinity<T>();
-    return detail::max(detail::abs(v.x), detail::max(detail::abs(v.y), detail::abs(v.z)));
+    return detail::largest_magnitude(v);
 }
 
 // Whether the non-zero vectors v(i) of the pairs used(i) all lie within `tolerance` radians of one

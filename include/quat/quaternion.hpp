@@ -177,18 +177,6 @@ template <class T>
     return max(max(abs(q.w), abs(q.x)), max(abs(q.y), abs(q.z)));
 }
 
-/// True when |q|^2 neither overflows nor loses digits to underflow, so that formulas built on it
-/// are accurate as written; always true for a user scalar.
-template <class T>
-[[nodiscard]] constexpr bool in_normal_range(T squared_length) noexcept {
-    if constexpr (std::is_floating_point_v<T>) {
-        return squared_length >= detail::smallest_normal<T>() &&
-               squared_length <= detail::largest<T>();
-    } else {
-        return true;
-    }
-}
-
 /// NaN in every component.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> nan_quaternion() noexcept {

@@ -4,7 +4,6 @@
 
 #include <limits>
 #include <optional>
-#include <type_traits>
 
 #include "detail/math.hpp"
 
@@ -109,47 +108,57 @@ template <class T>
     return dot(v, v);
 }
 
+namespace detail {
+
+/// The largest |component| of v.
+template <class T>
+[[nodiscard]] constexpr T largest_magnitude(const vec3<T>& v) noexcept {
+    return max(max(abs(v.x), abs(v.y)), abs(v.z));
+}
+
+/// True when every component of v is finite and one is non-zero: a vector with a direction.
+template <class T>
+[[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
+           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
+}
+
+}  // namespace detail
+
 /// Euclidean length |v|, without overflow or underflow for huge or tiny components.
 template <class T>
 [[nodiscard]] constexpr T norm(const vec3<T>& v) noexcept {
-    const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
     const T s = squared_norm(v);
     // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
-    if (s >= detail::smallest_normal<T>() && s <= detail::largest<T>()) return detail::sqrt(s);
+    if (detail::in_normal_range(s)) return detail::sqrt(s);
+    const T scale = detail::largest_magnitude(v);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(v / scale));
 }
 
 /// v / |v| for components anywhere from the smallest subnormal to the largest finite value (the
-/// length may overflow, the direction does not). Precondition: v is non-zero and finite, else the
-/// result holds NaN; try_normalize checks it.
+/// length may overflow, the direction does not). Precondition: v is non-zero and finite, else NaN
+/// in every component; try_normalize checks it.
 template <class T>
 [[nodiscard]] constexpr vec3<T> normalize(const vec3<T>& v) noexcept {
     const T s = squared_norm(v);
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!(s >= detail::smallest_normal<T>() && s <= detail::largest<T>())) {
-            // |v|^2 over- or underflowed (or v is zero or not finite): divide by the largest
-            // |component| first, which keeps every ratio and brings |v| into [1, sqrt(3)].
-            const T scale =
-                detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
-            if (scale > T(0) && detail::is_finite(scale)) {
-                const vec3<T> scaled = v / scale;
-                return scaled / detail::sqrt(squared_norm(scaled));
-            }
-            const T nan = detail::quiet_nan<T>();
-            return {nan, nan, nan};
-        }
+    if (detail::in_normal_range(s)) return v / detail::sqrt(s);
+    // |v|^2 over- or underflowed (or v is zero or not finite): divide by the largest |component|
+    // first, which keeps every ratio and brings |v| into [1, sqrt(3)].
+    const T scale = detail::largest_magnitude(v);
+    if (!(scale > T(0)) || !detail::is_finite(scale)) {
+        const T nan = detail::quiet_nan<T>();
+        return {nan, nan, nan};
     }
-    return v / detail::sqrt(s);
+    const vec3<T> scaled = v / scale;
+    return scaled / detail::sqrt(squared_norm(scaled));
 }
 
 /// v / |v|, or std::nullopt when v is zero or has a non-finite component; any finite non-zero
 /// length is accepted, subnormal or near max().
 template <class T>
 [[nodiscard]] constexpr std::optional<vec3<T>> try_normalize(const vec3<T>& v) noexcept {
-    if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z) ||
-        (v.x == T(0) && v.y == T(0) && v.z == T(0)))
-        return std::nullopt;
+    if (!detail::has_direction(v)) return std::nullopt;
     return normalize(v);
 }
 }  // inline namespace isa_...

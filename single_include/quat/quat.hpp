@@ -81,7 +81,6 @@
 
 #include <limits>
 #include <optional>
-#include <type_traits>
 
 // ---- begin quat/detail/math.hpp ----
 // Scalar functions that work at compile time and at run time, and for user-defined scalars.
@@ -189,6 +188,16 @@ template <class T>
         return value;
     } else {
         return std::numeric_limits<T>::max();
+    }
+}
+/// True when a squared length neither overflows nor loses digits to underflow, so that formulas
+/// built on it are accurate as written; always true for a user scalar, trusted with any length.
+template <class T>
+[[nodiscard]] constexpr bool in_normal_range(T squared_length) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        return squared_length >= smallest_normal<T>() && squared_length <= largest<T>();
+    } else {
+        return true;
     }
 }
 /// Positive infinity.
@@ -682,47 +691,57 @@ template <class T>
     return dot(v, v);
 }
 
+namespace detail {
+
+/// The largest |component| of v.
+template <class T>
+[[nodiscard]] constexpr T largest_magnitude(const vec3<T>& v) noexcept {
+    return max(max(abs(v.x), abs(v.y)), abs(v.z));
+}
+
+/// True when every component of v is finite and one is non-zero: a vector with a direction.
+template <class T>
+[[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
+           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
+}
+
+}  // namespace detail
+
 /// Euclidean length |v|, without overflow or underflow for huge or tiny components.
 template <class T>
 [[nodiscard]] constexpr T norm(const vec3<T>& v) noexcept {
-    const T scale = detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
     const T s = squared_norm(v);
     // The fast path is exact enough whenever s neither overflowed nor lost precision to underflow.
-    if (s >= detail::smallest_normal<T>() && s <= detail::largest<T>()) return detail::sqrt(s);
+    if (detail::in_normal_range(s)) return detail::sqrt(s);
+    const T scale = detail::largest_magnitude(v);
     if (!(scale > T(0)) || !detail::is_finite(scale)) return detail::sqrt(s);  // 0, Inf or NaN
     return scale * detail::sqrt(squared_norm(v / scale));
 }
 
 /// v / |v| for components anywhere from the smallest subnormal to the largest finite value (the
-/// length may overflow, the direction does not). Precondition: v is non-zero and finite, else the
-/// result holds NaN; try_normalize checks it.
+/// length may overflow, the direction does not). Precondition: v is non-zero and finite, else NaN
+/// in every component; try_normalize checks it.
 template <class T>
 [[nodiscard]] constexpr vec3<T> normalize(const vec3<T>& v) noexcept {
     const T s = squared_norm(v);
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!(s >= detail::smallest_normal<T>() && s <= detail::largest<T>())) {
-            // |v|^2 over- or underflowed (or v is zero or not finite): divide by the largest
-            // |component| first, which keeps every ratio and brings |v| into [1, sqrt(3)].
-            const T scale =
-                detail::max(detail::max(detail::abs(v.x), detail::abs(v.y)), detail::abs(v.z));
-            if (scale > T(0) && detail::is_finite(scale)) {
-                const vec3<T> scaled = v / scale;
-                return scaled / detail::sqrt(squared_norm(scaled));
-            }
-            const T nan = detail::quiet_nan<T>();
-            return {nan, nan, nan};
-        }
+    if (detail::in_normal_range(s)) return v / detail::sqrt(s);
+    // |v|^2 over- or underflowed (or v is zero or not finite): divide by the largest |component|
+    // first, which keeps every ratio and brings |v| into [1, sqrt(3)].
+    const T scale = detail::largest_magnitude(v);
+    if (!(scale > T(0)) || !detail::is_finite(scale)) {
+        const T nan = detail::quiet_nan<T>();
+        return {nan, nan, nan};
     }
-    return v / detail::sqrt(s);
+    const vec3<T> scaled = v / scale;
+    return scaled / detail::sqrt(squared_norm(scaled));
 }
 
 /// v / |v|, or std::nullopt when v is zero or has a non-finite component; any finite non-zero
 /// length is accepted, subnormal or near max().
 template <class T>
 [[nodiscard]] constexpr std::optional<vec3<T>> try_normalize(const vec3<T>& v) noexcept {
-    if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z) ||
-        (v.x == T(0) && v.y == T(0) && v.z == T(0)))
-        return std::nullopt;
+    if (!detail::has_direction(v)) return std::nullopt;
     return normalize(v);
 }
 }  // inline namespace isa_...
@@ -1176,18 +1195,6 @@ template <class T>
     return max(max(abs(q.w), abs(q.x)), max(abs(q.y), abs(q.z)));
 }
 
-/// True when |q|^2 neither overflows nor loses digits to underflow, so that formulas built on it
-/// are accurate as written; always true for a user scalar.
-template <class T>
-[[nodiscard]] constexpr bool in_normal_range(T squared_length) noexcept {
-    if constexpr (std::is_floating_point_v<T>) {
-        return squared_length >= detail::smallest_normal<T>() &&
-               squared_length <= detail::largest<T>();
-    } else {
-        return true;
-    }
-}
-
 /// NaN in every component.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> nan_quaternion() noexcept {
@@ -1608,13 +1615,6 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// True when every component of v is finite and one is non-zero: a vector with a direction.
-template <class T>
-[[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
-           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
-}
-
 /// 2^e for a small |e|, exactly, in a constant expression.
 template <class T>
 [[nodiscard]] constexpr T power_of_two(int e) noexcept {
@@ -1637,26 +1637,28 @@ template <class T>
     }
 }
 
-/// v times the power of two that brings its largest |component| into [1/2, 2): the same
-/// direction exactly, whatever v's length. Precondition: has_direction(v).
+/// The power of two p with x / p in [1, 2), for a finite x > 0: dividing by it is exact (bar what
+/// underflows beside x), and it exists for every such x, subnormal ones included.
 template <class T>
-[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(vec3<T> v) noexcept {
-    T largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    // Steps of 2^32, 2^8 and 2: at most a few dozen exact multiplications even from subnormals.
-    // An array, not a braced list: std::initializer_list's members are not keyed by instruction set.
+[[nodiscard]] constexpr T binade_of(T x) noexcept {
+    T p(1);
+    // Steps of 2^32, 2^8 and 2: at most a few dozen exact products even for subnormal x. p is
+    // divided only while it stays above x, so it never underflows. An array, not a braced list:
+    // std::initializer_list's members are not keyed by instruction set.
     constexpr int exponents[] = {32, 8, 1};
     for (const int e : exponents) {
-        const T up = power_of_two<T>(e), down = power_of_two<T>(-e);
-        while (largest >= up) {
-            largest = largest * down;
-            v = v * down;
-        }
-        while (largest * up < T(1)) {
-            largest = largest * up;
-            v = v * up;
-        }
+        const T step = power_of_two<T>(e);
+        while (x / p >= step) p = p * step;
+        while (x / p < T(1) / step) p = p / step;
     }
-    return v;
+    return x / p < T(1) ? p / T(2) : p;  // x / p was in [1/2, 2)
+}
+
+/// v divided by the power of two that brings its largest |component| into [1, 2): the same
+/// direction exactly, whatever v's length. Precondition: has_direction(v).
+template <class T>
+[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(const vec3<T>& v) noexcept {
+    return v / binade_of(largest_magnitude(v));
 }
 
 /// a x b with each component from difference_of_products: relative error at most 2 units of
@@ -2296,13 +2298,7 @@ template <class T>
     const T high = detail::sqrt(detail::sqrt(detail::largest<T>()));
     const T low = detail::sqrt(detail::sqrt(detail::smallest_normal<T>()));
     if (!(x > high || (x < low && x > T(0)))) return T(1);
-    const T step = T(65536);
-    T p = T(1);
-    while (x / p >= step) p = p * step;
-    while (x / p >= T(2)) p = p * T(2);
-    while (x / p < T(1) / step) p = p / step;
-    while (x / p < T(1)) p = p / T(2);
-    return p;
+    return binade_of(x);
 }
 
 // max |component|, or infinity for a NaN or infinite component.
@@ -2310,7 +2306,7 @@ template <class T>
 [[nodiscard]] constexpr T largest_component(const vec3<T>& v) noexcept {
     if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z))
         return detail::infinity<T>();
-    return detail::max(detail::abs(v.x), detail::max(detail::abs(v.y), detail::abs(v.z)));
+    return detail::largest_magnitude(v);
 }
 
 // Whether the non-zero vectors v(i) of the pairs used(i) all lie within `tolerance` radians of one

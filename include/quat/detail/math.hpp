@@ -82,6 +82,16 @@ template <class T>
         return std::numeric_limits<T>::max();
     }
 }
+/// True when a squared length neither overflows nor loses digits to underflow, so that formulas
+/// built on it are accurate as written; always true for a user scalar, trusted with any length.
+template <class T>
+[[nodiscard]] constexpr bool in_normal_range(T squared_length) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        return squared_length >= smallest_normal<T>() && squared_length <= largest<T>();
+    } else {
+        return true;
+    }
+}
 /// Positive infinity.
 template <class T>
 [[nodiscard]] constexpr T infinity() noexcept {
