@@ -1,5 +1,5 @@
 // Per-element batches (quat/elementwise.hpp): rotate_each (point i by rotation i), compose_each
-// (a[i] * b[i]), and to_matrix / to_quaternion over arrays. GLM and Eigen run the loops their users
+// (a[i] * b[i]), to_matrix_each and to_quaternion_each. GLM and Eigen run the loops their users
 // write, out[i] = q[i] * p[i] and so on, which g++ vectorizes too. One iteration is a whole batch;
 // items are elements.
 #include <algorithm>
@@ -28,10 +28,10 @@ struct each_quat : lib_quat<T> {
         quat::compose_each(a, b, out, n);
     }
     static void to_matrix(const quaternion* q, matrix* out, std::size_t n) {
-        quat::to_matrix(q, out, n);
+        quat::to_matrix_each(q, out, n);
     }
     static void to_quaternion(const matrix* m, quaternion* out, std::size_t n) {
-        quat::to_quaternion(m, out, n);
+        quat::to_quaternion_each(m, out, n);
     }
 };
 

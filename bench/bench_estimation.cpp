@@ -1,10 +1,13 @@
-// align_vectors (Wahba's problem) and mean over n inputs, beside the two costs they cannot avoid:
+// align_vectors (Wahba's problem), align_points (Kabsch, against Eigen's umeyama on the same points)
+// and mean over n inputs, beside the two costs they cannot avoid:
 // reading the input once (read_input: only the sums B = sum w t s^T, or sum q q^T for mean) and
 // one 4x4 symmetric eigen-solve (eigen_solve). The target: align_vectors and mean within
 // 2x of read_input + eigen_solve.
 #include <cstddef>
 #include <vector>
 
+#include <Eigen/Geometry>
+#include <quat/align_points.hpp>
 #include <quat/align_vectors.hpp>
 #include <quat/mean.hpp>
 
@@ -42,6 +45,31 @@ void align_vectors(benchmark::State& state, std::size_t n) {
         const quat::alignment<T> result =
             quat::align_vectors(set.targets, set.sources, set.weights);
         benchmark::DoNotOptimize(result);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
+}
+
+// The rigid motion of n noisy point pairs: quat's align_points, or Eigen::umeyama on the same
+// points held as 3 x n matrices (built once, outside the timing).
+template <class T>
+void align_points(benchmark::State& state, std::size_t n, bool eigen) {
+    random_source random;
+    vector_set<T> set = make_vector_set<T>(random, n);
+    for (quat::vec3<T>& target : set.targets) target += quat::vec3<T>{T(1), T(2), T(3)};
+    Eigen::Matrix<T, 3, Eigen::Dynamic> sources(3, Eigen::Index(n)), targets(3, Eigen::Index(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto c = Eigen::Index(i);
+        sources.col(c) << set.sources[i].x, set.sources[i].y, set.sources[i].z;
+        targets.col(c) << set.targets[i].x, set.targets[i].y, set.targets[i].z;
+    }
+    for (auto _ : state) {
+        if (eigen) {
+            const Eigen::Matrix<T, 4, 4> result = Eigen::umeyama(sources, targets, false);
+            benchmark::DoNotOptimize(result);
+        } else {
+            const quat::point_alignment<T> result = quat::align_points(set.targets, set.sources);
+            benchmark::DoNotOptimize(result);
+        }
     }
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
 }
@@ -141,6 +169,15 @@ void register_estimation_for() {
         benchmark::RegisterBenchmark(
             name("align_vectors", "read_input", "vec3", type, size).c_str(),
             [n](benchmark::State& state) { read_input<T>(state, n); });
+    }
+    for (const std::size_t n : {std::size_t(4), std::size_t(64), std::size_t(4096)}) {
+        const auto size = static_cast<long long>(n);
+        benchmark::RegisterBenchmark(
+            name("align_points", "quat", "vec3", type, size).c_str(),
+            [n](benchmark::State& state) { align_points<T>(state, n, false); });
+        benchmark::RegisterBenchmark(
+            name("align_points", "eigen", "vec3", type, size).c_str(),
+            [n](benchmark::State& state) { align_points<T>(state, n, true); });
     }
     benchmark::RegisterBenchmark(name("eigen_solve", "quat", "4x4", type).c_str(), eigen_solve<T>);
     benchmark::RegisterBenchmark(name("mean", "quat", "quaternion", type, 1024).c_str(),

@@ -1,7 +1,8 @@
 // Keyframe paths: squad and squad_control (quat against glm::squad and glm::intermediate, on
 // keyframes with consecutive dot products >= 0, where the two compute the same path),
-// keyframe_slerp over 1024 keyframes, and rotation_spline (evaluation, angular velocity and
-// acceleration at random times, evaluation over sorted times, and building from 1024 keyframes).
+// keyframe_slerp and keyframe_squad over 1024 keyframes (quat only: GLM and Eigen have no
+// keyframed squad), and rotation_spline (evaluation, angular velocity and acceleration at random
+// times, evaluation over sorted times, and building from 1024 keyframes).
 #include <algorithm>
 #include <cstddef>
 #include <type_traits>
@@ -10,6 +11,7 @@
 #include <glm/gtx/quaternion.hpp>
 
 #include <quat/keyframe_slerp.hpp>
+#include <quat/keyframe_squad.hpp>
 #include <quat/rotation_spline.hpp>
 #include <quat/squad.hpp>
 
@@ -157,6 +159,14 @@ void register_paths_for() {
                                          const keyframes<T> k = make_keyframes<T>(keyframe_count);
                                          at_random_times(state, k, [&k](T t) {
                                              return quat::keyframe_slerp(k.times, k.rotations, t);
+                                         });
+                                     });
+        // The same keyframes and times through keyframe_squad: two control points per call.
+        benchmark::RegisterBenchmark(name("keyframe_squad", "quat", "quaternion", type, n).c_str(),
+                                     [](benchmark::State& state) {
+                                         const keyframes<T> k = make_keyframes<T>(keyframe_count);
+                                         at_random_times(state, k, [&k](T t) {
+                                             return quat::keyframe_squad(k.times, k.rotations, t);
                                          });
                                      });
         benchmark::RegisterBenchmark(

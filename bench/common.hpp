@@ -16,8 +16,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <quat/batch.hpp>
-#include <quat/fast_slerp.hpp>
 #include <quat/quat.hpp>
+#include <quat/slerp_fast.hpp>
 
 namespace bench {
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the README's Performance table: the median over several quat_bench runs of each cell.
+"""Prints docs/performance.md's tables: the median over several quat_bench runs of each cell.
 
 Usage: python3 bench/median_table.py run1.json run2.json run3.json
        python3 bench/median_table.py --levels x86-64=a1.json,a2.json x86-64-v3=b1.json native=c1.json

@@ -3,7 +3,7 @@
 # so are the ones whose result does not depend on the configuration (consumers, strict warnings,
 # std::format), so that a single preset runs everything; the CI presets in CMakePresets.json switch
 # those off in all but one configuration and switch the slow once-per-matrix ones on (each preset
-# runs a different subset, see README "Continuous integration").
+# runs a different subset, see docs/ci.md).
 option(QUAT_TEST_CONSUMERS "Test the installed package, add_subdirectory and the install without developer tools" ON)
 option(QUAT_TEST_STRICT_WARNINGS "Compile every header alone with g++ and clang++ under strict warnings" ON)
 option(QUAT_TEST_STD_FORMAT "Build the printing tests with clang++ and libc++ to test std::format" ON)
@@ -71,12 +71,13 @@ if(QUAT_TEST_CONSUMERS)
     set_tests_properties(install_without_developer_tools PROPERTIES LABELS "ci;consumer")
 endif()
 
-# README "With GLM in the same file": after `using namespace glm;` the unqualified `quat::` is
-# ambiguous (glm::quat against namespace quat), which is why the README writes `::quat::`. This
-# compiles the unqualified spelling and passes only if the compiler reports that ambiguity; the
-# documented spellings are compiled by tests/test_glm_namespace.cpp. clang only: g++ 12 does not
-# diagnose the ambiguity ([namespace.udir]/6 makes it ill-formed) and accepts the code.
-if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+# docs/integration.md "With GLM in the same file": after `using namespace glm;` the unqualified
+# `quat::` is ambiguous (glm::quat against namespace quat), which is why the docs write `::quat::`;
+# after `using namespace quat;` as well, so are vec3, euler and radians/degrees. Each test compiles
+# an unqualified spelling and passes only if the compiler reports that ambiguity; the documented
+# spellings are compiled by tests/test_glm_namespace.cpp. The quat:: test is clang only: g++ 12
+# does not diagnose that ambiguity ([namespace.udir]/6 makes it ill-formed) and accepts the code.
+if(CMAKE_CXX_COMPILER_ID MATCHES "Clang|GNU")
     if(CMAKE_CXX_STANDARD)
         set(_quat_glm_flags "-std=c++${CMAKE_CXX_STANDARD}")
     else()
@@ -86,12 +87,24 @@ if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     if(NOT QUAT_GLM_INCLUDE_DIR IN_LIST CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES)
         list(APPEND _quat_glm_flags -isystem "${QUAT_GLM_INCLUDE_DIR}")
     endif()
-    add_test(NAME glm_unqualified_quat_is_ambiguous
-             COMMAND "${CMAKE_CXX_COMPILER}" ${_quat_glm_flags} -fsyntax-only
-                     -I "${PROJECT_SOURCE_DIR}/include"
-                     "${PROJECT_SOURCE_DIR}/tests/compile_fail/glm_unqualified_quat.cpp")
-    set_tests_properties(glm_unqualified_quat_is_ambiguous PROPERTIES
-        LABELS "ci" PASS_REGULAR_EXPRESSION "reference to [^ ]*quat[^ ]* is ambiguous")
+    if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+        add_test(NAME glm_unqualified_quat_is_ambiguous
+                 COMMAND "${CMAKE_CXX_COMPILER}" ${_quat_glm_flags} -fsyntax-only
+                         -I "${PROJECT_SOURCE_DIR}/include"
+                         "${PROJECT_SOURCE_DIR}/tests/compile_fail/glm_unqualified_quat.cpp")
+        set_tests_properties(glm_unqualified_quat_is_ambiguous PROPERTIES
+            LABELS "ci" PASS_REGULAR_EXPRESSION "reference to [^ ]*quat[^ ]* is ambiguous")
+    endif()
+    # g++: "reference to 'vec3' is ambiguous", "call of overloaded 'radians(double)' is ambiguous";
+    # clang: "reference to 'vec3' is ambiguous", "call to 'radians' is ambiguous".
+    foreach(_name vec3 euler radians)
+        add_test(NAME glm_and_quat_unqualified_${_name}_is_ambiguous
+                 COMMAND "${CMAKE_CXX_COMPILER}" ${_quat_glm_flags} -fsyntax-only
+                         -I "${PROJECT_SOURCE_DIR}/include"
+                         "${PROJECT_SOURCE_DIR}/tests/compile_fail/glm_and_quat_${_name}.cpp")
+        set_tests_properties(glm_and_quat_unqualified_${_name}_is_ambiguous PROPERTIES LABELS "ci"
+            PASS_REGULAR_EXPRESSION "(reference|call) (to|of overloaded) [^ ]*${_name}[^ ]* is ambiguous")
+    endforeach()
 endif()
 
 if(QUAT_TEST_SINGLE_INCLUDE)

@@ -31,11 +31,26 @@ install(FILES "${PROJECT_BINARY_DIR}/quatConfig.cmake" "${PROJECT_BINARY_DIR}/qu
         DESTINATION "${QUAT_INSTALL_CMAKEDIR}"
         COMPONENT quat_Development)
 
-# pkg-config: computed relative to the .pc file so the install prefix can be moved.
-file(RELATIVE_PATH _quat_pc_to_prefix
-     "/prefix/${QUAT_INSTALL_PKGCONFIGDIR}" "/prefix")
-string(REGEX REPLACE "/$" "" _quat_pc_to_prefix "${_quat_pc_to_prefix}")
-configure_file("${PROJECT_SOURCE_DIR}/cmake/quat.pc.in" "${PROJECT_BINARY_DIR}/quat.pc" @ONLY)
+# pkg-config: the prefix is written as the normalized absolute path quat is installed to, found at
+# install time (so `cmake --install build --prefix P` writes P; under DESTDIR, the final prefix).
+# A prefix relative to ${pcfiledir} would survive a move of the tree but print
+# -I<prefix>/share/pkgconfig/../../include, since pkg-config cannot normalize a path; a moved tree
+# is found instead by `pkg-config --define-prefix` (pkgconf, pkg-config >= 0.29), which derives the
+# prefix from where quat.pc lies (two directories up) and prints it normalized. includedir is given
+# through ${prefix} for that reason, unless CMAKE_INSTALL_INCLUDEDIR is absolute.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
+    get_filename_component(_quat_pc_includedir "${CMAKE_INSTALL_INCLUDEDIR}" ABSOLUTE)
+else()
+    set(_quat_pc_includedir "\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}")
+endif()
+install(CODE "
+    get_filename_component(QUAT_PC_PREFIX \"\${CMAKE_INSTALL_PREFIX}\" ABSOLUTE)
+    set(QUAT_PC_INCLUDEDIR [[${_quat_pc_includedir}]])
+    set(PROJECT_DESCRIPTION [[${PROJECT_DESCRIPTION}]])
+    set(PROJECT_VERSION [[${PROJECT_VERSION}]])
+    configure_file([[${PROJECT_SOURCE_DIR}/cmake/quat.pc.in]] [[${PROJECT_BINARY_DIR}/quat.pc]]
+                   @ONLY)
+    " COMPONENT quat_Development)
 install(FILES "${PROJECT_BINARY_DIR}/quat.pc"
         DESTINATION "${QUAT_INSTALL_PKGCONFIGDIR}"
         COMPONENT quat_Development)

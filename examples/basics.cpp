@@ -11,7 +11,7 @@ using namespace quat;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 
 void print(const char* name, const quatd& q) {
     std::printf("%-34s (w %+.6f, x %+.6f, y %+.6f, z %+.6f)\n", name, q.w, q.x, q.y, q.z);

@@ -28,7 +28,7 @@ using view3d::v3;
 namespace {
 
 constexpr int frame_count = 1200;  // one 12 s lap of the figure-eight, filmed at 100 frames/s
-constexpr double dt = 0.01, period = frame_count * dt, omega = 2 * pi / period;
+constexpr double dt = 0.01, period = frame_count * dt, omega = 2 * numbers::pi / period;
 // World z is up. In the camera's own axes (OpenGL): x right, y up, and it looks along -z.
 const v3 world_up{0, 0, 1}, camera_right{1, 0, 0}, camera_up{0, 1, 0}, camera_look{0, 0, -1};
 // Tolerances of the checks, also quoted in the picture (the errors themselves are rounding noise,
@@ -55,8 +55,8 @@ rotation_matrix<double> by_hand(const v3& forward) {
 /// The same camera as a pan-tilt mount: from looking straight down, tilt up about x by 90 degrees
 /// plus the elevation, then pan about world z. Intrinsic z-y-x angles {pan, 0, tilt}: no roll.
 quatd pan_tilt(const v3& forward) {
-    const double pan = std::atan2(forward.y, forward.x) - pi / 2;
-    const double tilt = pi / 2 + std::atan2(forward.z, std::hypot(forward.x, forward.y));
+    const double pan = std::atan2(forward.y, forward.x) - numbers::pi / 2;
+    const double tilt = numbers::pi / 2 + std::atan2(forward.z, std::hypot(forward.x, forward.y));
     return to_quaternion(euler<double>{pan, 0.0, tilt});
 }
 
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
     expect(hand_error < tolerance, "to_matrix(R) has columns right, up, back as built by hand");
     expect(pan_tilt_error < tolerance, "R is the pan-tilt rotation Rz(pan) Rx(90 deg + elevation)");
     expect(peak[1] > 3 * peak[0], "4 times nearer the zenith, the pan swings over 3 times faster");
-    expect(peak[2] > 0.99 * pi / dt,
+    expect(peak[2] > 0.99 * numbers::pi / dt,
            "right below the crossing, the camera flips 180 deg in a frame");
 
     // Straight overhead, forward is parallel to up: the documented fallback.
@@ -155,8 +155,8 @@ int main(int argc, char** argv) {
     expect(to_east && to_west, "a nanoradian off the zenith, try_look_rotation succeeds");
     const double apart = to_east && to_west ? angle_between(*to_east, *to_west) : 0;
     std::printf("  1e-9 rad east and west of the zenith: cameras %.6f deg apart\n",
-                apart * 180 / pi);
-    expect(std::abs(apart - pi) < 1e-6, "... and the two cameras are a half turn apart");
+                apart * 180 / numbers::pi);
+    expect(std::abs(apart - numbers::pi) < 1e-6, "... and the two cameras are a half turn apart");
     expect(angle(rotate(*to_east, camera_look), east) < tolerance, "... and look at the drone");
 
     svg::document doc(1000, 540);
@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
              "middle", "#222", true);
     // Left: the scene with the camera 0.4 m off the crossing, seen from the south-east.
     const v3 camera{0, -offsets[0], 0};
-    const auto view = view3d::camera::looking_from(-0.42 * pi, 0.5, {250, 330}, 72);
+    const auto view = view3d::camera::looking_from(-0.42 * numbers::pi, 0.5, {250, 330}, 72);
     for (int g = -3; g <= 3; ++g) {  // a ground grid, 1 m squares
         doc.line(view.project({g * 1.0, -3, 0}), view.project({g * 1.0, 3, 0}), {"#e3e3e3", 1.0});
         doc.line(view.project({-3, g * 1.0, 0}), view.project({3, g * 1.0, 0}), {"#e3e3e3", 1.0});

@@ -19,7 +19,7 @@ using view3d::v3;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 
 /// Arc of radius r (pixels) about c from angle a0 to a1 (radians, counter-clockwise on screen).
 std::vector<svg::point> arc(svg::point c, double r, double a0, double a1) {
@@ -97,10 +97,12 @@ int main(int argc, char** argv) {
              "middle");
 
     // Right: the same turns of the xy-plane by quaternions, seen in 3D.
-    const auto cam = view3d::camera::looking_from(-pi / 2 + 0.45, 0.5, {720, 250}, 165, 7.0);
+    const auto cam =
+        view3d::camera::looking_from(-numbers::pi / 2 + 0.45, 0.5, {720, 250}, 165, 7.0);
     std::vector<v3> circle;
     for (int k = 0; k <= 120; ++k)
-        circle.push_back({std::cos(2 * pi * k / 120), std::sin(2 * pi * k / 120), 0});
+        circle.push_back(
+            {std::cos(2 * numbers::pi * k / 120), std::sin(2 * numbers::pi * k / 120), 0});
     doc.polyline(
         [&] {
             std::vector<svg::point> p;

@@ -22,20 +22,20 @@ using namespace quat;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 constexpr sequence S = sequence::zyx;
 constexpr frame F = frame::intrinsic;
 using ypr = euler<double, S, F>;  // {yaw, pitch, roll}
 
 /// Raised cosine: exactly 1 at u = 0, smoothly down to 0 at |u| = 1, and 0 beyond.
-double bump(double u) { return std::abs(u) < 1 ? (1 + std::cos(pi * u)) / 2 : 0.0; }
+double bump(double u) { return std::abs(u) < 1 ? (1 + std::cos(numbers::pi * u)) / 2 : 0.0; }
 
 /// The true motion over 10 s: yaw spins at 1.9 rad/s (about three turns); pitch climbs through
 /// +90 deg to 112 deg and back (t = 1 .. 4.2 s), then dips to exactly -90 deg at t = 7.5 s; roll
 /// swings +-63 deg about 180 deg, passing +-180 deg every 1.4 s.
 ypr truth(double t) {
-    return {-2.4 + 1.9 * t, 1.95 * bump((t - 2.6) / 1.6) - pi / 2 * bump((t - 7.5) / 1.5),
-            pi + 1.1 * std::sin(2.2 * t + 0.3)};
+    return {-2.4 + 1.9 * t, 1.95 * bump((t - 2.6) / 1.6) - numbers::pi / 2 * bump((t - 7.5) / 1.5),
+            numbers::pi + 1.1 * std::sin(2.2 * t + 0.3)};
 }
 
 /// Largest change of any of the three angles from one frame to the next.
@@ -63,7 +63,8 @@ int main(int argc, char** argv) {
     std::vector<double> time;
     std::vector<ypr> exact, plain, continuous;
     ypr previous = truth(0.5 / rate);  // seeded with the true first triple
-    double representation_error = 0, truth_error = 0, nearest_cut = pi, nearest_lock = pi;
+    double representation_error = 0, truth_error = 0, nearest_cut = numbers::pi,
+           nearest_lock = numbers::pi;
     for (int n = 0; n < frames; ++n) {
         const double t = (n + 0.5) / rate;
         const quatd q = to_quaternion(truth(t));
@@ -79,8 +80,9 @@ int main(int argc, char** argv) {
             truth_error = std::max(truth_error, std::abs(previous[k] - exact.back()[k]));
         // How close plain yaw and roll come to +-180 deg, where rounding could pick either sign, and
         // pitch to +-90 deg, where yaw and roll lose accuracy (as eps / distance).
-        nearest_cut = std::min({nearest_cut, pi - std::abs(p[0]), pi - std::abs(p[2])});
-        nearest_lock = std::min(nearest_lock, pi / 2 - std::abs(p[1]));
+        nearest_cut =
+            std::min({nearest_cut, numbers::pi - std::abs(p[0]), numbers::pi - std::abs(p[2])});
+        nearest_lock = std::min(nearest_lock, numbers::pi / 2 - std::abs(p[1]));
     }
     const double true_step = largest_step(exact), plain_step = largest_step(plain),
                  continuous_step = largest_step(continuous);
@@ -149,7 +151,7 @@ int main(int argc, char** argv) {
 
     // Behind the curves: when pitch is beyond 90 deg (1.95 bump(u) = pi/2) and the instant it
     // touches -90 deg.
-    const double beyond = 1.6 * std::acos(pi / 1.95 - 1) / pi;
+    const double beyond = 1.6 * std::acos(numbers::pi / 1.95 - 1) / numbers::pi;
     svg::document doc(960, 715);
     for (const plot::chart* c : {&plain_chart, &pitch_roll_chart, &yaw_chart}) {
         const auto x = [c](double t) { return c->left + t / 10 * c->width; };

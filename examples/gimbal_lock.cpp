@@ -18,7 +18,7 @@ using view3d::v3;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 using ypr = euler<double>;  // sequence::zyx, frame::intrinsic: {yaw, pitch, roll}
 
 /// World axis and signed rate of the change in orientation when angle `which` of e grows a little.
@@ -83,26 +83,26 @@ int main(int argc, char** argv) {
     bool only_difference_matters = true;
     for (double yaw = -150; yaw <= 150; yaw += 30)
         for (double roll = -150; roll <= 150; roll += 30) {
-            const quatd q = to_quaternion(ypr{{yaw * degree, pi / 2, roll * degree}});
-            const quatd same = to_quaternion(ypr{{(yaw - roll) * degree, pi / 2, 0.0}});
+            const quatd q = to_quaternion(ypr{{yaw * degree, numbers::pi / 2, roll * degree}});
+            const quatd same = to_quaternion(ypr{{(yaw - roll) * degree, numbers::pi / 2, 0.0}});
             only_difference_matters = only_difference_matters && angle_between(q, same) < 1e-12;
         }
     expect(only_difference_matters, "(yaw, 90 deg, roll) is the rotation (yaw - roll, 90 deg, 0)");
 
-    const v3 yaw_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 0),
-             roll_axis = turn_axis(ypr{{0.3, pi / 2, -0.4}}, 2);
+    const v3 yaw_axis = turn_axis(ypr{{0.3, numbers::pi / 2, -0.4}}, 0),
+             roll_axis = turn_axis(ypr{{0.3, numbers::pi / 2, -0.4}}, 2);
     std::printf("  d/dyaw turns about (%+.3f, %+.3f, %+.3f); d/droll about (%+.3f, %+.3f, %+.3f)\n",
                 yaw_axis.x, yaw_axis.y, yaw_axis.z, roll_axis.x, roll_axis.y, roll_axis.z);
     expect(norm(cross(yaw_axis, roll_axis)) < 1e-6,
            "at pitch 90 deg yaw and roll turn about one axis (world z)");
-    const v3 free_yaw = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 0),
-             free_roll = turn_axis(ypr{{0.3, pi / 4, -0.4}}, 2);
+    const v3 free_yaw = turn_axis(ypr{{0.3, numbers::pi / 4, -0.4}}, 0),
+             free_roll = turn_axis(ypr{{0.3, numbers::pi / 4, -0.4}}, 2);
     expect(norm(cross(free_yaw, free_roll)) > 0.5,
            "at pitch 45 deg they turn about different axes");
 
     // The library reports the singularity and puts the whole turn into the first angle.
-    const auto locked =
-        extract_euler<sequence::zyx>(to_quaternion(ypr{{40 * degree, pi / 2, 25 * degree}}));
+    const auto locked = extract_euler<sequence::zyx>(
+        to_quaternion(ypr{{40 * degree, numbers::pi / 2, 25 * degree}}));
     std::printf("  extract_euler of (40, 90, 25) deg: (%.4f, %.4f, %.4f) deg, gimbal_lock = %s\n",
                 locked.angles[0] / degree, locked.angles[1] / degree, locked.angles[2] / degree,
                 locked.gimbal_lock ? "true" : "false");
@@ -117,8 +117,8 @@ int main(int argc, char** argv) {
     svg::document doc(880, 500);
     doc.text({440, 28}, "Gimbal lock: yaw-pitch-roll, R = Rz(yaw) Ry(pitch) Rx(roll)", 17, "middle",
              "#222", true);
-    panel(doc, 0, pi / 2, "pitch = 90 deg: yaw and roll paths coincide");
-    panel(doc, 440, pi / 4, "pitch = 45 deg: two independent turns");
+    panel(doc, 0, numbers::pi / 2, "pitch = 90 deg: yaw and roll paths coincide");
+    panel(doc, 440, numbers::pi / 4, "pitch = 45 deg: two independent turns");
     doc.line({30, 478}, {60, 478}, {"#ff7f0e", 5.0});
     doc.text({66, 483}, "tips of the body y and z axes as yaw sweeps -120..120 deg", 12);
     doc.line({460, 478}, {490, 478}, {"#6a3d9a", 2.0, "none", 1.0, "7 5"});

@@ -23,7 +23,7 @@ using view3d::v3;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 using ypr = euler<double>;  // intrinsic z-y-x {yaw, pitch, roll}
 
 double rotation_angle(const quatd& from, const quatd& to) {

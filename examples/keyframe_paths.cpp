@@ -40,7 +40,7 @@ const v3 world_up{0, 0, 1};  // the camera sits at the origin, world z up
 /// look_rotation is well-conditioned all the way; the camera turns four times faster on the near
 /// pass than on the far one.
 v3 ball(double t) {
-    const double a = 2 * pi * (t - 2.5) / duration;
+    const double a = 2 * numbers::pi * (t - 2.5) / duration;
     return {4 * std::sin(a), 1.5 - 3 * std::cos(a), 1.2 + 0.6 * std::sin(2 * a)};
 }
 

@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
     const std::string out =
         (argc > 1 ? std::string(argv[1]) : std::string(".")) + "/order_matters.svg";
 
-    const quatd qx = to_quaternion(axis_angle<double>{{1, 0, 0}, pi / 2});
-    const quatd qy = to_quaternion(axis_angle<double>{{0, 1, 0}, pi / 2});
+    const quatd qx = to_quaternion(axis_angle<double>{{1, 0, 0}, numbers::pi / 2});
+    const quatd qy = to_quaternion(axis_angle<double>{{0, 1, 0}, numbers::pi / 2});
     // a * b applies b first: "x then y" is qy * qx.
     const quatd x_then_y = qy * qx, y_then_x = qx * qy;
 
@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
     expect(norm(end_xy - v3{1, 0, 0}) < 1e-12, "x then y lays the bar along +x");
     expect(norm(end_yx - v3{0, 0, 1}) < 1e-12, "y then x stands the bar up along +z");
     const double apart = rotation_angle(x_then_y, y_then_x);
-    std::printf("  the two final poses differ by a rotation of %.1f deg\n", apart * 180 / pi);
+    std::printf("  the two final poses differ by a rotation of %.1f deg\n",
+                apart * 180 / numbers::pi);
     expect(apart > 1.0, "qy * qx != qx * qy: the order matters");
     const rotation_matrix<double> mx = to_matrix(qx), my = to_matrix(qy);
     expect(angle_between(to_quaternion(my * mx), x_then_y) < 1e-12,

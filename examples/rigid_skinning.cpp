@@ -31,7 +31,7 @@ using view3d::v3;
 
 namespace {
 
-constexpr double degree = pi / 180;
+constexpr double degree = numbers::pi / 180;
 
 // ---- Skinning -------------------------------------------------------------------------------
 
@@ -52,7 +52,7 @@ double weight_1(double x) {
 
 /// Vertex k of ring i in the rest pose; vertex 0 is on top (+z).
 v3 rest_vertex(int ring, int k) {
-    const double phi = 2 * pi * k / ring_vertices;
+    const double phi = 2 * numbers::pi * k / ring_vertices;
     return {ring_x(ring), -tube_radius * std::sin(phi), tube_radius * std::cos(phi)};
 }
 
@@ -391,7 +391,7 @@ void screw_motion(const std::string& out) {
             const v3 foot = axis_point + axis_direction * dot(centre - axis_point, axis_direction);
             std::vector<svg::point> circle;
             for (int k = 0; k <= 96; ++k) {
-                const double phi = 2 * pi * k / 96;
+                const double phi = 2 * numbers::pi * k / 96;
                 circle.push_back(
                     view.project(foot + v3{std::cos(phi), std::sin(phi), 0} * start_distance[0]));
             }

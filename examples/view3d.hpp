@@ -158,7 +158,7 @@ inline void draw_sphere_path(svg::document& doc, const camera& cam, const std::v
 
 /// Wire-frame unit sphere of radius r: outline, equator and meridians every 30 degrees.
 inline void draw_sphere(svg::document& doc, const camera& cam, double r) {
-    const double pi = quat::pi;
+    const double pi = quat::numbers::pi;
     doc.circle(cam.project({0, 0, 0}), r * cam.scale, {"#999", 1.0, "#f7f7f7"});
     const svg::style grid{"#bbb", 0.8};
     for (int latitude = -60; latitude <= 60; latitude += 30) {

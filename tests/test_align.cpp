@@ -408,14 +408,15 @@ TEMPLATE_TEST_CASE("look_rotation of zero or non-finite input", "[align]", float
 
 // ---- the other camera conventions of docs/conventions.md ------------------------------------
 
-TEMPLATE_TEST_CASE("docs: +z forward, y up is look_rotation(f, up) * rotation_y(pi)", "[align]",
-                   float, double) {
+TEMPLATE_TEST_CASE("docs: +z forward, y up is look_rotation(f, up) * rotation_y(numbers::pi)",
+                   "[align]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     for (int i = 0; i < 1000; ++i) {
         const vec3<T> forward = random.unit_vector<T>(), up = random.unit_vector<T>();
         if (quat::norm(quat::cross(forward, up)) < T(0.1)) continue;
-        const quaternion<T> q = quat::look_rotation(forward, up) * quat::rotation_y(quat::pi_v<T>);
+        const quaternion<T> q =
+            quat::look_rotation(forward, up) * quat::rotation_y(quat::numbers::pi_v<T>);
         const vec3<T> image_up = quat::rotate(q, vec3<T>{0, 1, 0});
         CHECK(quat::norm(quat::rotate(q, vec3<T>{0, 0, 1}) - forward) <= 8 * eps<T>);
         CHECK(quat::dot(image_up, up) > 0);
@@ -425,7 +426,7 @@ TEMPLATE_TEST_CASE("docs: +z forward, y up is look_rotation(f, up) * rotation_y(
     }
     // Looking along +z with y up is the identity.
     CHECK(quat::angle_between(quat::look_rotation(vec3<T>{0, 0, 1}, vec3<T>{0, 1, 0}) *
-                                  quat::rotation_y(quat::pi_v<T>),
+                                  quat::rotation_y(quat::numbers::pi_v<T>),
                               quaternion<T>::identity()) <= 4 * eps<T>);
 }
 
@@ -436,8 +437,9 @@ TEMPLATE_TEST_CASE(
     using T = TestType;
     const quaternion<T> body{T(0.5), T(0.5), T(0.5), T(-0.5)};
     // The same constant as rotation_z(-pi/2) * rotation_y(pi/2).
-    CHECK(quat::angle_between(body, quat::rotation_z(-quat::pi_v<T> / 2) *
-                                        quat::rotation_y(quat::pi_v<T> / 2)) <= 4 * eps<T>);
+    CHECK(quat::angle_between(body, quat::rotation_z(-quat::numbers::pi_v<T> / 2) *
+                                        quat::rotation_y(quat::numbers::pi_v<T> / 2)) <=
+          4 * eps<T>);
     quat::test::random_rotations random;
     for (int i = 0; i < 1000; ++i) {
         const vec3<T> forward = random.unit_vector<T>(), up = random.unit_vector<T>();

@@ -195,7 +195,7 @@ TEST_CASE("antiparallel pairs give the half turn (scipy #20555 returned the iden
     const std::vector<vec3<double>> sources{{1, 0, 0}, {0, 1, 0}}, targets{{-1, 0, 0}, {0, -3, 0}};
     const quat::alignment<double> both = quat::align_vectors(targets, sources);
     CHECK(both.unique);
-    CHECK(quat::approx_equal(both.rotation, quat::rotation_z(quat::pi), 4 * eps<double>));
+    CHECK(quat::approx_equal(both.rotation, quat::rotation_z(quat::numbers::pi), 4 * eps<double>));
     // One antiparallel pair: the half turn rotation_between chooses; it maps the source onto the
     // target's direction, and any half turn about an axis across it would do, so not unique.
     quat::test::random_rotations random;
@@ -561,3 +561,68 @@ constexpr quat::alignment<double> spread =
     quat::align_vectors(spread_targets, spread_sources, std::array<double, 2>{1e10, 1});
 static_assert(spread.unique && spread.rotation.w - 0.5 < 1e-15 && 0.5 - spread.rotation.w < 1e-15 &&
               spread.rotation.x - 0.5 < 1e-15 && 0.5 - spread.rotation.z < 1e-15);
+
+TEST_CASE("try_align_vectors: the alignment, or empty for input it does not align",
+          "[align_vectors]") {
+    const std::vector<vec3<double>> sources{{1, 0, 0}, {0, 2, 0}, {0, 0, 3}};
+    const quaternion<double> turn = quat::normalize(quaternion<double>{0.9, 0.1, -0.3, 0.2});
+    std::vector<vec3<double>> targets;
+    for (const vec3<double>& s : sources) targets.push_back(quat::rotate(turn, s));
+    const std::vector<double> weights{1, 2, 0.5};
+
+    // Where the input is good, exactly the plain function's result.
+    const auto checked = quat::try_align_vectors(targets, sources);
+    REQUIRE(checked);
+    const quat::alignment<double> plain = quat::align_vectors(targets, sources);
+    CHECK(checked->rotation == plain.rotation);
+    CHECK(checked->rssd == plain.rssd);
+    CHECK(checked->unique);
+    const auto weighted = quat::try_align_vectors(targets, sources, weights);
+    REQUIRE(weighted);
+    CHECK(weighted->rotation == quat::align_vectors(targets, sources, weights).rotation);
+
+    // Non-unique is not bad input: one pair aligns, with unique = false.
+    const std::vector<vec3<double>> one_target{targets[0]}, one_source{sources[0]};
+    const auto one = quat::try_align_vectors(one_target, one_source);
+    REQUIRE(one);
+    CHECK_FALSE(one->unique);
+
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<vec3<double>> none, with_nan{{1, 0, 0}, {0, nan, 0}, {0, 0, 1}};
+    CHECK_FALSE(quat::try_align_vectors(none, none));
+    CHECK_FALSE(quat::try_align_vectors(one_target, sources));
+    CHECK_FALSE(quat::try_align_vectors(with_nan, sources));
+    CHECK_FALSE(quat::try_align_vectors(targets, with_nan));
+    CHECK_FALSE(quat::try_align_vectors(targets, sources, std::vector<double>{1, 2}));
+    CHECK_FALSE(quat::try_align_vectors(targets, sources, std::vector<double>{1, -1, 1}));
+    CHECK_FALSE(quat::try_align_vectors(targets, sources, std::vector<double>{1, nan, 1}));
+    CHECK_FALSE(quat::try_align_vectors(targets, sources, std::vector<double>{0, 0, 0}));
+    CHECK_FALSE(quat::try_align_vectors(targets, sources, std::vector<double>{inf, inf, 1}));
+    // One infinite weight is scipy's (>= 1.11) exact pair, not bad input.
+    CHECK(quat::try_align_vectors(targets, sources, std::vector<double>{inf, 1, 1}));
+    // Vectors near max() that no rotation brings together: s and -s both onto t leave
+    // rssd = 2 |t|, beyond max().
+    const double huge = std::numeric_limits<double>::max();
+    const std::vector<vec3<double>> far_targets{{huge, 0, 0}, {huge, 0, 0}};
+    const std::vector<vec3<double>> far_sources{{huge, 0, 0}, {-huge, 0, 0}};
+    CHECK(std::isinf(quat::align_vectors(far_targets, far_sources).rssd));
+    CHECK_FALSE(quat::try_align_vectors(far_targets, far_sources));
+}
+
+TEST_CASE("alignment_with_sensitivity is an alignment with one more field", "[align_vectors]") {
+    const std::vector<vec3<double>> sources{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
+    const quaternion<double> turn = quat::normalize(quaternion<double>{0.5, 0.5, -0.1, 0.3});
+    std::vector<vec3<double>> targets;
+    for (const vec3<double>& s : sources)
+        targets.push_back(quat::rotate(turn, s) + vec3<double>{1e-3, 0, 0});
+    const std::vector<double> weights{1, 1, 2, 1};
+    const quat::alignment_with_sensitivity<double> both =
+        quat::align_vectors_with_sensitivity(targets, sources, weights);
+    const quat::alignment<double>& fit = both;  // passes where an alignment is taken
+    const quat::alignment<double> plain = quat::align_vectors(targets, sources, weights);
+    CHECK(fit.rotation == plain.rotation);
+    CHECK(fit.rssd == plain.rssd);
+    CHECK(fit.unique == plain.unique);
+    CHECK(both.sensitivity(0, 0) > 0);
+}

@@ -232,8 +232,8 @@ TEST_CASE(
     quat::rotate(q, points, out);
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < n; ++i)
-        mismatches +=
-            max_difference(out[i], quat::rotate(m, points[i])) <= 1e-4f ? 0 : 1;  // |p| < 60
+        if (!(max_difference(out[i], quat::rotate(m, points[i])) <= 1e-4f))
+            ++mismatches;  // |p| < 60
     CHECK(mismatches == 0);
     quat::rotate(m, points, points);  // in place
     CHECK(points == out);
@@ -251,8 +251,8 @@ TEST_CASE("struct-of-arrays rotate beyond 16 MiB (streaming stores) equals the s
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const quat::vec3<float> expected = quat::rotate(m, quat::vec3<float>{x[i], y[i], z[i]});
-        mismatches +=
-            max_difference(quat::vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f ? 0 : 1;
+        if (!(max_difference(quat::vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f))
+            ++mismatches;
     }
     CHECK(mismatches == 0);
 }

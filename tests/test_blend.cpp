@@ -80,7 +80,7 @@ TEST_CASE("blend keeps a twisted joint rigid where blended matrices collapse", "
     // flattens the cross-section to a line (the candy wrapper); the blend turns it by 90 degrees.
     const auto rest = quat::dual_quaterniond::identity();
     const auto twisted =
-        quat::to_dual_quaternion(quat::rotation_x(quat::pi), vec3<double>{0, 0, 0});
+        quat::to_dual_quaternion(quat::rotation_x(quat::numbers::pi), vec3<double>{0, 0, 0});
     const std::vector<quat::dual_quaterniond> bones{rest, twisted};
     const std::vector<double> weights{0.5, 0.5};
     const auto blended = quat::blend(bones, weights);

@@ -6,6 +6,7 @@
 #include <quat/quat.hpp>
 
 #include "support/catch.hpp"
+#include "support/random.hpp"
 #include "support/tolerance.hpp"
 
 using namespace quat;
@@ -95,5 +96,39 @@ TEST_CASE("compile-time sin, cos and atan2 track <cmath> over rotation angles", 
         const long double r = std::abs(x) * 1e3L + 1e-300L;
         CHECK(static_cast<double>(detail::compile_time::sqrt(r)) ==
               Approx(std::sqrt(static_cast<double>(r))).epsilon(2 * test::eps<double>));
+    }
+}
+
+// The first-use spellings in constant expressions.
+static_assert(quatd{0, 0, 0, 1} * vec3<double>{1, 0, 0} == vec3<double>{-1, 0, 0});
+static_assert(rotation_matrix<double>::identity() * vec3<double>{1, 2, 3} == vec3<double>{1, 2, 3});
+static_assert(dual_quaterniond::from_translation({1, 2, 3}) * vec3<double>{1, 1, 1} ==
+              vec3<double>{2, 3, 4});
+static_assert(inverse(homogeneous_matrix<double>::from_translation({1, 2, 3})) *
+                  vec3<double>{1, 2, 3} ==
+              vec3<double>{0, 0, 0});
+static_assert(angle(quatd{0, 0, 1, 0}) == numbers::pi &&
+              axis(quatd{0, 0, 1, 0}) == vec3<double>{0, 1, 0});
+static_assert(radians(180.0) == numbers::pi && vec3<double>{4, 5, 6}[1] == 5);
+static_assert(lerp(vec3<double>{0, 0, 0}, vec3<double>{2, 4, 8}, 0.5) == vec3<double>{1, 2, 4});
+
+TEMPLATE_TEST_CASE("compile-time exp and log of quaternions equal run-time ones within 8 epsilon",
+                   "[constexpr][exp]", float, double, long double) {
+    using T = TestType;
+    const T tol = test::tolerance<T>::constexpr_vs_runtime;
+    static constexpr quaternion<T> q{T(0.7), T(-0.4), T(1.1), T(0.3)};
+    static constexpr quaternion<T> e = exp(q), l = log(q);
+    const quaternion<T> hidden{run_time(q.w), run_time(q.x), run_time(q.y), run_time(q.z)};
+    CHECK(test::max_difference(e, exp(hidden)) <= tol * 4);  // |e| = e^0.7: a few units
+    CHECK(test::max_difference(l, log(hidden)) <= tol);
+    // The scalar kernels over the whole range, against <cmath>.
+    for (int n = -700; n <= 700; n += 7) {
+        const long double x = n + 0.375L;
+        CHECK(static_cast<double>(detail::compile_time::exp(x)) ==
+              Approx(std::exp(static_cast<double>(x))).epsilon(2 * test::eps<double>).margin(0));
+        const long double y = std::exp(static_cast<long double>(n) * 0.9L);
+        CHECK(
+            static_cast<double>(detail::compile_time::log(y)) ==
+            Approx(std::log(static_cast<double>(y))).epsilon(2 * test::eps<double>).margin(1e-300));
     }
 }

@@ -90,7 +90,7 @@ TEMPLATE_TEST_CASE("through gimbal lock the free angle keeps its previous value"
                    "[euler][continuous]", float, double) {
     using T = TestType;
     const T eps = std::numeric_limits<T>::epsilon();
-    const T pi = quat::pi_v<T>;
+    const T pi = quat::numbers::pi_v<T>;
     for_each_convention<T>([&](auto convention) {
         using E = decltype(convention);
         constexpr sequence S = E::axis_sequence;
@@ -121,7 +121,7 @@ TEMPLATE_TEST_CASE("exactly at the lock the free angle is held whatever its size
     // rad missed it, and the output jumped to the plain extraction's split (third angle 0).
     using T = TestType;
     const T eps = std::numeric_limits<T>::epsilon();
-    const T pi = quat::pi_v<T>;
+    const T pi = quat::numbers::pi_v<T>;
     quat::test::random_rotations random;
     for_each_convention<T>([&](auto convention) {
         using E = decltype(convention);
@@ -147,11 +147,13 @@ TEMPLATE_TEST_CASE("exactly at the lock the free angle is held whatever its size
 
 TEST_CASE("angles far from the canonical range stay where previous was", "[euler][continuous]") {
     const quaternion<double> q = quat::to_quaternion(euler<double>{0.3, 0.2, -0.1});
-    const euler<double> previous{0.3 + 200 * quat::pi, 0.2 - 4 * quat::pi, -0.1 + 318 * quat::pi};
+    const euler<double> previous{0.3 + 200 * quat::numbers::pi, 0.2 - 4 * quat::numbers::pi,
+                                 -0.1 + 318 * quat::numbers::pi};
     const euler<double> out = quat::to_euler(q, previous);
     CHECK(largest_step(out, previous) <= 1e-12);
     // The mirror triple, unwrapped, when previous is nearer to it.
-    const euler<double> mirrored{0.3 + quat::pi, quat::pi - 0.2, -0.1 + quat::pi};
+    const euler<double> mirrored{0.3 + quat::numbers::pi, quat::numbers::pi - 0.2,
+                                 -0.1 + quat::numbers::pi};
     CHECK(largest_step(quat::to_euler(q, mirrored), mirrored) <= 1e-14);
 }
 
@@ -174,5 +176,5 @@ TEST_CASE("continuous Euler angles are constexpr", "[euler][continuous][constexp
     constexpr euler<double> out =
         quat::to_euler(quat::to_quaternion(euler<double>{-3.2, 0.1, 3.1}), previous);
     static_assert(out[0] > 3.0 && out[2] < -3.0, "unwrapped past pi at compile time");
-    CHECK(out[0] == Approx(-3.2 + 2 * quat::pi));
+    CHECK(out[0] == Approx(-3.2 + 2 * quat::numbers::pi));
 }

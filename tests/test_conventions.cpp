@@ -23,7 +23,7 @@ using tol = quat::test::tolerance<double>;
 
 namespace {
 
-constexpr double pi = quat::pi;
+constexpr double pi = quat::numbers::pi;
 
 /// Random rotations whose yaw-pitch-roll pitch stays 0.1 rad away from gimbal lock.
 quatd away_from_lock(quat::test::random_rotations& random) {

@@ -1,8 +1,10 @@
 // Specification of conversions.hpp: quaternion <-> matrix <-> axis-angle <-> rotation vector.
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <quat/conversions.hpp>
 
 #include "support/catch.hpp"
@@ -100,7 +102,8 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
     CHECK(none.angle == 0);
     CHECK(none.axis == vec3<T>{1, 0, 0});
     // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
-    const quaternion<T> quarter = quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::pi_v<T> / 2});
+    const quaternion<T> quarter =
+        quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::numbers::pi_v<T> / 2});
     CHECK(quarter.w == Approx(std::sqrt(0.5)));
     CHECK(quarter.z == Approx(std::sqrt(0.5)));
 }
@@ -146,7 +149,7 @@ TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles t
     CHECK(quat::from_rotation_vector(vec3<T>{0, 0, 0}) == quaternion<T>::identity());
     CHECK(quat::to_rotation_vector(quaternion<T>::identity()) == vec3<T>{0, 0, 0});
     const vec3<T> half_turn = quat::to_rotation_vector(quaternion<T>{0, 0, 1, 0});
-    CHECK(half_turn.y == Approx(quat::pi_v<T>));
+    CHECK(half_turn.y == Approx(quat::numbers::pi_v<T>));
 }
 
 // ---- Modified Rodrigues parameters ---------------------------------------------------------------
@@ -196,7 +199,7 @@ TEMPLATE_TEST_CASE("to_mrp is axis * tan(angle / 4) for angles from 1e-30 to pi"
         CHECK(relative_difference(quat::to_mrp(q), reference_mrp(q)) <= 4 * quat::test::eps<T>);
     }
     // scipy: Rotation.from_rotvec([0, 0, pi/2]).as_mrp() == [0, 0, tan(pi/8)] = 0.41421356...
-    const vec3<T> quarter = quat::to_mrp(quat::rotation_z(quat::pi_v<T> / 2));
+    const vec3<T> quarter = quat::to_mrp(quat::rotation_z(quat::numbers::pi_v<T> / 2));
     CHECK(quarter.z == Approx(0.41421356237309515).epsilon(4 * quat::test::eps<T>));
     CHECK(quarter.x == 0);
     CHECK(quat::to_mrp(quaternion<T>::identity()) == vec3<T>{0, 0, 0});
@@ -261,4 +264,41 @@ TEMPLATE_TEST_CASE("to_mrp and from_mrp are inverse on rotations", "[conversions
         CHECK(back.w >= 0);
         CHECK(quat::test::max_difference(back, q.w < 0 ? -q : q) <= tolerance<T>::round_trip);
     }
+}
+
+TEMPLATE_TEST_CASE("angle(q) and axis(q) are to_axis_angle(q).angle and .axis, bit for bit",
+                   "[conversions][first-use]", float, double) {
+    using T = TestType;
+    const auto same_bits = [](const auto& a, const auto& b) {
+        return std::memcmp(&a, &b, sizeof a) == 0;
+    };
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        // Any scale and either sign: the range is [0, pi], q and -q alike.
+        const quaternion<T> q = random.unit_quaternion<T>() * random.uniform<T>(-4, 4);
+        const axis_angle<T> long_form = quat::to_axis_angle(q);
+        CHECK(same_bits(quat::angle(q), long_form.angle));
+        CHECK(same_bits(quat::axis(q), long_form.axis));
+        CHECK(quat::angle(q) >= 0);
+        CHECK(quat::angle(q) <= quat::numbers::pi_v<T>);
+        CHECK(same_bits(quat::angle(-q), quat::angle(q)));
+        // Eigen's AngleAxis(q) has the same conventions: angle in [0, pi], axis flipped with q.
+        const quaternion<T> u = quat::normalize(q);
+        const Eigen::AngleAxis<T> e(Eigen::Quaternion<T>(u.w, u.x, u.y, u.z));
+        CHECK(std::abs(e.angle() - quat::angle(u)) <= 64 * std::numeric_limits<T>::epsilon());
+        const vec3<T> eigen_axis{e.axis().x(), e.axis().y(), e.axis().z()};
+        CHECK(max_difference(eigen_axis, quat::axis(u)) <=
+              64 * std::numeric_limits<T>::epsilon() / quat::angle(u));
+    }
+    CHECK(quat::angle(quaternion<T>::identity()) == 0);
+    CHECK(quat::axis(quaternion<T>::identity()) == vec3<T>{1, 0, 0});
+    CHECK(quat::axis(-quaternion<T>::identity()) == vec3<T>{1, 0, 0});
+    CHECK(quat::angle(quaternion<T>{0, 0, 0, 2}) == quat::numbers::pi_v<T>);
+    CHECK(quat::axis(quaternion<T>{0, 0, -3, 0}) == vec3<T>{0, -1, 0});
+    CHECK(quat::angle(quaternion<T>{0, 0, 0, 0}) == 0);  // as to_axis_angle: angle 0, axis NaN
+    CHECK(std::isnan(quat::axis(quaternion<T>{0, 0, 0, 0}).x));
+    CHECK(std::isnan(quat::angle(quaternion<T>{1, std::numeric_limits<T>::infinity(), 0, 0})));
+    CHECK(std::isnan(quat::axis(quaternion<T>{std::numeric_limits<T>::quiet_NaN(), 0, 0, 1}).x));
+    static_assert(quat::angle(quat::quatd{0, 1, 0, 0}) == quat::numbers::pi);
+    static_assert(quat::axis(quat::quatd{0, 0, 1, 0}) == vec3<double>{0, 1, 0});
 }

@@ -1,7 +1,9 @@
 // Specification of dual_quaternion.hpp: dual quaternions as rigid motions x -> R x + t, checked
 // against 4x4 matrices in long double (tests/support/rigid_reference.hpp) and GLM's tdualquat.
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/glm.hpp>
@@ -31,6 +33,12 @@ vec3<long double> reference_transform(const dual_quaternion<T>& dq, const vec3<T
     return {m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3],
             m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3],
             m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3]};
+}
+
+/// True when a and b hold the same bits: the same operations, not merely equal values.
+template <class V>
+bool same_bits(const V& a, const V& b) {
+    return std::memcmp(&a, &b, sizeof(V)) == 0;
 }
 
 template <class T>
@@ -231,4 +239,78 @@ TEST_CASE("try_normalize of a dual quaternion is empty when the dual part overfl
     const auto normalized = quat::try_normalize(fine);
     REQUIRE(normalized.has_value());
     CHECK(normalized->dual.x == Approx(10.0f));
+}
+
+TEMPLATE_TEST_CASE("dq * p is transform(dq, p), bit for bit, and GLM's tdualquat * vec3",
+                   "[dual_quaternion][first-use]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int i = 0; i < 2000; ++i) {
+        const dual_quaternion<T> dq = random.rigid_motion<T>();
+        const vec3<T> p = random.vector<T>(3.0);
+        // A point transform: rotated, then translated (transform_vector turns a direction only).
+        CHECK(same_bits(dq * p, quat::transform(dq, p)));
+        const glm::tdualquat<T> theirs(quat::to_glm(dq.real), quat::to_glm(dq.dual));
+        CHECK(max_difference(quat::from_glm(theirs * quat::to_glm(p)), dq * p) <= 64 * eps<T>);
+    }
+    constexpr auto shift = quat::dual_quaterniond::from_translation({4, 5, 6});
+    static_assert(shift * vec3<double>{1, -2, 3} == vec3<double>{5, 3, 9});
+}
+
+TEMPLATE_TEST_CASE("a pure rotation and a pure translation are the long forms with zero parts",
+                   "[dual_quaternion][first-use]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const vec3<T> zero{T(0), T(0), T(0)};
+    for (int i = 0; i < 1000; ++i) {
+        const quaternion<T> q = random.unit_quaternion<T>();
+        const vec3<T> t = random.vector<T>(2.0), p = random.vector<T>(1.0);
+        CHECK(same_bits(quat::to_dual_quaternion(q), quat::to_dual_quaternion(q, zero)));
+        CHECK(same_bits(dual_quaternion<T>::from_translation(t),
+                        quat::to_dual_quaternion(quaternion<T>::identity(), t)));
+        // What they mean: x -> R x, and x -> x + t exactly (half of t, doubled back, is exact).
+        CHECK(quat::to_dual_quaternion(q) * p == quat::rotate(q, p));
+        CHECK(quat::translation_of(dual_quaternion<T>::from_translation(t)) == t);
+        CHECK(dual_quaternion<T>::from_translation(t) * p == p + t);
+        // Composed, rotation first: the motion to_dual_quaternion(q, t) builds.
+        const dual_quaternion<T> composed =
+            dual_quaternion<T>::from_translation(t) * quat::to_dual_quaternion(q);
+        CHECK(max_difference(composed.real, q) == 0);
+        CHECK(max_difference(composed.dual, quat::to_dual_quaternion(q, t).dual) <= 4 * eps<T>);
+    }
+    static_assert(quat::to_dual_quaternion(quat::quatd{0, 0, 0, 1}).dual ==
+                  quat::quatd{0, 0, 0, 0});
+}
+
+TEST_CASE("a scalar times a dual quaternion scales all eight components, as GLM's",
+          "[dual_quaternion][first-use]") {
+    quat::test::random_rotations random;
+    for (int i = 0; i < 500; ++i) {
+        const dual_quaternion<double> dq = random.rigid_motion<double>();
+        const double s = random.uniform<double>(-3, 3);
+        const dual_quaternion<double> scaled = dq * s;
+        CHECK(same_bits(scaled.real, dq.real * s));
+        CHECK(same_bits(scaled.dual, dq.dual * s));
+        CHECK(same_bits(s * dq, scaled));
+        CHECK(same_bits(dq / s, dual_quaternion<double>{dq.real / s, dq.dual / s}));
+        dual_quaternion<double> in_place = dq;
+        in_place *= s;
+        CHECK(same_bits(in_place, scaled));
+        in_place = dq;
+        in_place /= s;
+        CHECK(same_bits(in_place, dq / s));
+        const glm::tdualquat<double> theirs(quat::to_glm(dq.real), quat::to_glm(dq.dual));
+        const glm::tdualquat<double> glm_scaled = theirs * s, glm_divided = theirs / s;
+        CHECK(max_difference(quat::from_glm(glm_scaled.real), scaled.real) == 0);
+        CHECK(max_difference(quat::from_glm(glm_scaled.dual), scaled.dual) == 0);
+        CHECK(max_difference(quat::from_glm(glm_divided.dual), (dq / s).dual) == 0);
+    }
+    // The scalar converts to the dual quaternion's precision, as for quaternion.
+    const quat::dual_quaternionf f = quat::dual_quaternionf::identity();
+    static_assert(std::is_same_v<decltype(f * 2), quat::dual_quaternionf>);
+    static_assert(std::is_same_v<decltype(0.5 * f), quat::dual_quaternionf>);
+    CHECK((f * 2).real.w == 2.0f);
+    CHECK((f / 4).real.w == 0.25f);
+    constexpr auto doubled = 2.0 * quat::dual_quaterniond::identity();
+    static_assert(doubled.real.w == 2 && doubled.dual.w == 0);
 }

@@ -1,5 +1,5 @@
-// Specification of elementwise.hpp: rotate_each, compose_each and the batch to_matrix and
-// to_quaternion give the scalar results element by element, at every count (the tails of every
+// Specification of elementwise.hpp: rotate_each, compose_each, to_matrix_each and
+// to_quaternion_each give the scalar results element by element, at every count (the tails of every
 // vector width), in place, through containers and in both layouts; NaN stays in its element; a
 // user-defined scalar gets the scalar functions' results.
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <quat/elementwise.hpp>
@@ -155,7 +156,7 @@ TEMPLATE_TEST_CASE("compose_each is a[i] * b[i], also in place", "[elementwise]"
     }
 }
 
-TEMPLATE_TEST_CASE("batch to_matrix and to_quaternion equal the scalar conversions",
+TEMPLATE_TEST_CASE("to_matrix_each and to_quaternion_each equal the scalar conversions",
                    "[elementwise]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
@@ -165,11 +166,11 @@ TEMPLATE_TEST_CASE("batch to_matrix and to_quaternion equal the scalar conversio
         if (n > 3) q[0] = quaternion<T>::identity(), q[1] = {0, 1, 0, 0}, q[2] = {0, 0, 1, 0};
         if (n > 3) q[3] = {0, 0, 0, 1};
         std::vector<rotation_matrix<T>> m(n);
-        quat::to_matrix(q.data(), m.data(), n);
+        quat::to_matrix_each(q.data(), m.data(), n);
         for (std::size_t i = 0; i < n; ++i)
             CHECK(max_difference(m[i], quat::to_matrix(q[i])) <= contraction<T>);
         std::vector<quaternion<T>> back(n);
-        quat::to_quaternion(m, back);
+        quat::to_quaternion_each(m, back);
         for (std::size_t i = 0; i < n; ++i)
             CHECK(max_difference(back[i], quat::to_quaternion(m[i])) <= contraction<T>);
     }
@@ -188,12 +189,50 @@ TEST_CASE("the container forms accept std::vector, std::array and C arrays", "[e
     quat::compose_each(q, q, products);
     CHECK(max_difference(products[0], quarter_z * quarter_z) <= contraction<double>);
     std::array<rotation_matrix<double>, 2> m{};
-    quat::to_matrix(q, m);
+    quat::to_matrix_each(q, m);
     CHECK(m[1] == rotation_matrix<double>::identity());
     std::vector<quat::quatd> back(2);
-    quat::to_quaternion(m, back);
+    quat::to_quaternion_each(m, back);
     CHECK(back[1] == quat::quatd::identity());
 }
+
+namespace {
+
+// Detects whether to_matrix / to_quaternion accept (input, output) arrays: they must not, since the
+// element-wise conversions are spelled to_matrix_each and to_quaternion_each.
+template <class Input, class Output, class = void>
+struct plain_to_matrix_takes_arrays : std::false_type {};
+template <class Input, class Output>
+struct plain_to_matrix_takes_arrays<
+    Input, Output,
+    std::void_t<decltype(quat::to_matrix(std::declval<Input>(), std::declval<Output>()))>>
+    : std::true_type {};
+template <class Input, class Output, class = void>
+struct plain_to_quaternion_takes_arrays : std::false_type {};
+template <class Input, class Output>
+struct plain_to_quaternion_takes_arrays<
+    Input, Output,
+    std::void_t<decltype(quat::to_quaternion(std::declval<Input>(), std::declval<Output>()))>>
+    : std::true_type {};
+template <class Input, class Output, class = void>
+struct to_matrix_each_accepts : std::false_type {};
+template <class Input, class Output>
+struct to_matrix_each_accepts<
+    Input, Output,
+    std::void_t<decltype(quat::to_matrix_each(std::declval<Input>(), std::declval<Output>()))>>
+    : std::true_type {};
+
+using quaternions = std::vector<quat::quatd>;
+using matrices = std::vector<rotation_matrix<double>>;
+// One spelling: element i of the output from element i of the input is _each.
+static_assert(to_matrix_each_accepts<const quaternions&, matrices&>::value);
+static_assert(!plain_to_matrix_takes_arrays<const quaternions&, matrices&>::value);
+static_assert(!plain_to_quaternion_takes_arrays<const matrices&, quaternions&>::value);
+// The container forms take only containers of the element type they convert.
+static_assert(!to_matrix_each_accepts<const std::vector<vec3<double>>&, matrices&>::value);
+static_assert(!to_matrix_each_accepts<const quaternions&, std::vector<quat::quatd>&>::value);
+
+}  // namespace
 
 TEMPLATE_TEST_CASE("NaN in one element gives NaN in that element only", "[elementwise]", float,
                    double) {
@@ -210,10 +249,10 @@ TEMPLATE_TEST_CASE("NaN in one element gives NaN in that element only", "[elemen
     std::vector<quaternion<T>> products(n);
     quat::compose_each(q, q, products);
     std::vector<rotation_matrix<T>> m(n);
-    quat::to_matrix(q, m);
+    quat::to_matrix_each(q, m);
     m[9](2, 1) = nan;
     std::vector<quaternion<T>> back(n);
-    quat::to_quaternion(m, back);
+    quat::to_quaternion_each(m, back);
     for (std::size_t i = 0; i < n; ++i) {
         INFO("element " << i);
         CHECK(std::isnan(out[i].x + out[i].y + out[i].z) == (i == 5 || i == 17));

@@ -80,7 +80,7 @@ TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in
         using E = decltype(convention);
         constexpr sequence S = E::axis_sequence;
         constexpr frame F = E::rotation_frame;
-        const T pi = quat::pi_v<T>;
+        const T pi = quat::numbers::pi_v<T>;
         for (int n = 0; n < 2000; ++n) {
             const quaternion<T> q = random.unit_quaternion<T>();
             const E e = quat::to_euler<S, F>(q);
@@ -101,7 +101,7 @@ TEMPLATE_TEST_CASE("quaternion -> Euler -> quaternion reproduces the rotation in
 
 TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e-12", "[euler]") {
     quat::test::random_rotations random;
-    const double pi = quat::pi;
+    const double pi = quat::numbers::pi;
     for_each_convention<double>([&](auto convention) {
         using E = decltype(convention);
         constexpr sequence S = E::axis_sequence;
@@ -132,7 +132,7 @@ TEST_CASE("at and near gimbal lock the angles still reproduce the rotation to 1e
 TEST_CASE("gimbal lock: two different Euler triples give one rotation, and extract_euler says so",
           "[euler]") {
     using E = euler<double>;  // R = Rz(yaw) Ry(pitch) Rx(roll)
-    const double pitch = quat::pi / 2;
+    const double pitch = quat::numbers::pi / 2;
     // With pitch = 90°, yaw and roll turn about the same world axis: only yaw - roll matters.
     const E a{{0.7, pitch, 0.2}}, b{{0.9, pitch, 0.4}};
     CHECK(quat::angle_between(quat::to_quaternion(a), quat::to_quaternion(b)) <= 1e-15);

@@ -4,7 +4,8 @@
 // - unary -, binary + - * /, compound += and -=, and the comparisons < <= > >= == != (returning
 //   bool);
 // - std::numeric_limits<T>: epsilon(), min(), max(), infinity(), quiet_NaN();
-// - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for built-ins).
+// - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for built-ins);
+//   exp and log as well, for exp(quaternion) and log(quaternion) only.
 // Nothing needs to be constexpr: user::runtime_real below has no constexpr member at all. Operations
 // must not throw (quat's functions are noexcept). The counting scalar of quat_bench is one such type.
 #include <algorithm>
@@ -47,6 +48,8 @@ inline real cos(real a) noexcept { return real(std::cos(a.value)); }
 inline real atan2(real y, real x) noexcept { return real(std::atan2(y.value, x.value)); }
 inline real asin(real a) noexcept { return real(std::asin(a.value)); }
 inline real abs(real a) noexcept { return real(std::abs(a.value)); }
+inline real exp(real a) noexcept { return real(std::exp(a.value)); }
+inline real log(real a) noexcept { return real(std::log(a.value)); }
 
 /// The same list with nothing constexpr: a type that is not a literal type (it has a
 /// user-provided destructor), like an arbitrary-precision or automatic-differentiation scalar.
@@ -91,6 +94,8 @@ inline runtime_real atan2(runtime_real y, runtime_real x) noexcept {
 }
 inline runtime_real asin(runtime_real a) noexcept { return runtime_real(std::asin(a.value)); }
 inline runtime_real abs(runtime_real a) noexcept { return runtime_real(std::abs(a.value)); }
+inline runtime_real exp(runtime_real a) noexcept { return runtime_real(std::exp(a.value)); }
+inline runtime_real log(runtime_real a) noexcept { return runtime_real(std::log(a.value)); }
 
 }  // namespace user
 
@@ -298,6 +303,7 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     const std::vector<quaternion<R>> keys{a, b, c, a};
     const std::vector<quatd> keys_d{ad, bd, cd, ad};
     check_same(keyframe_slerp(key_times, keys, r(1.7)), keyframe_slerp(key_times_d, keys_d, 1.7));
+    check_same(keyframe_squad(key_times, keys, r(1.7)), keyframe_squad(key_times_d, keys_d, 1.7));
     const rotation_spline<R> spline(key_times, keys);
     const rotation_spline<double> spline_d(key_times_d, keys_d);
     check_same(spline(r(1.7)), spline_d(1.7));
@@ -358,8 +364,8 @@ TEMPLATE_TEST_CASE("the element-wise batches give a user scalar the scalar funct
     }
     quat::rotate_each(q, p, out);
     quat::compose_each(q, q, products);
-    quat::to_matrix(q, m);
-    quat::to_quaternion(m, back);
+    quat::to_matrix_each(q, m);
+    quat::to_quaternion_each(m, back);
     for (std::size_t i = 0; i < n; ++i) {
         const quat::vec3<R> rotated = quat::rotate(q[i], p[i]);
         CHECK((same(out[i].x, rotated.x.value) && same(out[i].y, rotated.y.value) &&
@@ -374,4 +380,51 @@ TEMPLATE_TEST_CASE("the element-wise batches give a user scalar the scalar funct
         CHECK((same(back[i].w, converted.w.value) && same(back[i].x, converted.x.value) &&
                same(back[i].y, converted.y.value) && same(back[i].z, converted.z.value)));
     }
+}
+
+TEMPLATE_TEST_CASE(
+    "the first-use spellings instantiate with a user-defined scalar and match double",
+    "[generic][first-use]", user::real, user::runtime_real) {
+    using namespace quat;
+    using R = TestType;
+    const auto r = [](double v) { return R(v); };
+    const quaternion<R> a = normalize(quaternion<R>{r(0.3), r(-0.2), r(0.9), r(0.1)});
+    const quatd ad = normalize(quatd{0.3, -0.2, 0.9, 0.1});
+    vec3<R> v{r(1), r(2), r(3)};
+    const vec3<double> vd{1, 2, 3};
+    CHECK(same((a * v).y, (ad * vd).y));
+    const rotation_matrix<R> m = to_matrix(a);
+    const rotation_matrix<double> md = to_matrix(ad);
+    CHECK(same((m * v).z, (md * vd).z));
+    v[1] = r(-2);
+    CHECK(same(v[1], -2));
+    CHECK(same(lerp(v, vec3<R>{r(3), r(2), r(1)}, r(0.25)).x,
+               lerp(vec3<double>{1, -2, 3}, vec3<double>{3, 2, 1}, 0.25).x));
+    const dual_quaternion<R> dq = to_dual_quaternion(a, v);
+    const dual_quaterniond dqd = to_dual_quaternion(ad, vec3<double>{1, -2, 3});
+    CHECK(same((dq * v).x, (dqd * vec3<double>{1, -2, 3}).x));
+    check_same(to_dual_quaternion(a).real, to_dual_quaternion(ad).real);
+    check_same(dual_quaternion<R>::from_translation(v).dual,
+               dual_quaterniond::from_translation(vec3<double>{1, -2, 3}).dual);
+    dual_quaternion<R> scaled = r(2) * dq * r(3) / r(4);
+    scaled *= r(0.5);
+    scaled /= r(2);
+    check_same(scaled.dual, ((2.0 * dqd * 3.0 / 4.0) * 0.5 / 2.0).dual);
+    const homogeneous_matrix<R> h = to_homogeneous(a, v);
+    const homogeneous_matrix<double> hd = to_homogeneous(ad, vec3<double>{1, -2, 3});
+    CHECK(same((h * v).y, (hd * vec3<double>{1, -2, 3}).y));
+    CHECK(same(inverse(h)(1, 3), inverse(hd)(1, 3)));
+    CHECK(same(to_homogeneous(a)(2, 1), to_homogeneous(ad)(2, 1)));
+    CHECK(same(to_homogeneous(m)(0, 2), to_homogeneous(md)(0, 2)));
+    CHECK(same(to_homogeneous(m, v)(1, 3), -2));
+    CHECK(same(homogeneous_matrix<R>::from_translation(v)(2, 3), 3));
+    CHECK(same(angle(a), angle(ad)));
+    CHECK(same(axis(a).z, axis(ad).z));
+    const quaternion<R> q{r(0.5), r(0.1), r(-0.2), r(0.3)};
+    const quatd qd{0.5, 0.1, -0.2, 0.3};
+    check_same(exp(q), exp(qd));
+    check_same(log(q), log(qd));
+    CHECK(same(radians(r(90)), radians(90.0)));
+    CHECK(same(degrees(r(1)), degrees(1.0)));
+    check_same(rotation_y<R>(0.7), rotation_y(0.7));
 }

@@ -126,3 +126,66 @@ TEMPLATE_TEST_CASE("slerp agrees with glm::slerp; exp and log with glm::exp and 
               tolerance<T>::glm);
     }
 }
+
+TEMPLATE_TEST_CASE("q * v and m * v agree with GLM's quat * vec3 and mat3 * vec3",
+                   "[glm][first-use]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const auto q = random.unit_quaternion<T>();
+        const vec3<T> v = random.vector<T>();
+        const glm::vec<3, T> g = to_glm(q) * to_glm(v), gm = glm::mat3_cast(to_glm(q)) * to_glm(v);
+        CHECK(quat::test::max_difference(q * v, from_glm(g)) <= tolerance<T>::glm * quat::norm(v));
+        CHECK(quat::test::max_difference(quat::to_matrix(q) * v, from_glm(gm)) <=
+              tolerance<T>::glm * quat::norm(v));
+    }
+}
+
+TEMPLATE_TEST_CASE("angle and axis agree with glm::angle and glm::axis up to GLM's range",
+                   "[glm][first-use]", float, double) {
+    // glm::angle is 2 acos(w), in [0, 2 pi]: for w < 0 it is 2 pi - quat::angle, and glm::axis is
+    // then -quat::axis (the same rotation). quat's angle is in [0, pi], as Eigen's AngleAxis. (GLM
+    // switches to 2 asin(|v|) for |w| > cos(1/2), which gives quat::angle again for w < -0.877.)
+    using T = TestType;
+    const T pi = quat::numbers::pi_v<T>;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const auto q = random.unit_quaternion<T>();
+        const T theirs = glm::angle(to_glm(q));
+        const vec3<T> their_axis = from_glm(glm::axis(to_glm(q)));
+        const T ours = quat::angle(q);
+        // GLM's acos(w) branch is taken for |w| <= cos(1/2); away from its ends it is well conditioned.
+        if (std::abs(q.w) > T(0.87)) continue;
+        if (q.w >= 0) {
+            CHECK(std::abs(ours - theirs) <= tolerance<T>::glm);
+            CHECK(quat::test::max_difference(quat::axis(q), their_axis) <= tolerance<T>::glm);
+        } else {
+            CHECK(std::abs(ours - (2 * pi - theirs)) <= tolerance<T>::glm);
+            CHECK(quat::test::max_difference(quat::axis(q), -their_axis) <= tolerance<T>::glm);
+        }
+    }
+    // The identity: GLM's axis is z, quat's (as Eigen's) is x.
+    CHECK(from_glm(glm::axis(to_glm(quaternion<T>::identity()))) == vec3<T>{0, 0, 1});
+    CHECK(quat::axis(quaternion<T>::identity()) == vec3<T>{1, 0, 0});
+}
+
+TEMPLATE_TEST_CASE("exp and log agree with glm::exp and glm::log where GLM's are defined",
+                   "[glm][first-use]", float, double) {
+    // glm::exp ignores w (it assumes a pure quaternion) and returns the identity for
+    // |v| < epsilon; glm::log is the principal logarithm, as quat::log.
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const vec3<T> v = random.vector<T>(2.0);
+        const quaternion<T> pure{0, v.x, v.y, v.z};
+        CHECK(quat::test::max_difference(quat::exp(pure), from_glm(glm::exp(to_glm(pure)))) <=
+              tolerance<T>::glm * (1 + quat::norm(v)));
+        const quaternion<T> q = random.unit_quaternion<T>() * random.uniform<T>(0.1, 10);
+        CHECK(quat::test::max_difference(quat::log(q), from_glm(glm::log(to_glm(q)))) <=
+              tolerance<T>::glm);
+    }
+    // Where GLM's shortcut shows: a tiny v.
+    const quaternion<T> tiny{0, T(1e-20), 0, 0};
+    CHECK(quat::exp(tiny).x == T(1e-20));
+    CHECK(glm::exp(to_glm(tiny)).x == 0);
+}

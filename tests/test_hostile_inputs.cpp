@@ -8,7 +8,7 @@
 // Expectations, per the docs:
 //   all NaN   - "NaN in every component", "gives NaN" (read as: every component of the result),
 //   non-finite- "a non-finite result", "Inf/NaN", IEEE arithmetic (operators, dot, cross,
-//               products), and wherever the doc says nothing (marked "silent doc"): README's
+//               products), and wherever the doc says nothing (marked "silent doc"): docs/api.md's
 //               promise, "returns a non-finite component".
 //   false     - predicates (is_unit, approx_equal).
 //   empty     - try_ functions.
@@ -626,9 +626,9 @@ HOSTILE("rotate_towards", "interpolation") {
     }
 }
 
-// ======================= fast_slerp.hpp =======================
+// ======================= slerp_fast.hpp =======================
 
-HOSTILE("corrected_nlerp and slerp_fast", "fast_slerp") {
+HOSTILE("corrected_nlerp and slerp_fast", "slerp_fast") {
     using T = TestType;
     const good<T> g;
     for (const T t : {T(0), T(0.3), T(1)})
@@ -870,7 +870,7 @@ HOSTILE("align_vectors", "align_vectors") {
     }
 }
 
-// ======================= squad.hpp, keyframe_slerp.hpp =======================
+// ================= squad.hpp, keyframe_slerp.hpp, keyframe_squad.hpp =================
 
 HOSTILE("squad", "squad") {
     using T = TestType;
@@ -940,6 +940,41 @@ HOSTILE("keyframe_slerp", "keyframe_slerp") {
     // Documented: t beyond the ends gives the end keyframe; +-Inf included.
     CHECK(quat::keyframe_slerp(times, keys, std::numeric_limits<T>::infinity()) == keys.back());
     CHECK(quat::keyframe_slerp(times, keys, -std::numeric_limits<T>::infinity()) == keys.front());
+}
+
+HOSTILE("keyframe_squad", "keyframe_squad") {
+    using T = TestType;
+    const good<T> g;
+    const std::vector<T> times{T(0), T(1), T(2.5), T(4), T(4.5)};
+    const std::vector<quaternion<T>> keys{g.q, g.q2, g.q3, g.q4, g.q};
+    const std::size_t last = keys.size() - 1;
+    for (const T t : {T(-1), T(0), T(0.5), T(1), T(3), T(4), T(4.2), T(4.5), T(9)})
+        for (std::size_t k = 0; k <= last; ++k)
+            for_each_bad<T>(
+                "rotations[k]", keys[k], [&](const quaternion<T>& q, const std::string& w) {
+                    std::vector<quaternion<T>> r = keys;
+                    r[k] = q;
+                    // Documented: non-finite on every segment the keyframe is an end or a control
+                    // point of (segments i - 1 to i + 2 use keyframes i - 1 to i + 2); the end
+                    // keyframes alone at and beyond the ends.
+                    std::size_t i = 0;
+                    while (i + 2 <= last && !(t < times[i + 1])) ++i;
+                    const bool used = t <= times[0]      ? k == 0
+                                      : t >= times[last] ? k == last
+                                                         : k + 1 >= i && k <= i + 2;
+                    if (used)
+                        EXPECT_NONFINITE("keyframe_squad(t=" << t << ") k=" << k
+                                                             << " (doc: non-finite) with " << w,
+                                         quat::keyframe_squad(times, r, t));
+                });
+    for_each_bad<T>("t", g.t, [&](T t, const std::string& w) {
+        if (std::isnan(t))
+            EXPECT_ALL_NAN("keyframe_squad (doc: NaN t gives NaN) with " << w,
+                           quat::keyframe_squad(times, keys, t));
+    });
+    // Documented: t beyond the ends gives the end keyframe; +-Inf included.
+    CHECK(quat::keyframe_squad(times, keys, std::numeric_limits<T>::infinity()) == keys.back());
+    CHECK(quat::keyframe_squad(times, keys, -std::numeric_limits<T>::infinity()) == keys.front());
 }
 
 // ======================= rotation_spline.hpp =======================
@@ -1257,8 +1292,8 @@ HOSTILE("elementwise", "elementwise") {
             quat::compose_each(others, r, composed);
             check_one_bad<T>("compose_each(b bad) " + at + w, composed, k);
             std::vector<rotation_matrix<T>> m(batch_size);
-            quat::to_matrix(r, m);
-            check_one_bad<T>("to_matrix batch " + at + w, m, k);
+            quat::to_matrix_each(r, m);
+            check_one_bad<T>("to_matrix_each " + at + w, m, k);
             // SoA rotate_each
             std::vector<T> qw, qx, qy, qz, px, py, pz;
             for (std::size_t i = 0; i < batch_size; ++i) {
@@ -1290,8 +1325,8 @@ HOSTILE("elementwise", "elementwise") {
             std::vector<rotation_matrix<T>> m = matrices;
             m[k] = mm;
             std::vector<quaternion<T>> out(batch_size);
-            quat::to_quaternion(m, out);
-            check_one_bad<T>("to_quaternion batch " + at + w, out, k);
+            quat::to_quaternion_each(m, out);
+            check_one_bad<T>("to_quaternion_each " + at + w, out, k);
         });
     }
 }

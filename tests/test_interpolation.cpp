@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -244,7 +245,7 @@ TEMPLATE_TEST_CASE("pow agrees with glm::pow for w >= 0 and not for w < 0", "[in
             const quaternion<T> long_way = from_glm(glm::pow(to_glm(far), t));
             if (t == T(0.5) && -far.w < std::cos(T(0.5))) {
                 CHECK(quat::angle_between(long_way, quat::pow(far, t)) ==
-                      Approx(quat::pi_v<T>).margin(1e-3));
+                      Approx(quat::numbers::pi_v<T>).margin(1e-3));
                 CHECK(distance(long_way, reference_pow(far, t, false)) <= tolerance<T>::glm);
             }
         }
@@ -310,4 +311,153 @@ TEMPLATE_TEST_CASE("rotate_towards with zero, negative, infinite and NaN input",
     CHECK(std::isnan(quat::rotate_towards(from, from, nan).w));
     CHECK(std::isnan(quat::rotate_towards(quaternion<T>{nan, 0, 0, 0}, to, T(0.1)).w));
     CHECK(std::isnan(quat::rotate_towards(from, quaternion<T>{0, inf, 0, 0}, T(0.1)).w));
+}
+
+namespace {
+
+// e^w (cos|v|, sin|v| v / |v|) in long double, straight from the definition.
+template <class T>
+quaternion<long double> reference_exp(const quaternion<T>& q) {
+    const long double w = q.w, x = q.x, y = q.y, z = q.z;
+    const long double length = std::sqrt(x * x + y * y + z * z), e = std::exp(w);
+    if (length == 0) return {e, x, y, z};
+    const long double k = e * std::sin(length) / length;
+    return {e * std::cos(length), x * k, y * k, z * k};
+}
+
+// (ln|q|, v / |v| atan2(|v|, w)) in long double.
+template <class T>
+quaternion<long double> reference_log(const quaternion<T>& q) {
+    const long double w = q.w, x = q.x, y = q.y, z = q.z;
+    const long double length = std::sqrt(x * x + y * y + z * z);
+    const long double k = std::atan2(length, w) / length;
+    return {std::log(std::sqrt(w * w + length * length)), x * k, y * k, z * k};
+}
+
+// Largest component error relative to |reference|.
+template <class T>
+long double relative_error(const quaternion<T>& q, const quaternion<long double>& reference) {
+    const quaternion<long double> ql{q.w, q.x, q.y, q.z};
+    return std::sqrt(quat::squared_norm(ql - reference) / quat::squared_norm(reference));
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("exp(q) is e^w (cos|v|, sin|v| v / |v|) for any q, tiny to huge |v|",
+                   "[interpolation][exp]", float, double) {
+    using T = TestType;
+    const T eps = std::numeric_limits<T>::epsilon();
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const T scale = std::pow(T(10), random.uniform<T>(-12, 3));
+        const vec3<T> v = random.vector<T>(1.0) * scale;
+        const quaternion<T> q{random.uniform<T>(-3, 3), v.x, v.y, v.z};
+        const quaternion<T> e = exp(q);  // found by argument-dependent lookup
+        CHECK(relative_error(e, reference_exp(q)) <= 8 * eps * (1 + quat::norm(v)));
+        // Each vector component keeps its relative accuracy, however small |v| (the rounding of
+        // |v| itself, an angle, costs eps |v| e^w).
+        const quaternion<long double> reference = reference_exp(q);
+        CHECK(std::abs(e.x - reference.x) <=
+              8 * eps * (std::abs(reference.x) + quat::norm(v) * std::exp(q.w)));
+    }
+    // Real q: (e^w, v) with v's zeros kept; e^w may overflow without making the zeros NaN.
+    CHECK(exp(quaternion<T>{1, 0, 0, 0}) == quaternion<T>{std::exp(T(1)), 0, 0, 0});
+    const quaternion<T> huge = exp(quaternion<T>{T(1000), 0, T(-0.0), 0});
+    CHECK(huge.w == std::numeric_limits<T>::infinity());
+    CHECK((huge.x == 0 && huge.z == 0 && std::signbit(huge.y)));
+    // A subnormal v: the direction and size survive.
+    const T tiny = std::numeric_limits<T>::denorm_min() * 8;
+    CHECK(exp(quaternion<T>{0, tiny, 0, 0}) == quaternion<T>{1, tiny, 0, 0});
+    // NaN in, NaN out; an infinite v has no defined direction.
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    CHECK(std::isnan(exp(quaternion<T>{0, nan, 0, 0}).w));
+    CHECK(std::isnan(exp(quaternion<T>{nan, 1, 0, 0}).x));
+    CHECK(std::isnan(exp(quaternion<T>{nan, 0, 0, 0}).w));
+    CHECK(std::isnan(exp(quaternion<T>{0, inf, 0, 0}).w));
+}
+
+TEMPLATE_TEST_CASE("log(q) is (ln|q|, v / |v| atan2(|v|, w)), the principal logarithm",
+                   "[interpolation][exp]", float, double) {
+    using T = TestType;
+    const T eps = std::numeric_limits<T>::epsilon();
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const T scale = std::pow(T(10), random.uniform<T>(-12, 3));
+        const vec3<T> v = random.vector<T>(1.0) * scale;
+        const quaternion<T> q{random.uniform<T>(-3, 3), v.x, v.y, v.z};
+        const quaternion<T> l = log(q);
+        const quaternion<long double> reference = reference_log(q);
+        CHECK(std::abs(l.w - reference.w) <= 4 * eps * (1 + std::abs(reference.w)));
+        const vec3<long double> lv{l.x, l.y, l.z}, rv{reference.x, reference.y, reference.z};
+        CHECK(std::sqrt(quat::squared_norm(lv - rv)) <=
+              4 * eps * std::sqrt(quat::squared_norm(rv)));
+        CHECK(quat::norm(vec3<T>{l.x, l.y, l.z}) <= quat::numbers::pi_v<T> * (1 + 2 * eps));
+        // exp undoes log, at any scale of q.
+        CHECK(relative_error(exp(l), quaternion<long double>{q.w, q.x, q.y, q.z}) <= 16 * eps);
+        // And log undoes exp while |v| < pi.
+        if (quat::norm(v) < 3) {
+            CHECK(quat::test::max_difference(log(exp(q)), q) <= 16 * eps * (1 + quat::norm(v)));
+        }
+    }
+    // Real q: (ln w, 0) for w > 0, (ln|w|, pi, 0, 0) for w < 0 (axis x, as to_axis_angle's).
+    CHECK(log(quaternion<T>{1, 0, 0, 0}) == quaternion<T>{0, 0, 0, 0});
+    CHECK(log(quaternion<T>{-2, 0, 0, 0}) ==
+          quaternion<T>{std::log(T(2)), quat::numbers::pi_v<T>, 0, 0});
+    CHECK(log(quaternion<T>{0, 0, 0, 0}).w == -std::numeric_limits<T>::infinity());
+    // Extreme magnitudes: |q|^2 would overflow or underflow, ln|q| does not.
+    const T big = std::numeric_limits<T>::max() / 2;
+    const quaternion<T> from_big = log(quaternion<T>{big, big, 0, 0});
+    CHECK(from_big.w == Approx(std::log(big) + std::log(std::sqrt(T(2)))).epsilon(4 * eps));
+    CHECK(from_big.x == Approx(quat::numbers::pi_v<T> / 4).epsilon(4 * eps));
+    const T tiny = std::numeric_limits<T>::denorm_min() * 16;
+    const quaternion<T> from_tiny = log(quaternion<T>{tiny, 0, tiny, 0});
+    CHECK(from_tiny.w == Approx(std::log(tiny) + std::log(std::sqrt(T(2)))).epsilon(4 * eps));
+    CHECK(from_tiny.y == Approx(quat::numbers::pi_v<T> / 4).epsilon(4 * eps));
+    // A tiny v beside w = 1: no 0/0, v itself.
+    CHECK(log(quaternion<T>{1, T(1e-30), 0, 0}) == quaternion<T>{0, T(1e-30), 0, 0});
+    // NaN or infinite components give NaN everywhere.
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    for (const quaternion<T>& bad : std::vector<quaternion<T>>{
+             {nan, 1, 0, 0}, {1, 0, nan, 0}, {inf, 0, 0, 0}, {1, 0, 0, -inf}}) {
+        const quaternion<T> l = log(bad);
+        CHECK((std::isnan(l.w) && std::isnan(l.x) && std::isnan(l.y) && std::isnan(l.z)));
+    }
+}
+
+TEMPLATE_TEST_CASE(
+    "exp((0, r / 2)) is from_rotation_vector(r); log of unit q with w >= 0 is half "
+    "to_rotation_vector(q)",
+    "[interpolation][exp]", float, double) {
+    using T = TestType;
+    const T eps = std::numeric_limits<T>::epsilon();
+    quat::test::random_rotations random;
+    for (int n = 0; n < 5000; ++n) {
+        const vec3<T> r = random.unit_vector<T>() * std::pow(T(10), random.uniform<T>(-9, 0.8));
+        CHECK(quat::test::max_difference(exp(quaternion<T>{0, r.x / 2, r.y / 2, r.z / 2}),
+                                         quat::from_rotation_vector(r)) <= 2 * eps);
+        const quaternion<T> q = random.unit_quaternion<T>();
+        const quaternion<T> p = q.w < 0 ? -q : q;
+        const vec3<T> half = quat::to_rotation_vector(p) / T(2);
+        const quaternion<T> l = log(p);
+        CHECK(std::abs(l.w) <= 2 * eps);
+        CHECK(quat::test::max_difference(vec3<T>{l.x, l.y, l.z}, half) <= 4 * eps);
+        // For w < 0, log keeps q's sign: the rotation the longer way round, |vector part| > pi / 2.
+        if (q.w < 0)
+            CHECK(quat::norm(vec3<T>{log(q).x, log(q).y, log(q).z}) > quat::numbers::pi_v<T> / 2);
+    }
+}
+
+TEST_CASE("exp and log are found by argument-dependent lookup beside std::exp and std::log",
+          "[interpolation][exp][first-use]") {
+    using std::exp;
+    using std::log;
+    const quat::quatd q{0.5, 0.1, -0.2, 0.3};
+    const quat::quatd e = exp(q), l = log(q);  // quat::exp, quat::log: not "cannot convert"
+    CHECK(e.w == quat::exp(q).w);
+    CHECK(l.x == quat::log(q).x);
+    CHECK(exp(1.0) == std::exp(1.0));
+    constexpr quat::quatd one = quat::exp(quat::quatd{0, 0, 0, 0});
+    static_assert(one == quat::quatd::identity());
+    constexpr quat::quatd zero = quat::log(quat::quatd{1, 0, 0, 0});
+    static_assert(zero == quat::quatd{0, 0, 0, 0});
 }

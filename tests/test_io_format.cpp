@@ -46,10 +46,10 @@ TEMPLATE_TEST_CASE("std::format prints the documented format", "[io][format]", f
           "euler<zyx, intrinsic>{0.5, 0.25, 0.125}");
     const euler_extraction<T, sequence::yzx, frame::extrinsic> locked{{T(1), T(-1.5), T(0)}, true};
     CHECK(std::format("{}", locked) == "euler_extraction{euler<yzx, extrinsic>{1, -1.5, 0}, true}");
-    const quat::alignment_with_sensitivity<T> fit{
-        {T(0), T(1), T(0), T(0)}, T(0.25), true, rotation_matrix<T>::identity()};
+    const quat::alignment_with_sensitivity<T> fit{{{T(0), T(1), T(0), T(0)}, T(0.25), true},
+                                                  rotation_matrix<T>::identity()};
     CHECK(std::format("{}", fit) ==
-          "alignment_with_sensitivity{quaternion{0, 1, 0, 0}, 0.25, true, "
+          "alignment_with_sensitivity{alignment{quaternion{0, 1, 0, 0}, 0.25, true}, "
           "rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
     CHECK(std::format("{}", quat::alignment<T>{fit.rotation, fit.rssd, false}) ==
           "alignment{quaternion{0, 1, 0, 0}, 0.25, false}");

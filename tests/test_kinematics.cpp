@@ -16,11 +16,13 @@ using quat::test::tolerance;
 
 // A quarter turn about z in 2 time units: pi / 4 rad per unit about z, in body and world frames.
 constexpr double quarter_turn_rate =
-    quat::body_angular_velocity(quat::quatd::identity(), quat::rotation_z(quat::pi / 2), 2).z;
-static_assert(quarter_turn_rate > quat::pi / 4 - 1e-15 && quarter_turn_rate < quat::pi / 4 + 1e-15);
-static_assert(
-    quat::world_angular_velocity(quat::rotation_z(quat::pi / 2), quat::quatd::identity(), 2).x ==
-    0);
+    quat::body_angular_velocity(quat::quatd::identity(), quat::rotation_z(quat::numbers::pi / 2), 2)
+        .z;
+static_assert(quarter_turn_rate > quat::numbers::pi / 4 - 1e-15 &&
+              quarter_turn_rate < quat::numbers::pi / 4 + 1e-15);
+static_assert(quat::world_angular_velocity(quat::rotation_z(quat::numbers::pi / 2),
+                                           quat::quatd::identity(), 2)
+                  .x == 0);
 static_assert(quat::integrate_body(quat::quatd::identity(), vec3<double>{0, 0, 0}, 1) ==
               quat::quatd::identity());
 
@@ -104,7 +106,7 @@ TEMPLATE_TEST_CASE("angular velocity takes the shorter arc: q1 and -q1 give the 
               same);
         CHECK(quat::test::max_difference(quat::world_angular_velocity(q0, -q1, T(0.5)),
                                          quat::world_angular_velocity(q0, q1, T(0.5))) <= same);
-        CHECK(quat::norm(omega) * T(0.5) <= quat::pi_v<T> * (1 + 4 * eps<T>));
+        CHECK(quat::norm(omega) * T(0.5) <= quat::numbers::pi_v<T> * (1 + 4 * eps<T>));
         CHECK(angle(quat::integrate_body(q0, omega, T(0.5)), q1) <= tolerance<T>::round_trip);
     }
 }
@@ -112,8 +114,9 @@ TEMPLATE_TEST_CASE("angular velocity takes the shorter arc: q1 and -q1 give the 
 TEMPLATE_TEST_CASE("angular velocity in coordinates: a turn about z seen from a tilted body",
                    "[kinematics]", float, double) {
     using T = TestType;
-    const quaternion<T> tilted = quat::rotation_x(quat::pi_v<T> / 2);  // body z is world -y
-    const quaternion<T> later = tilted * quat::rotation_z(T(0.1));     // turned about body z
+    const quaternion<T> tilted =
+        quat::rotation_x(quat::numbers::pi_v<T> / 2);               // body z is world -y
+    const quaternion<T> later = tilted * quat::rotation_z(T(0.1));  // turned about body z
     const vec3<T> body = quat::body_angular_velocity(tilted, later, T(0.5));
     const vec3<T> world = quat::world_angular_velocity(tilted, later, T(0.5));
     CHECK(quat::test::max_difference(body, vec3<T>{0, 0, T(0.2)}) <= tolerance<T>::conversion);
@@ -201,14 +204,14 @@ TEMPLATE_TEST_CASE("angular velocity near a half turn and with a negative, zero 
     const quaternion<T> q0 = quat::normalize(quaternion<T>{1, -2, 3, 0.5});
     // A turn just short of pi stays on its side; past pi the shorter arc goes the other way.
     const vec3<T> axis = quat::normalize(vec3<T>{1, 1, 0});
-    for (const T turn : {quat::pi_v<T> - T(1e-3), quat::pi_v<T> - 16 * eps<T>}) {
+    for (const T turn : {quat::numbers::pi_v<T> - T(1e-3), quat::numbers::pi_v<T> - 16 * eps<T>}) {
         const vec3<T> omega =
             quat::body_angular_velocity(q0, quat::integrate_body(q0, axis * turn, 1), T(1));
         CHECK(quat::test::max_difference(omega, axis * turn) <= tolerance<T>::conversion * 4);
     }
     const vec3<T> backwards = quat::body_angular_velocity(
-        q0, quat::integrate_body(q0, axis * (quat::pi_v<T> + T(0.5)), 1), T(1));
-    CHECK(quat::test::max_difference(backwards, axis * (T(0.5) - quat::pi_v<T>)) <=
+        q0, quat::integrate_body(q0, axis * (quat::numbers::pi_v<T> + T(0.5)), 1), T(1));
+    CHECK(quat::test::max_difference(backwards, axis * (T(0.5) - quat::numbers::pi_v<T>)) <=
           tolerance<T>::conversion * 4);
     // A negative dt gives the rate that satisfies the same relation.
     const quaternion<T> q1 = quat::integrate_body(q0, vec3<T>{1, 0, 0}, T(0.25));

@@ -139,12 +139,13 @@ TEST_CASE("the signs of the inputs do not matter; the result has w >= 0", "[mean
 TEST_CASE("a naive component average is not the mean (the opencv #2553 mistake)", "[mean]") {
     // Two rotations 10 degrees apart about z, stored with opposite signs as any source may give
     // them. Adding the components (then normalizing) cancels them instead of averaging.
-    const quaternion<double> a = quat::rotation_z(0.0), b = -quat::rotation_z(10 * quat::pi / 180);
+    const quaternion<double> a = quat::rotation_z(0.0),
+                             b = -quat::rotation_z(10 * quat::numbers::pi / 180);
     const quaternion<double> naive = quat::normalize(a + b);
-    CHECK(quat::angle_between(naive, quat::rotation_z(5 * quat::pi / 180)) >
+    CHECK(quat::angle_between(naive, quat::rotation_z(5 * quat::numbers::pi / 180)) >
           3);  // nearly a half turn
     const std::vector<quaternion<double>> both{a, b};
-    CHECK(quat::angle_between(quat::mean(both), quat::rotation_z(5 * quat::pi / 180)) <=
+    CHECK(quat::angle_between(quat::mean(both), quat::rotation_z(5 * quat::numbers::pi / 180)) <=
           4 * eps<double>);
 }
 
@@ -172,7 +173,7 @@ TEST_CASE("ties, empty input, zero, negative and NaN weights: empty try_mean, Na
     // Two rotations half a turn apart, equal weights: every rotation on the arc between them is a
     // mean. Unequal weights break the tie.
     const std::vector<quaternion<double>> opposite{quaternion<double>::identity(),
-                                                   quat::rotation_x(quat::pi)};
+                                                   quat::rotation_x(quat::numbers::pi)};
     CHECK_FALSE(quat::try_mean(opposite).has_value());
     CHECK(quat::is_unit(quat::mean(opposite), 4 * eps<double>));
     CHECK_FALSE(quat::try_mean(opposite, std::vector<double>{2, 2}).has_value());

@@ -162,7 +162,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::nearest_rotation(m)));
         CHECK_FALSE(quat::try_nearest_rotation(m).has_value());
 
-        // interpolation.hpp and fast_slerp.hpp: a bad end point or a bad parameter
+        // interpolation.hpp and slerp_fast.hpp: a bad end point or a bad parameter
         const quaternion<T> other = quat::normalize(quaternion<T>{T(0.2), T(0.7), T(0.1), T(-0.4)});
         for (const T t : {T(0), T(0.25), T(1), T(2)}) {
             CHECK(bad(quat::slerp(unit, q, t)));
@@ -195,6 +195,12 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::integrate_body(unit, v, T(0.1))));
         CHECK(bad(quat::integrate_world(q, in.good_vector, T(0.1))));
         CHECK(bad(quat::integrate_world(unit, in.good_vector, value)));
+
+        // keyframe_squad.hpp: a bad keyframe beyond the segment feeds its control point; a NaN t
+        const std::vector<T> key_times{T(0), T(1), T(2), T(4)};
+        const std::vector<quaternion<T>> keys{unit, other, unit, q};
+        CHECK(bad(quat::keyframe_squad(key_times, keys, T(1.5))));
+        if (value != value) CHECK(bad(quat::keyframe_squad(key_times, keys, value)));  // inf: held
 
         // swing_twist.hpp
         const auto parts = quat::swing_twist(q, in.good_vector);
@@ -319,12 +325,12 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(products[9]));
         CHECK_FALSE(bad(products[10]));
         std::vector<rotation_matrix<T>> matrices(40);
-        quat::to_matrix(rotations, matrices);
+        quat::to_matrix_each(rotations, matrices);
         CHECK(bad(matrices[9]));
         CHECK_FALSE(bad(matrices[10]));
         matrices[10] = m;
         std::vector<quaternion<T>> converted(40);
-        quat::to_quaternion(matrices, converted);
+        quat::to_quaternion_each(matrices, converted);
         CHECK(bad(converted[10]));
         CHECK_FALSE(bad(converted[11]));
     }
@@ -333,4 +339,46 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
 TEST_CASE("the zero quaternion has no axis: to_axis_angle gives NaN", "[nan]") {
     CHECK(bad(quat::to_axis_angle(quat::quatd{0, 0, 0, 0})));
     CHECK(quat::to_axis_angle(quat::quatd{2, 0, 0, 0}).angle == 0.0);  // any positive scale of 1
+}
+
+TEMPLATE_TEST_CASE("the first-use spellings give a visibly bad result for NaN and infinite input",
+                   "[nan][first-use]", float, double) {
+    using T = TestType;
+    for (const T value : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                          -std::numeric_limits<T>::infinity()}) {
+        INFO("bad component: " << value);
+        const inputs<T> in{value};
+        const vec3<T> p = in.good_vector;
+        // vec3.hpp, constants.hpp
+        CHECK(bad(in.v[1]));
+        CHECK(bad(quat::lerp(in.v, p, T(0.5))));
+        CHECK(bad(quat::lerp(p, in.v, T(0.5))));
+        CHECK(bad(quat::lerp(p, p * T(2), value)));
+        CHECK(bad(quat::radians(value)));
+        CHECK(bad(quat::degrees(value)));
+        // quaternion.hpp, rotation_matrix.hpp, conversions.hpp, interpolation.hpp
+        CHECK(bad(in.unit * in.v));
+        CHECK(bad(in.m * p));
+        CHECK(bad(quat::angle(in.q)));
+        CHECK(bad(quat::axis(in.q)));
+        CHECK(bad(quat::exp(in.q)));
+        // e^-Inf is 0: exp((-Inf, 0)) = (0, 0) is the answer, not a bad one.
+        if (!(value < 0)) CHECK(bad(quat::exp(quaternion<T>{value, 0, 0, 0})));
+        CHECK(bad(quat::log(in.q)));
+        CHECK(bad(quat::log(quaternion<T>{value, 0, 0, 0})));
+        // dual_quaternion.hpp, homogeneous_matrix.hpp
+        const auto dq = quat::to_dual_quaternion(in.unit, in.v);
+        CHECK(bad(quat::to_dual_quaternion(in.unit) * in.v));
+        CHECK(bad(quat::dual_quaternion<T>::from_translation(in.v) * p));
+        CHECK(bad((dq * T(2)).dual));
+        CHECK(bad((T(2) * dq).dual));
+        CHECK(bad((dq / T(2)).dual));
+        CHECK(bad((quat::to_dual_quaternion(in.unit, p) * value).real));
+        const quat::homogeneous_matrix<T> h = quat::to_homogeneous(in.unit, in.v);
+        CHECK(bad(h * p));
+        CHECK(bad(quat::translation_of(quat::inverse(h))));
+        CHECK(bad(quat::to_homogeneous(in.m, p) * p));
+        CHECK(bad(quat::to_homogeneous(in.m) * p));
+        CHECK(bad(quat::homogeneous_matrix<T>::from_translation(in.v) * p));
+    }
 }

@@ -131,8 +131,8 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
         quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
     quat::compose_each(factors, factors, slerped);
     quat::compose_each(factors.data(), slerped.data(), slerped.data(), n);
-    quat::to_matrix(factors, matrices);
-    quat::to_quaternion(matrices.data(), slerped.data(), n);
+    quat::to_matrix_each(factors, matrices);
+    quat::to_quaternion_each(matrices.data(), slerped.data(), n);
     sink += out[1].x + ox[2] + slerped[3].w + matrices[4](0, 0);
     const long after = allocations.load();
 

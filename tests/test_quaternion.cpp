@@ -1,8 +1,10 @@
 // Specification of quaternion.hpp: Hamilton's algebra and rotating vectors with it.
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
+#include <quat/constants.hpp>
 #include <quat/conversions.hpp>
 #include <quat/quaternion.hpp>
 
@@ -16,6 +18,12 @@ using quat::vec3;
 
 namespace {
 constexpr quatd one{1, 0, 0, 0}, i{0, 1, 0, 0}, j{0, 0, 1, 0}, k{0, 0, 0, 1};
+
+/// True when a and b hold the same bits: the same operations, not merely equal values.
+template <class V>
+bool same_bits(const V& a, const V& b) {
+    return std::memcmp(&a, &b, sizeof(V)) == 0;
+}
 }  // namespace
 
 static_assert(std::is_trivially_default_constructible_v<quatd>, "a plain struct");
@@ -127,7 +135,7 @@ TEMPLATE_TEST_CASE("angle_between ignores sign and is accurate for nearby rotati
     const quaternion<T> turn{std::cos(tiny / 2), std::sin(tiny / 2), 0, 0};
     CHECK(quat::angle_between(q, q * turn) == Approx(tiny).epsilon(1e-3));
     const quaternion<T> half{0, 1, 0, 0};
-    CHECK(quat::angle_between(quaternion<T>::identity(), half) == Approx(quat::pi_v<T>));
+    CHECK(quat::angle_between(quaternion<T>::identity(), half) == Approx(quat::numbers::pi_v<T>));
 }
 
 TEST_CASE("a scalar beside a quaternion converts to its precision", "[quaternion][first-use]") {
@@ -254,4 +262,48 @@ TEST_CASE("rotate by a q from normalize keeps |v| within 4 eps and the direction
                                         << double(worst_direction) << " eps");
     CHECK(worst_length <= 4);
     CHECK(worst_direction <= 4);
+}
+
+TEMPLATE_TEST_CASE("q * v is rotate(q, v), bit for bit", "[quaternion][first-use]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    for (int n = 0; n < 2000; ++n) {
+        // A q from normalize, a few eps off unit, as users have them.
+        const quaternion<T> q = quat::normalize(random.unit_quaternion<T>() * T(1.5));
+        const vec3<T> v = random.vector<T>(100);
+        CHECK(same_bits(q * v, quat::rotate(q, v)));
+    }
+    static_assert(quatd{0, 0, 0, 1} * vec3<double>{1, 2, 3} == vec3<double>{-1, -2, 3},
+                  "a half turn about z");
+    static_assert(std::is_same_v<decltype(quat::quatf{} * vec3<float>{}), vec3<float>>);
+}
+
+TEST_CASE("rotation_x<float>(numbers::pi) is a quatf; the angle sets the precision otherwise",
+          "[quaternion][first-use]") {
+    // The named precision converts the angle explicitly, so docs' look_rotation(f, up) *
+    // rotation_y<float>(numbers::pi) compiles warning-free for float (this file is built with
+    // -Wconversion -Wdouble-promotion -Werror).
+    static_assert(
+        std::is_same_v<decltype(quat::rotation_x<float>(quat::numbers::pi)), quat::quatf>);
+    static_assert(
+        std::is_same_v<decltype(quat::rotation_y<float>(quat::numbers::pi)), quat::quatf>);
+    static_assert(
+        std::is_same_v<decltype(quat::rotation_z<float>(quat::numbers::pi)), quat::quatf>);
+    static_assert(std::is_same_v<decltype(quat::rotation_y<float>(1)), quat::quatf>);
+    static_assert(std::is_same_v<decltype(quat::rotation_y<double>(0.5f)), quatd>);
+    static_assert(std::is_same_v<decltype(quat::rotation_y(0.5f)), quat::quatf>);
+    static_assert(std::is_same_v<decltype(quat::rotation_y(1)), quatd>);
+    static_assert(std::is_same_v<decltype(quat::rotation_y(0.5L)), quaternion<long double>>);
+    // Equal to the rotation by the angle rounded to float first.
+    CHECK(same_bits(quat::rotation_x<float>(quat::numbers::pi),
+                    quat::rotation_x(quat::numbers::pi_v<float>)));
+    CHECK(same_bits(quat::rotation_y<float>(quat::numbers::pi),
+                    quat::rotation_y(quat::numbers::pi_v<float>)));
+    CHECK(same_bits(quat::rotation_z<float>(quat::numbers::pi),
+                    quat::rotation_z(quat::numbers::pi_v<float>)));
+    CHECK(same_bits(quat::rotation_y<double>(2), quat::rotation_y(2)));
+    const quat::quatf half_turn = quat::rotation_y<float>(quat::numbers::pi);
+    CHECK(std::abs(half_turn.w) <= 1e-7f);
+    CHECK(half_turn.y == 1.0f);
+    static_assert(quat::rotation_z<float>(0.0) == quat::quatf::identity());
 }

@@ -39,7 +39,7 @@ double kolmogorov_smirnov(std::vector<double> samples, Cdf cdf) {
 const double critical_value = 1.95 / std::sqrt(double(sample_count));
 
 // The rotation angle in [0, pi] has density (1 - cos(angle)) / pi under the Haar measure.
-double angle_cdf(double angle) { return (angle - std::sin(angle)) / quat::pi; }
+double angle_cdf(double angle) { return (angle - std::sin(angle)) / quat::numbers::pi; }
 
 template <class T>
 double rotation_angle(const quaternion<T>& q) {
@@ -51,7 +51,7 @@ double rotation_angle(const quaternion<T>& q) {
 // axis and a uniform angle. It overweights small angles.
 quat::quatd uniform_axis_uniform_angle(quat::test::random_rotations& random) {
     const vec3<double> axis = random.unit_vector<double>();
-    const double half = random.uniform<double>(0, quat::pi) / 2;
+    const double half = random.uniform<double>(0, quat::numbers::pi) / 2;
     return {std::cos(half), axis.x * std::sin(half), axis.y * std::sin(half),
             axis.z * std::sin(half)};
 }
@@ -74,7 +74,9 @@ statistics measure(Draw draw) {
     }
     return {kolmogorov_smirnov(angles, angle_cdf),
             kolmogorov_smirnov(heights, [](double z) { return (z + 1) / 2; }),
-            kolmogorov_smirnov(azimuths, [](double a) { return (a + quat::pi) / (2 * quat::pi); })};
+            kolmogorov_smirnov(azimuths, [](double a) {
+                return (a + quat::numbers::pi) / (2 * quat::numbers::pi);
+            })};
 }
 
 template <class T, class Engine>

@@ -15,9 +15,9 @@ TEST_CASE("the README example works as written", "[readme]") {
     using namespace quat;
 
     // The thesis's yaw-pitch-roll, R = Rz(yaw) Ry(pitch) Rx(roll): here a quarter turn of yaw.
-    constexpr euler<double> attitude{pi / 2, 0, 0};
+    constexpr euler<double> attitude{numbers::pi / 2, 0, 0};
     constexpr quatd q = to_quaternion(attitude);  // (cos 45°, 0, 0, sin 45°), at compile time
-    static_assert(approx_equal(q, rotation_z(pi / 2), 1e-15));
+    static_assert(approx_equal(q, rotation_z(numbers::pi / 2), 1e-15));
 
     vec3<double> v = rotate(q, {1, 0, 0});  // ≈ {0, 1, 0}: counter-clockwise about z
     auto [yaw, pitch, roll] = to_euler<sequence::zyx>(q);     // 1.5708, 0, 0
@@ -37,7 +37,7 @@ TEST_CASE("the README example works as written", "[readme]") {
     CHECK(pitch == 0);
     CHECK(roll == 0);
     CHECK(printed.str() == "quaternion{0.92388, 0, 0, 0.382683}\n");
-    CHECK(halfway.z == Approx(std::sin(pi / 8)));
+    CHECK(halfway.z == Approx(std::sin(numbers::pi / 8)));
     CHECK(orthogonality_error(repaired) < 1e-15);
     CHECK_FALSE(checked.has_value());
 }

@@ -79,8 +79,8 @@ TEST_CASE("batch transform beyond 16 MiB (streaming stores) equals the scalar tr
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const vec3<float> expected = quat::transform(dq, in[i]);
-        mismatches += max_difference(out[i], expected) <= 1e-4f ? 0 : 1;
-        mismatches += max_difference(vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f ? 0 : 1;
+        if (!(max_difference(out[i], expected) <= 1e-4f)) ++mismatches;
+        if (!(max_difference(vec3<float>{ox[i], oy[i], oz[i]}, expected) <= 1e-4f)) ++mismatches;
     }
     CHECK(mismatches == 0);
 }

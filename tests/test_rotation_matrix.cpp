@@ -1,8 +1,11 @@
 // Specification of rotation_matrix.hpp: 3x3 matrices acting on column vectors.
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <type_traits>
 
+#include <Eigen/Core>
 #include <quat/rotation_matrix.hpp>
 
 #include "support/catch.hpp"
@@ -48,4 +51,26 @@ TEST_CASE("orthogonality_error measures distance from orthogonal and passes NaN 
     mirror(2, 2) = -1;
     CHECK(quat::orthogonality_error(mirror) == 0);
     CHECK(quat::determinant(mirror) == -1);
+}
+
+TEST_CASE("m * v is rotate(m, v), bit for bit, and Eigen's Matrix3 * Vector3",
+          "[rotation_matrix][first-use]") {
+    static_assert(quarter_turn_z * vec3<double>{1, 0, 0} == vec3<double>{0, 1, 0}, "v' = M v");
+    std::mt19937_64 engine(20190501);
+    std::normal_distribution<double> gauss;
+    for (int n = 0; n < 2000; ++n) {
+        // Any 3x3 matrix: * is the matrix-vector product, rotation or not.
+        matrix m{};
+        Eigen::Matrix3d e;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) e(i, j) = m(i, j) = gauss(engine);
+        const vec3<double> v{gauss(engine), gauss(engine), gauss(engine)};
+        const vec3<double> product = m * v, long_form = quat::rotate(m, v);
+        CHECK(std::memcmp(&product, &long_form, sizeof product) == 0);
+        const Eigen::Vector3d reference = e * Eigen::Vector3d(v.x, v.y, v.z);
+        const double bound = 4 * std::numeric_limits<double>::epsilon() * 10;
+        CHECK(std::abs(product.x - reference.x()) <= bound);
+        CHECK(std::abs(product.y - reference.y()) <= bound);
+        CHECK(std::abs(product.z - reference.z()) <= bound);
+    }
 }

@@ -68,7 +68,7 @@ TEMPLATE_TEST_CASE("sclerp is exact at its ends and takes the shorter path", "[s
         CHECK(quat::test::max_difference(middle.dual, middle_flipped.dual) <= 8 * eps<TestType>);
         // The relative turn of the path is at most a half turn.
         CHECK(screw_angle(quat::inverse(a) * middle) <=
-              TestType(quat::pi / 2) * (1 + 4 * eps<TestType>));
+              TestType(quat::numbers::pi / 2) * (1 + 4 * eps<TestType>));
     }
 }
 
@@ -128,7 +128,7 @@ TEMPLATE_TEST_CASE("sclerp stays accurate near half turns", "[sclerp]", float, d
     for (double gap : {1e-1, 1e-2, 1e-3, 1e-4}) {
         for (int i = 0; i < 30; ++i) {
             const auto a = random.rigid_motion<TestType>();
-            const auto b = nearby(random, a, quat::pi - gap);
+            const auto b = nearby(random, a, quat::numbers::pi - gap);
             const TestType t = random.uniform<TestType>(0.0, 1.0);
             worst = std::max(worst, quat::test::sclerp_difference(a, b, t).relative());
         }
@@ -140,10 +140,10 @@ TEST_CASE("sclerp through an exact half turn keeps the turn's axis", "[sclerp]")
     const auto a = quat::to_dual_quaternion(quat::quatd::identity(), vec3<double>{1, 0, 0});
     // A half turn about the z axis through the point p = (0, 1, 0), sliding 2 along z.
     const vec3<double> p{0, 1, 0}, z{0, 0, 1};
-    const quat::screw<double> motion{z, quat::cross(p, z), quat::pi, 2};
+    const quat::screw<double> motion{z, quat::cross(p, z), quat::numbers::pi, 2};
     const auto b = a * quat::from_screw(motion);
     const auto middle = quat::to_screw(quat::inverse(a) * quat::sclerp(a, b, 0.5));
-    CHECK(middle.angle == Approx(quat::pi / 2).epsilon(1e-15));
+    CHECK(middle.angle == Approx(quat::numbers::pi / 2).epsilon(1e-15));
     CHECK(middle.displacement == Approx(1).epsilon(1e-15));
     CHECK(quat::test::max_difference(middle.direction, vec3<double>{0, 0, 1}) <= 4 * eps<double>);
     CHECK(quat::test::max_difference(middle.moment, motion.moment) <= 8 * eps<double>);

@@ -19,11 +19,11 @@ TEST_CASE("to_screw reads a known screw motion", "[screw]") {
     // A quarter turn about the vertical line through (1, 0, 0), then a slide of 2 up it:
     // the origin goes to (1, -1, 2).
     const auto dq =
-        quat::to_dual_quaternion(quat::rotation_z(quat::pi / 2), vec3<double>{1, -1, 2});
+        quat::to_dual_quaternion(quat::rotation_z(quat::numbers::pi / 2), vec3<double>{1, -1, 2});
     const quat::screw<double> s = quat::to_screw(dq);
     CHECK(max_difference(s.direction, vec3<double>{0, 0, 1}) <= 2 * eps<double>);
     CHECK(max_difference(s.moment, vec3<double>{0, -1, 0}) <= 4 * eps<double>);  // (1,0,0) x z
-    CHECK(s.angle == Approx(quat::pi / 2).epsilon(2 * eps<double>));
+    CHECK(s.angle == Approx(quat::numbers::pi / 2).epsilon(2 * eps<double>));
     CHECK(s.displacement == Approx(2).epsilon(2 * eps<double>));
 }
 
@@ -39,7 +39,7 @@ TEMPLATE_TEST_CASE("from_screw(to_screw(dq)) is dq, and the axis moves along its
         const TestType reach = 1 + quat::norm(s.moment);
         CHECK(std::abs(quat::dot(s.direction, s.moment)) <= 8 * eps<TestType> * reach);
         CHECK(s.angle >= 0);
-        CHECK(s.angle <= TestType(quat::pi));
+        CHECK(s.angle <= TestType(quat::numbers::pi));
         const auto back = quat::from_screw(s);
         const auto expected = dq.real.w < 0 ? -dq : dq;
         CHECK(max_difference(back.real, expected.real) <= 8 * eps<TestType>);
@@ -67,7 +67,7 @@ TEST_CASE("to_screw of pure translations and the identity", "[screw]") {
     // A half turn: the angle is pi exactly.
     const auto half =
         quat::to_screw(quat::to_dual_quaternion(quat::quatd{0, 1, 0, 0}, vec3<double>{1, 0, 0}));
-    CHECK(half.angle == quat::pi);
+    CHECK(half.angle == quat::numbers::pi);
     CHECK(half.displacement == 1);
 }
 

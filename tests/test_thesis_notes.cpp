@@ -17,7 +17,7 @@ using tol = quat::test::tolerance<double>;
 
 namespace {
 
-constexpr double pi = quat::pi;
+constexpr double pi = quat::numbers::pi;
 
 /// Angle of the rotation that takes unit a to unit b.
 double rotation_angle(const quatd& a, const quatd& b) {

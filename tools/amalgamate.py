@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
-"""Generate single_include/quat/quat.hpp and single_include/quat/io.hpp from include/quat.
+"""Generate single_include/quat/quat.hpp and its opt-in companions from include/quat.
 
 quat.hpp: follows the includes of include/quat/quat.hpp depth-first and inlines every quat header
 once, at its first inclusion, the way #pragma once would; standard headers stay #include lines.
-io.hpp (opt-in printing, not part of quat.hpp): include/quat/io.hpp's own text, its quat includes
-replaced by one #include "quat.hpp", the single header beside it. The output depends only on the
-input files (no dates, no absolute paths), so the committed copies can be compared with a fresh
-generation:
+The opt-in headers that quat.hpp does not include (io.hpp, interop/glm.hpp, interop/eigen.hpp,
+interop/fmt.hpp) are generated at the same relative paths, so a user's #include <quat/io.hpp> or
+<quat/interop/glm.hpp> works with single_include/ as with include/. Each is its own text with
+every include of a header that quat.hpp holds replaced by one include of the single quat.hpp
+(#include "../quat.hpp" from interop/), every include of a header an earlier opt-in output holds
+replaced by one include of that output (interop/fmt.hpp's ../io.hpp), and anything else of quat's
+inlined. The output depends only on the input files (no dates, no absolute paths), so the
+committed copies can be compared with a fresh generation:
 
-    python3 tools/amalgamate.py           write single_include/quat/quat.hpp and io.hpp
+    python3 tools/amalgamate.py           write single_include/quat/quat.hpp and the opt-in headers
     python3 tools/amalgamate.py --check   exit 1 if a committed file is out of date
 """
 import argparse
@@ -20,7 +24,14 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 INCLUDE_DIR = ROOT / "include"
 ENTRY = INCLUDE_DIR / "quat" / "quat.hpp"
-IO_ENTRY = INCLUDE_DIR / "quat" / "io.hpp"
+# The opt-in headers, relative to include/quat, with the title of their generated copy. A header
+# that includes another of them comes after it.
+OPT_IN = {
+    "io.hpp": "printing (operator<<, std::formatter), single-header edition.",
+    "interop/glm.hpp": "conversions to and from GLM, single-header edition.",
+    "interop/eigen.hpp": "conversions to and from Eigen, single-header edition.",
+    "interop/fmt.hpp": "{fmt} formatters, single-header edition.",
+}
 OUTPUT_DIR = ROOT / "single_include" / "quat"
 
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
@@ -42,14 +53,19 @@ def resolve(spelling: str, delimiter: str, including_file: Path):
     return None
 
 
-def inline(path: Path, seen: set, out: list) -> None:
-    """Append path's text to out, replacing quat includes by the headers' text (once each)."""
+def inline(path: Path, seen: set, out: list, external: dict, emitted: set, markers=True) -> None:
+    """Append path's text to out, replacing quat includes by the headers' text (once each).
+
+    external maps a header to the include line that stands for it (a header that an already
+    generated file holds); each such line is written once, recorded in emitted. markers wraps the
+    text in begin/end comments (not for a generated file's own text)."""
     seen.add(path)
     name = path.relative_to(INCLUDE_DIR).as_posix()
     lines = path.read_text(encoding="utf-8").splitlines()
     while lines and not lines[-1].strip():
         lines.pop()
-    out.append(f"// ---- begin {name} ----")
+    if markers:
+        out.append(f"// ---- begin {name} ----")
     for line in lines:
         if PRAGMA_ONCE_RE.match(line):
             continue
@@ -57,12 +73,19 @@ def inline(path: Path, seen: set, out: list) -> None:
         target = resolve(match.group(2), match.group(1), path) if match else None
         if target is None:
             out.append(line)
-        elif target not in seen or target.suffix == ".inc":
-            # A header once, as #pragma once would; an .inc fragment (the instruction-set
-            # namespace's opening) each time it is included.
-            inline(target, seen, out)
+        elif target.suffix == ".inc":
+            # A fragment (the instruction-set namespace's opening) each time it is included.
+            inline(target, seen, out, external, emitted)
+        elif target in external:
+            if external[target] not in emitted:
+                emitted.add(external[target])
+                out.append(external[target])
+        elif target not in seen:
+            # A header once, as #pragma once would.
+            inline(target, seen, out, external, emitted)
         # A quat header already inlined earlier needs nothing here.
-    out.append(f"// ---- end {name} ----")
+    if markers:
+        out.append(f"// ---- end {name} ----")
 
 
 def version() -> str:
@@ -85,37 +108,43 @@ def preamble(title: str) -> list:
     return out + [("// " + line).rstrip() for line in license_lines]
 
 
-def generate() -> str:
+def generate() -> tuple:
+    """The single quat.hpp, and the set of headers it holds."""
     out = preamble("3D rotations for C++17/20, single-header edition.")
     out += ["", "#pragma once", ""]
-    inline(ENTRY.resolve(), set(), out)
-    return "\n".join(out) + "\n"
+    seen = set()
+    inline(ENTRY.resolve(), seen, out, {}, set())
+    return "\n".join(out) + "\n", seen
 
 
-def generate_io() -> str:
-    """io.hpp with its quat includes replaced by the single quat.hpp beside it (included once)."""
-    out = preamble("printing (operator<<, std::formatter), single-header edition.")
-    out += ["// Opt-in: keep this file beside the single quat.hpp, which it includes.", ""]
-    path = IO_ENTRY.resolve()
-    lines = path.read_text(encoding="utf-8").splitlines()
-    while lines and not lines[-1].strip():
-        lines.pop()
-    included = False
-    for line in lines:
-        match = INCLUDE_RE.match(line)
-        target = resolve(match.group(2), match.group(1), path) if match else None
-        if target is not None and target.suffix == ".inc":
-            inline(target, set(), out)
-            continue
-        if target is not None:
-            if not included:
-                out.append('#include "quat.hpp"')
-                included = True
-            continue
-        out.append(line)
-    if not included:
-        sys.exit("amalgamate.py: include/quat/io.hpp includes no quat header")
-    return "\n".join(out) + "\n"
+def generate_opt_in(name: str, title: str, external: dict) -> tuple:
+    """single_include/quat/<name> from include/quat/<name>, and the set of headers it holds.
+    external's include lines are relative to single_include/quat."""
+    out = preamble(title)
+    out += [f"// Opt-in: keep this file at quat/{name} beside the single quat.hpp, which it",
+            "// includes.", ""]
+    # From interop/, the files of single_include/quat are one directory up.
+    up = "../" * name.count("/")
+    local = {header: line.replace('#include "', '#include "' + up, 1)
+             for header, line in external.items()}
+    seen, emitted = set(), set()
+    inline((INCLUDE_DIR / "quat" / name).resolve(), seen, out, local, emitted, markers=False)
+    if not emitted:
+        sys.exit(f"amalgamate.py: include/quat/{name} includes no header of quat.hpp or io.hpp")
+    return "\n".join(out) + "\n", seen
+
+
+def generate_all() -> dict:
+    """Every generated file, by its path relative to single_include/quat."""
+    text, held = generate()
+    outputs = {"quat.hpp": text}
+    external = {header: '#include "quat.hpp"' for header in held}
+    for name, title in OPT_IN.items():
+        text, held = generate_opt_in(name, title, external)
+        outputs[name] = text
+        for header in held:
+            external.setdefault(header, f'#include "{name}"')
+    return outputs
 
 
 def main() -> int:
@@ -126,7 +155,7 @@ def main() -> int:
                         help="directory of the files to write or check")
     args = parser.parse_args()
 
-    outputs = {"quat.hpp": generate(), "io.hpp": generate_io()}
+    outputs = generate_all()
     if args.check:
         status = 0
         for name, text in outputs.items():
@@ -143,6 +172,7 @@ def main() -> int:
         return status
     args.output_dir.mkdir(parents=True, exist_ok=True)
     for name, text in outputs.items():
+        (args.output_dir / name).parent.mkdir(parents=True, exist_ok=True)
         (args.output_dir / name).write_text(text, encoding="utf-8", newline="\n")
     return 0
 

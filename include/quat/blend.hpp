@@ -4,7 +4,6 @@
 #define QUAT_BLEND_HPP_INCLUDED
 
 #include <cstddef>
-#include <utility>
 
 #include "config.hpp"
 #include "detail/containers.hpp"
@@ -14,16 +13,6 @@
 namespace quat {
 
 #include "detail/isa_namespace.inc"
-namespace detail {
-
-// The T of a container of dual_quaternion<T>: declared only, for the type of its data.
-template <class T>
-T dual_quaternion_scalar(const dual_quaternion<T>*) noexcept;
-template <class Transforms>
-using dual_quaternion_scalar_t =
-    decltype(detail::dual_quaternion_scalar(detail::data_of(std::declval<const Transforms&>())));
-
-}  // namespace detail
 
 /// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
 /// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
@@ -69,7 +58,8 @@ template <class T, class Weight>
 /// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
 /// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
 /// Precondition: equal sizes (QUAT_ASSERT).
-template <class Transforms, class Weights, class T = detail::dual_quaternion_scalar_t<Transforms>>
+template <class Transforms, class Weights,
+          class T = detail::element_scalar_t<dual_quaternion, Transforms>>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
                                                  const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),

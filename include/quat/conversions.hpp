@@ -103,6 +103,26 @@ template <class T>
     return {u / s, T(2) * detail::atan2(s, p.w)};
 }
 
+/// The angle in [0, pi] of the rotation q: to_axis_angle(q).angle, q and -q alike, 0 for the
+/// identity, any non-zero scale of q giving the same; NaN for NaN or infinite components, 0 for the
+/// zero quaternion (whose axis is NaN). Eigen's AngleAxis(q).angle() agrees; glm::angle, 2 acos(w)
+/// in [0, 2 pi], returns 2 pi minus it for -cos(1/2) <= w < 0 (and this angle for w below that,
+/// where it switches to 2 asin(|v|)).
+template <class T>
+[[nodiscard]] constexpr T angle(const quaternion<T>& q) noexcept {
+    return to_axis_angle(q).angle;
+}
+
+/// The unit axis of the rotation q: to_axis_angle(q).axis, the axis about which q turns by
+/// angle(q) in [0, pi] counter-clockwise, so q and -q agree; (1, 0, 0) for the identity (as Eigen's
+/// AngleAxis); any non-zero scale of q gives the same; NaN for the zero quaternion or NaN or
+/// infinite components. glm::axis keeps q's sign (the opposite axis for w < 0) and gives
+/// (0, 0, 1) for the identity.
+template <class T>
+[[nodiscard]] constexpr vec3<T> axis(const quaternion<T>& q) noexcept {
+    return to_axis_angle(q).axis;
+}
+
 /// Axis and angle in [0, pi] of the rotation matrix m, exact at 180° (through the quaternion).
 template <class T>
 [[nodiscard]] constexpr axis_angle<T> to_axis_angle(const rotation_matrix<T>& m) noexcept {

@@ -34,6 +34,11 @@ struct dual_quaternion {
     [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
         return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
     }
+    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
+        const vec3<T>& t) noexcept {
+        return to_dual_quaternion(quaternion<T>::identity(), t);
+    }
 };
 
 using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
@@ -48,6 +53,14 @@ template <class T>
     const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
                              translation.z * T(0.5)};
     return {rotation, half * rotation};
+}
+
+/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
+/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const quaternion<T>& rotation) noexcept {
+    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
 }
 
 /// The rotation of the unit dual quaternion dq (its real part).
@@ -91,6 +104,38 @@ constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
     return a = a * b;
 }
 
+/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
+/// rigid motion unless s is +-1: normalize or blend weights use it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real * s, dq.dual * s};
+}
+/// Product with a scalar, all eight components; s converts to T.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
+                                                     const dual_quaternion<T>& dq) noexcept {
+    return dq * s;
+}
+/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real / s, dq.dual / s};
+}
+/// dq = dq * s.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq * s;
+}
+/// dq = dq / s.
+template <class T>
+constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq / s;
+}
+
 /// Exact component-wise equality; dq == -dq is false although both are one motion.
 template <class T>
 [[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
@@ -132,9 +177,7 @@ template <class T>
 [[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
     const dual_quaternion<T>& dq) noexcept {
     const quaternion<T>& d = dq.dual;
-    if (!try_normalize(dq.real) || !detail::is_finite(d.w) || !detail::is_finite(d.x) ||
-        !detail::is_finite(d.y) || !detail::is_finite(d.z))
-        return std::nullopt;
+    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
     const dual_quaternion<T> result = normalize(dq);
     // A dual part huge beside a tiny real part can overflow once divided by |real|.
     if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
@@ -148,6 +191,14 @@ template <class T>
     QUAT_ASSERT(detail::is_near_unit(dq.real),
                 "quat::transform: the real part is not a unit quaternion");
     return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
+/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
+/// transform_vector for a direction).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    return transform(dq, p);
 }
 
 /// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.

@@ -1,9 +1,15 @@
 // Element-by-element batches: point i turned by rotation i (rotate_each), the products a[i] * b[i]
-// (compose_each), and to_matrix / to_quaternion over arrays. No allocation; any scalar type.
+// (compose_each), and the conversions to_matrix_each and to_quaternion_each.
+//
+// Names: a function over arrays ends in _each when element i of its output comes from element i of
+// each input array (rotation i turns point i; a[i] * b[i]; matrix i of rotation i). One transform
+// applied to many elements keeps the plain name of its single form, with arrays in place of the
+// element (batch.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out), rigid_batch.hpp's
+// transform(dq, points, out)), as does a reduction of an array to one value (compose(factors)).
 //
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
-// vectorize them (checked with -fopt-info-vec and objdump). to_matrix and to_quaternion run the
-// scalar conversions element by element: vectorized versions (blocks of matrices regrouped
+// vectorize them (checked with -fopt-info-vec and objdump). to_matrix_each and to_quaternion_each
+// run the scalar conversions element by element: vectorized versions (blocks of matrices regrouped
 // through local arrays, a branch-free to_quaternion) measured slower than these loops for SSE2
 // and AVX2 with g++ 12, and 1.2 to 1.6 times faster only with AVX-512 (to_matrix slower there
 // with clang 14): g++ has no cheap way to regroup the nine interleaved entries of a matrix. Where
@@ -11,58 +17,30 @@
 // multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
-// as in batch.hpp. Aliasing: an output may be exactly an input of its own type (in place) or
-// overlap no input; it may never overlap an input of another type. A partial overlap is a
-// precondition violation: QUAT_ASSERT reports it in debug builds (a constant number of pointer
-// range comparisons per call); with NDEBUG the values written are unspecified. Like all of quat's
-// functions they live in the instruction-set namespace (detail/math.hpp).
+// as in batch.hpp; the struct-of-arrays views are soa.hpp's. Aliasing: an output may be exactly an
+// input of its own type (in place) or overlap no input; it may never overlap an input of another
+// type. A partial overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (a
+// constant number of pointer range comparisons per call); with NDEBUG the values written are
+// unspecified. Like all of quat's functions they live in the instruction-set namespace
+// (detail/math.hpp).
 #ifndef QUAT_ELEMENTWISE_HPP_INCLUDED
 #define QUAT_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
 #include <type_traits>
-#include <utility>
 
-#include "batch.hpp"
 #include "config.hpp"
 #include "conversions.hpp"
 #include "detail/containers.hpp"
+#include "detail/overlap.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
+#include "soa.hpp"
 #include "vec3.hpp"
-
-namespace quat {
-
-/// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
-/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
-/// soa_quaternions<T> converts to it.
-template <class T>
-struct soa_quaternions {
-    T* w;               ///< scalar parts
-    T* x;               ///< i components
-    T* y;               ///< j components
-    T* z;               ///< k components
-    std::size_t count;  ///< number of rotations in each array
-
-    /// The same arrays, read-only; always inlined, as soa_points' conversion (batch.hpp).
-    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
-    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
-        return {w, x, y, z, count};
-    }
-};
-
-}  // namespace quat
 
 namespace quat {
 #include "detail/isa_namespace.inc"
 namespace detail {
-
-// The T of a container of rotation_matrix<T>: declared only, for the type of its data.
-template <class T>
-T matrix_scalar(const rotation_matrix<T>*) noexcept;
-template <class Matrices>
-using matrix_scalar_t =
-    decltype(detail::matrix_scalar(detail::data_of(std::declval<const Matrices&>())));
 
 // rotate(q, v) is M v with M = I + s (w [u]x + [u]x^2), u = (x, y, z), s = 4 - 2 |q|^2 (2 / |q|^2
 // to first order). Applied without forming M, as v + s (w t + u x t) with t = u x v: 24 operations
@@ -203,20 +181,6 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
 #endif
 }
 
-// Each output array is one of the input arrays or overlaps none of them.
-template <class T>
-[[nodiscard]] bool soa_same_or_disjoint(soa_quaternions<const T> q, soa_points<const T> p,
-                                        soa_points<T> output) noexcept {
-    const std::size_t bytes = p.count * sizeof(T);
-    // Plain arrays, not braced lists, as in batch.hpp.
-    const T* const outputs[] = {output.x, output.y, output.z};
-    const T* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
-    for (const T* out : outputs)
-        for (const T* in : inputs)
-            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
-    return true;
-}
-
 }  // namespace detail
 
 /// output[i] = rotate(rotations[i], points[i]) for i < count (arrays of structs), for unit
@@ -248,7 +212,9 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
     QUAT_ASSERT(rotations.count == points.count,
                 "quat::rotate_each: rotations and points differ in size");
     QUAT_ASSERT(output.count >= points.count, "quat::rotate_each: output shorter than the input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint(rotations, points, output),
+    QUAT_ASSERT(detail::soa_same_or_disjoint({rotations.w, rotations.x, rotations.y, rotations.z,
+                                              points.x, points.y, points.z},
+                                             output, points.count),
                 "quat::rotate_each: an output array partially overlaps an input array");
     detail::rotate_each_soa(rotations, points, output);
 }
@@ -256,7 +222,7 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
 /// Container form of rotate_each: contiguous rotations (quaternion<T>) and points, any contiguous
 /// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output).
 template <class Rotations, class Points, class Output,
-          class T = detail::quaternion_scalar_t<Rotations>,
+          class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Points, Output>>
 void rotate_each(const Rotations& rotations, const Points& points, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(rotations) == detail::size_of(points),
@@ -282,7 +248,7 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
 }
 
 /// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output).
-template <class A, class B, class Output, class T = detail::quaternion_scalar_t<A>,
+template <class A, class B, class Output, class T = detail::element_scalar_t<quaternion, A>,
           class = detail::if_arrays_of<quaternion<T>, quaternion<T>, B, Output>>
 void compose_each(const A& a, const B& b, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(a) == detail::size_of(b),
@@ -296,42 +262,45 @@ void compose_each(const A& a, const B& b, Output&& output) noexcept {
 /// output[i] = to_matrix(q[i]) for i < count, for unit q[i] (unchecked: a non-unit q gives a matrix
 /// that is not a rotation). output must not overlap q.
 template <class T>
-void to_matrix(const quaternion<T>* q, rotation_matrix<T>* output, std::size_t count) noexcept {
+void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
+                    std::size_t count) noexcept {
     QUAT_ASSERT(detail::disjoint(q, count * sizeof(quaternion<T>), output,
                                  count * sizeof(rotation_matrix<T>)),
-                "quat::to_matrix: output overlaps the input");
+                "quat::to_matrix_each: output overlaps the input");
     for (std::size_t i = 0; i < count; ++i) {
         const quaternion<T> r = q[i];
         output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
     }
 }
 
-/// Container form of the batch to_matrix. Precondition: size(output) >= size(q).
-template <class Rotations, class Output, class T = detail::quaternion_scalar_t<Rotations>,
+/// Container form of to_matrix_each. Precondition: size(output) >= size(q).
+template <class Rotations, class Output, class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<quaternion<T>, rotation_matrix<T>, Rotations, Output>>
-void to_matrix(const Rotations& q, Output&& output) noexcept {
+void to_matrix_each(const Rotations& q, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(q),
-                "quat::to_matrix: output shorter than the input");
-    to_matrix(detail::data_of(q), detail::data_of(output), detail::size_of(q));
+                "quat::to_matrix_each: output shorter than the input");
+    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::size_of(q));
 }
 
 /// output[i] = to_quaternion(m[i]) for i < count (w >= 0). Precondition: rotation matrices, as for
 /// the scalar to_quaternion; output must not overlap m.
 template <class T>
-void to_quaternion(const rotation_matrix<T>* m, quaternion<T>* output, std::size_t count) noexcept {
+void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
+                        std::size_t count) noexcept {
     QUAT_ASSERT(detail::disjoint(m, count * sizeof(rotation_matrix<T>), output,
                                  count * sizeof(quaternion<T>)),
-                "quat::to_quaternion: output overlaps the input");
+                "quat::to_quaternion_each: output overlaps the input");
     for (std::size_t i = 0; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 
-/// Container form of the batch to_quaternion. Precondition: size(output) >= size(m).
-template <class Matrices, class Output, class T = detail::matrix_scalar_t<Matrices>,
+/// Container form of to_quaternion_each. Precondition: size(output) >= size(m).
+template <class Matrices, class Output,
+          class T = detail::element_scalar_t<rotation_matrix, Matrices>,
           class = detail::if_arrays_of<rotation_matrix<T>, quaternion<T>, Matrices, Output>>
-void to_quaternion(const Matrices& m, Output&& output) noexcept {
+void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(m),
-                "quat::to_quaternion: output shorter than the input");
-    to_quaternion(detail::data_of(m), detail::data_of(output), detail::size_of(m));
+                "quat::to_quaternion_each: output shorter than the input");
+    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::size_of(m));
 }
 
 }  // inline namespace isa_...

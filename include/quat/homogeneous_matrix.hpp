@@ -63,6 +63,11 @@ struct homogeneous_matrix {
                  {T(0), T(0), T(1), T(0)},
                  {T(0), T(0), T(0), T(1)}}};
     }
+    /// The pure translation x -> x + t: to_homogeneous(rotation_matrix<T>::identity(), t).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr homogeneous_matrix from_translation(
+        const vec3<T>& t) noexcept {
+        return to_homogeneous(rotation_matrix<T>::identity(), t);
+    }
 };
 
 #include "detail/isa_namespace.inc"
@@ -135,17 +140,58 @@ template <class T>
     return rotate(rotation_block(m), v);
 }
 
+/// h * p, as GLM's mat4 * vec4(p, 1) and Eigen's Isometry3 * Vector3 read: the same as
+/// transform(h, p). A point transform: p is rotated, then translated (transform_vector turns a
+/// direction without translating).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const homogeneous_matrix<T>& h,
+                                          const vec3<T>& p) noexcept {
+    return transform(h, p);
+}
+
+/// The rigid motion x -> R x + t as a 4x4 matrix: rotation block r, last column translation,
+/// last row (0, 0, 0, 1), each copied exactly. Precondition: r is a rotation (not checked; any
+/// 3x3 matrix is copied as given).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(const rotation_matrix<T>& rotation,
+                                                             const vec3<T>& translation) noexcept {
+    const rotation_matrix<T>& r = rotation;
+    const vec3<T>& t = translation;
+    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
+             {r(1, 0), r(1, 1), r(1, 2), t.y},
+             {r(2, 0), r(2, 1), r(2, 2), t.z},
+             {T(0), T(0), T(0), T(1)}}};
+}
+
+/// The pure rotation r as a 4x4 matrix: to_homogeneous(r, {0, 0, 0}).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const rotation_matrix<T>& rotation) noexcept {
+    return to_homogeneous(rotation, vec3<T>{T(0), T(0), T(0)});
+}
+
+/// The rigid motion x -> R x + t, R the rotation of unit q: to_homogeneous(to_matrix(q), t), with
+/// the translation exact (to_homogeneous(to_dual_quaternion(q, t)) rounds it). Precondition: unit
+/// q (checked in debug builds by to_matrix).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(const quaternion<T>& rotation,
+                                                             const vec3<T>& translation) noexcept {
+    return to_homogeneous(to_matrix(rotation), translation);
+}
+
+/// The pure rotation by unit q as a 4x4 matrix: to_homogeneous(to_matrix(q), {0, 0, 0}).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const quaternion<T>& rotation) noexcept {
+    return to_homogeneous(to_matrix(rotation), vec3<T>{T(0), T(0), T(0)});
+}
+
 /// The 4x4 matrix of the unit dual quaternion dq: rotation block to_matrix(dq.real), last column
 /// translation_of(dq), last row (0, 0, 0, 1). Precondition: unit dq (normalize gives one).
 template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
     const dual_quaternion<T>& dq) noexcept {
-    const rotation_matrix<T> r = to_matrix(dq.real);
-    const vec3<T> t = translation_of(dq);
-    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
-             {r(1, 0), r(1, 1), r(1, 2), t.y},
-             {r(2, 0), r(2, 1), r(2, 2), t.z},
-             {T(0), T(0), T(0), T(1)}}};
+    return to_homogeneous(to_matrix(dq.real), translation_of(dq));
 }
 
 namespace detail {
@@ -169,6 +215,18 @@ template <class T>
 }
 
 }  // namespace detail
+
+/// The inverse x -> R^T (x - t) of the rigid motion m = [R t; 0 1]: rotation block R^T, translation
+/// -R^T t, exact transposition and 9 multiplications. Precondition: m is rigid (checked in debug
+/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to its
+/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that is
+/// not m's inverse (invert those with a general 4x4 inverse). NaN propagates.
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> inverse(const homogeneous_matrix<T>& m) noexcept {
+    QUAT_ASSERT(detail::is_near_rigid(m), "quat::inverse: the matrix is not a rigid motion");
+    const rotation_matrix<T> r_transposed = transpose(rotation_block(m));
+    return to_homogeneous(r_transposed, -rotate(r_transposed, translation_of(m)));
+}
 
 /// The unit dual quaternion (real part w >= 0) of the rigid motion m, exact at half turns (through
 /// to_quaternion). Precondition: m is rigid (checked in debug builds); try_to_dual_quaternion

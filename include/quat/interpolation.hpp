@@ -1,9 +1,13 @@
 // Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
-// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle).
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
+// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
 #ifndef QUAT_INTERPOLATION_HPP_INCLUDED
 #define QUAT_INTERPOLATION_HPP_INCLUDED
 
+#include <type_traits>
+
 #include "config.hpp"
+#include "detail/exp_log.hpp"
 #include "detail/math.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
@@ -84,6 +88,65 @@ template <class T>
     const vec3<T> v = u / s * detail::sin(half);
     // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
     return quaternion<T>{detail::cos(half), v.x, v.y, v.z} + (p - p);
+}
+
+/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
+/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
+/// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept) to huge or subnormal |v| (measured as
+/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
+/// ignores w and returns the identity for |v| < epsilon.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
+    const vec3<T> v{q.x, q.y, q.z};
+    const T e = detail::scalar_exp(q.w);
+    const T angle = norm(v);
+    if (angle == T(0)) return {e, q.x, q.y, q.z};
+    const T angle2 = angle * angle;
+    T c{}, sinc{};  // cos|v| and sin|v| / |v|
+    if (angle2 * angle2 < detail::epsilon<T>()) {
+        // Taylor series; the first omitted terms are below epsilon^1.5.
+        c = T(1) - angle2 / T(2) + angle2 * angle2 / T(24);
+        sinc = T(1) - angle2 / T(6) + angle2 * angle2 / T(120);
+    } else {
+        c = detail::cos(angle);
+        sinc = detail::sin(angle) / angle;
+    }
+    const vec3<T> u = v * (sinc * e);
+    return {c * e, u.x, u.y, u.z};
+}
+
+/// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
+/// part's length in [0, pi], so exp(log(q)) == q. For a unit q with w >= 0, log(q) is
+/// (0, to_rotation_vector(q) / 2) to within a few eps; for w < 0 its vector part is half the
+/// rotation vector of the longer way round (length above pi / 2), as q and -q differ here. Real q:
+/// (ln w, 0, 0, 0) for w > 0 (v's signed zeros kept), (ln|w|, pi, 0, 0) for w < 0 (the axis
+/// (1, 0, 0), as to_axis_angle and glm::log choose), (-Inf, 0, 0, 0) for zero. Accurate for tiny
+/// |v| (no 0/0) and for components from subnormal to max() (|q| and |v| scaled as norm does);
+/// NaN or infinite components give NaN in every component.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> log(const quaternion<T>& q) noexcept {
+    const T s2 = squared_norm(q);
+    T log_norm{};
+    if (detail::in_normal_range(s2)) {
+        log_norm = T(0.5) * detail::scalar_log(s2);
+    } else {
+        // |q|^2 over- or underflowed: ln|q| = ln(scale) + ln|q / scale| with scale the largest
+        // |component|, which brings |q / scale| into [1, 2].
+        if (s2 != s2) return detail::nan_quaternion<T>();  // a NaN that largest_magnitude may skip
+        const T scale = detail::largest_magnitude(q);
+        if (!detail::is_finite(scale)) return detail::nan_quaternion<T>();
+        if (scale == T(0)) return {-detail::infinity<T>(), q.x, q.y, q.z};
+        log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
+    }
+    const vec3<T> v{q.x, q.y, q.z};
+    const T length = norm(v);
+    if (length == T(0)) {
+        if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};
+        return {log_norm, q.x, q.y, q.z};
+    }
+    const vec3<T> u = v / length * detail::atan2(length, q.w);
+    return {log_norm, u.x, u.y, u.z};
 }
 
 /// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,

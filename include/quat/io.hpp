@@ -9,7 +9,7 @@
 //   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
 //   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
 //   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
-//   alignment_with_sensitivity{quaternion{...}, 0.25, true, rotation_matrix{...}}
+//   alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}
 //   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
@@ -30,9 +30,9 @@
 #ifndef QUAT_IO_HPP_INCLUDED
 #define QUAT_IO_HPP_INCLUDED
 
-#include <cstddef>
 #include <ostream>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 #if __has_include(<version>)
@@ -44,6 +44,7 @@
 
 #include "align_vectors.hpp"
 #include "axis_angle.hpp"
+#include "detail/print_layout.hpp"
 #include "dual_quaternion.hpp"
 #include "euler.hpp"
 #include "homogeneous_matrix.hpp"
@@ -57,157 +58,6 @@ namespace quat {
 
 #include "detail/isa_namespace.inc"
 namespace detail {
-
-// Names in the enumerators' order (sequence and frame count from 0 without gaps).
-inline constexpr std::string_view sequence_names[] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
-                                                      "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"};
-inline constexpr std::string_view frame_names[] = {"intrinsic", "extrinsic"};
-
-template <class Enum, std::size_t N>
-[[nodiscard]] constexpr std::string_view name_in(const std::string_view (&names)[N], Enum value,
-                                                 std::string_view unknown) noexcept {
-    const auto index = static_cast<std::size_t>(value);  // a negative value wraps to a huge index
-    return index < N ? names[index] : unknown;
-}
-
-[[nodiscard]] constexpr std::string_view spelling(sequence s) noexcept {
-    return name_in(sequence_names, s, "sequence?");
-}
-
-[[nodiscard]] constexpr std::string_view spelling(frame f) noexcept {
-    return name_in(frame_names, f, "frame?");
-}
-
-// The layout of each type, written once for streams, std::format and fmt: a printer p offers
-// p.text(ascii) for the fixed text and p.value(component) for each scalar.
-
-// "{a, b, ...}"
-template <class Printer, class T, class... Rest>
-void write_braced(Printer& p, const T& first, const Rest&... rest) {
-    p.text("{");
-    p.value(first);
-    ((p.text(", "), p.value(rest)), ...);
-    p.text("}");
-}
-
-template <class Printer>
-void write_layout(Printer& p, sequence s) {
-    p.text(spelling(s));
-}
-
-template <class Printer>
-void write_layout(Printer& p, frame f) {
-    p.text(spelling(f));
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const vec3<T>& v) {
-    p.text("vec3");
-    write_braced(p, v.x, v.y, v.z);
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const quaternion<T>& q) {
-    p.text("quaternion");
-    write_braced(p, q.w, q.x, q.y, q.z);
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const rotation_matrix<T>& m) {
-    p.text("rotation_matrix{");
-    for (int row = 0; row < 3; ++row) {
-        if (row > 0) p.text(", ");
-        write_braced(p, m(row, 0), m(row, 1), m(row, 2));
-    }
-    p.text("}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const axis_angle<T>& rotation) {
-    p.text("axis_angle{");
-    write_layout(p, rotation.axis);
-    p.text(", ");
-    p.value(rotation.angle);
-    p.text("}");
-}
-
-template <class Printer, class T, sequence S, frame F>
-void write_layout(Printer& p, const euler<T, S, F>& e) {
-    p.text("euler<");
-    p.text(spelling(S));
-    p.text(", ");
-    p.text(spelling(F));
-    p.text(">");
-    write_braced(p, e[0], e[1], e[2]);
-}
-
-template <class Printer, class T, sequence S, frame F>
-void write_layout(Printer& p, const euler_extraction<T, S, F>& extraction) {
-    p.text("euler_extraction{");
-    write_layout(p, extraction.angles);
-    p.text(extraction.gimbal_lock ? ", true}" : ", false}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const alignment<T>& a) {
-    p.text("alignment{");
-    write_layout(p, a.rotation);
-    p.text(", ");
-    p.value(a.rssd);
-    p.text(a.unique ? ", true}" : ", false}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
-    p.text("alignment_with_sensitivity{");
-    write_layout(p, a.rotation);
-    p.text(", ");
-    p.value(a.rssd);
-    p.text(a.unique ? ", true, " : ", false, ");
-    write_layout(p, a.sensitivity);
-    p.text("}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const swing_twist_parts<T>& parts) {
-    p.text("swing_twist_parts{");
-    write_layout(p, parts.swing);
-    p.text(", ");
-    write_layout(p, parts.twist);
-    p.text("}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const dual_quaternion<T>& dq) {
-    p.text("dual_quaternion{");
-    write_layout(p, dq.real);
-    p.text(", ");
-    write_layout(p, dq.dual);
-    p.text("}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const homogeneous_matrix<T>& m) {
-    p.text("homogeneous_matrix{");
-    for (int row = 0; row < 4; ++row) {
-        if (row > 0) p.text(", ");
-        write_braced(p, m(row, 0), m(row, 1), m(row, 2), m(row, 3));
-    }
-    p.text("}");
-}
-
-template <class Printer, class T>
-void write_layout(Printer& p, const screw<T>& s) {
-    p.text("screw{");
-    write_layout(p, s.direction);
-    p.text(", ");
-    write_layout(p, s.moment);
-    p.text(", ");
-    p.value(s.angle);
-    p.text(", ");
-    p.value(s.displacement);
-    p.text("}");
-}
 
 // Writes to a stream that carries the flags, precision and locale of the user's stream.
 template <class CharT, class Traits>
@@ -236,63 +86,6 @@ std::basic_ostream<CharT, Traits>& print_to_stream(std::basic_ostream<CharT, Tra
     write_layout(printer, value);
     return os << text.str();
 }
-
-// Writes to a std::format or fmt context, each component through Formatter, which parsed the spec.
-template <class Formatter, class Context>
-struct format_printer {
-    const Formatter& component_formatter;
-    Context& context;
-
-    void text(std::string_view ascii) {
-        auto out = context.out();
-        for (char c : ascii) *out++ = static_cast<typename Context::char_type>(c);
-        context.advance_to(out);
-    }
-    template <class T>
-    void value(const T& component) {
-        context.advance_to(component_formatter.format(component, context));
-    }
-};
-
-// The formatter of a quat value type for std::format and fmt: ComponentFormatter, the scalar's own
-// formatter, parses the spec once and formats every component with it.
-template <class Value, class ComponentFormatter>
-struct value_formatter {
-    ComponentFormatter component_formatter;
-
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return component_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(const Value& value, FormatContext& context) const {
-        format_printer<ComponentFormatter, FormatContext> printer{component_formatter, context};
-        write_layout(printer, value);
-        return context.out();
-    }
-};
-
-// The formatter of sequence and frame: their names through StringFormatter, the formatter of
-// std::basic_string_view<CharT>, so string specs such as width and fill apply.
-template <class Enum, class StringFormatter>
-struct name_formatter {
-    StringFormatter string_formatter;
-
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return string_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(Enum value, FormatContext& context) const {
-        using CharT = typename FormatContext::char_type;
-        constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
-        const std::string_view ascii = spelling(value);
-        const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
-        CharT name[longest]{};
-        for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
-        return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
-    }
-};
 
 }  // namespace detail
 
@@ -362,7 +155,7 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
-/// Prints alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}, the
+/// Prints alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}, the
 /// sensitivity matrix by rows; stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -447,7 +240,7 @@ template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
     : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}; the
+/// Formats alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>

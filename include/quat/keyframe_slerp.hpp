@@ -27,7 +27,7 @@ namespace quat {
 /// for empty or unequal sizes and an unspecified, possibly NaN, rotation for bad times. A NaN t
 /// gives NaN; a NaN or infinite keyframe gives a non-finite component wherever it is used (held
 /// as it is outside the times, as slerp gives it inside).
-template <class Times, class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> keyframe_slerp(const Times& times, const Rotations& rotations,
                                                      detail::type_identity_t<T> t) noexcept {
     const std::size_t count = detail::size_of(rotations);

@@ -5,30 +5,13 @@
 #include "config.hpp"
 #include "conversions.hpp"
 #include "detail/math.hpp"
+#include "detail/relative_rotation.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
 
 namespace quat {
 
 #include "detail/isa_namespace.inc"
-namespace detail {
-
-/// The relative rotation q0* q1 (Body) or q1 q0* (not Body), with q1's sign taken nearer q0. Its
-/// vector part comes from q1 - q0 in place of q1: q0* q0 = |q0|^2 is real, so the vector parts
-/// agree exactly, but q1 - q0 is formed with one relative rounding per component, and the products
-/// then round relative to the small result instead of leaving a difference of nearly equal
-/// products (an absolute error of eps, a relative one of eps / angle, for q0 close to q1).
-template <bool Body, class T>
-[[nodiscard]] constexpr quaternion<T> relative_rotation(const quaternion<T>& q0,
-                                                        const quaternion<T>& q1) noexcept {
-    const quaternion<T> near = dot(q0, q1) < T(0) ? -q1 : q1;
-    const quaternion<T> step = near - q0;
-    const quaternion<T> v = Body ? conjugate(q0) * step : step * conjugate(q0);
-    return {dot(q0, near), v.x, v.y, v.z};
-}
-
-}  // namespace detail
-
 /// Body-frame angular velocity (a gyroscope's reading, radians per unit of dt) that turns unit q0
 /// into unit q1 in time dt at a constant rate: integrate_body(q0, omega, dt) == q1 as rotations,
 /// along the shorter arc (q1 and -q1 give the same omega, |omega dt| <= pi). Relative error of a

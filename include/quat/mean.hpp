@@ -115,7 +115,7 @@ template <class T>
 /// w >= 0. Where the mean is not unique (try_mean reports it), one of the minimizers. NaN for an
 /// empty container or a NaN or infinite component. Precondition: unit quaternions (QUAT_ASSERT);
 /// unchecked, longer ones count more.
-template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations) noexcept {
     return detail::mean_of(detail::solve_mean<false>(
         detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
@@ -126,7 +126,7 @@ template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
 /// count), as long as rotations (QUAT_ASSERT); a zero weight drops that rotation. Precondition:
 /// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, or a weight is
 /// negative, NaN or infinite.
-template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations,
                                            const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
@@ -142,7 +142,7 @@ template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<
 /// within 1/4096 of 1, as the debug check of mean), or a mean that is not unique: the two largest
 /// eigenvalues of sum q_i q_i^T differ by at most sqrt(epsilon) times the number of rotations (two
 /// rotations half a turn apart, for one). Never asserts.
-template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations) noexcept {
     return detail::unique_mean_of(detail::solve_mean<true>(
         detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
@@ -152,7 +152,7 @@ template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
 /// rotations differ in size, no weight is positive, a weight is negative, NaN or infinite, or the
 /// mean is not unique: the two largest eigenvalues of sum w_i q_i q_i^T differ by at most
 /// sqrt(epsilon) times the sum of the weights. Never asserts.
-template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations,
                                                               const Weights& weights) noexcept {
     if (detail::size_of(weights) != detail::size_of(rotations)) return std::nullopt;

@@ -22,6 +22,7 @@
 #define QUAT_QUAT_HPP_INCLUDED
 
 #include "align.hpp"
+#include "align_points.hpp"
 #include "align_vectors.hpp"
 #include "axis_angle.hpp"
 #include "batch.hpp"
@@ -33,10 +34,10 @@
 #include "dual_quaternion.hpp"
 #include "elementwise.hpp"
 #include "euler.hpp"
-#include "fast_slerp.hpp"
 #include "homogeneous_matrix.hpp"
 #include "interpolation.hpp"
 #include "keyframe_slerp.hpp"
+#include "keyframe_squad.hpp"
 #include "kinematics.hpp"
 #include "mean.hpp"
 #include "nearest_rotation.hpp"
@@ -47,6 +48,7 @@
 #include "rotation_spline.hpp"
 #include "sclerp.hpp"
 #include "screw.hpp"
+#include "slerp_fast.hpp"
 #include "squad.hpp"
 #include "swing_twist.hpp"
 #include "vec3.hpp"

@@ -177,6 +177,12 @@ template <class T>
     return max(max(abs(q.w), abs(q.x)), max(abs(q.y), abs(q.z)));
 }
 
+/// True when every component of q is finite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite(const quaternion<T>& q) noexcept {
+    return is_finite(q.w) && is_finite(q.x) && is_finite(q.y) && is_finite(q.z);
+}
+
 /// NaN in every component.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> nan_quaternion() noexcept {
@@ -225,9 +231,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(
     const quaternion<T>& q) noexcept {
-    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
-        !detail::is_finite(q.z))
-        return std::nullopt;
+    if (!detail::is_finite(q)) return std::nullopt;
     if (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)) return std::nullopt;
     return normalize(q);
 }
@@ -294,6 +298,12 @@ template <class T>
     return detail::rotate_unchecked(q, v);
 }
 
+/// q * v, as GLM, Eigen and Unity write it: the same as rotate(q, v), debug check included.
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const quaternion<T>& q, const vec3<T>& v) noexcept {
+    return rotate(q, v);
+}
+
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
 /// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
 /// NaN when a or b has a NaN or infinite component.
@@ -324,10 +334,16 @@ template <class T>
 
 namespace detail {
 
+/// The scalar type of rotation_x<T>(angle) and its siblings: T when the caller names it (void when
+/// not), else that of the angle: double for an integer angle, the angle's type otherwise.
+template <class T, class A>
+using axis_rotation_scalar_t = std::conditional_t<std::is_void_v<T>, real_t<A>, T>;
+
 // The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
-template <int Axis, class A>
-[[nodiscard]] constexpr quaternion<real_t<A>> axis_rotation(A angle) noexcept {
-    using T = real_t<A>;
+// The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
+// rotation_x(numbers::pi_v<float>), without a narrowing warning at the call.
+template <int Axis, class T, class A>
+[[nodiscard]] constexpr quaternion<T> axis_rotation(A angle) noexcept {
     const T half = static_cast<T>(angle) * T(0.5), s = detail::sin(half);
     return {detail::cos(half), Axis == 0 ? s : T(0), Axis == 1 ? s : T(0), Axis == 2 ? s : T(0)};
 }
@@ -335,22 +351,28 @@ template <int Axis, class A>
 }  // namespace detail
 
 /// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
-/// An integer angle gives a quatd.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_x(A angle) noexcept {
-    return detail::axis_rotation<0>(angle);
+/// The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless named:
+/// rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_x(
+    A angle) noexcept {
+    return detail::axis_rotation<0, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
 /// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_y(A angle) noexcept {
-    return detail::axis_rotation<1>(angle);
+/// Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_y(
+    A angle) noexcept {
+    return detail::axis_rotation<1, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
 /// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
-    return detail::axis_rotation<2>(angle);
+/// Precision as rotation_x.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_z(
+    A angle) noexcept {
+    return detail::axis_rotation<2, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 }  // inline namespace isa_...
 

@@ -56,7 +56,7 @@ template <class T, class Generator>
     // (x, y) on a circle of radius sqrt(1 - u1) and (w, z) on one of radius sqrt(u1): the squared
     // radii are uniform, which makes the point uniform on the 3-sphere.
     const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
-    const T theta1 = T(2) * pi_v<T> * u2, theta2 = pi_v<T> * (u3 - T(0.5));
+    const T theta1 = T(2) * numbers::pi_v<T> * u2, theta2 = numbers::pi_v<T> * (u3 - T(0.5));
     // |cos|: pi rounded to float exceeds pi, so theta2 can land just past -pi/2 (u3 = 2^-31 gave
     // w = -3.1e-8); mirroring that sliver keeps w >= 0 and moves no probability.
     return {r2 * detail::abs(detail::cos(theta2)), r1 * detail::sin(theta1),

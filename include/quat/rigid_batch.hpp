@@ -1,68 +1,64 @@
 // Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
-// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops,
-// aliasing rules and instruction-set namespaces are those of batch.hpp.
+// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
+// (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
+// namespaces are those of batch.hpp.
 #ifndef QUAT_RIGID_BATCH_HPP_INCLUDED
 #define QUAT_RIGID_BATCH_HPP_INCLUDED
 
 #include <cstddef>
-#include <type_traits>
-#include <utility>
 
-#include "batch.hpp"
 #include "config.hpp"
 #include "conversions.hpp"
+#include "detail/chained_product.hpp"
 #include "detail/containers.hpp"
+#include "detail/overlap.hpp"
+#include "detail/transform_points.hpp"
 #include "dual_quaternion.hpp"
 #include "homogeneous_matrix.hpp"
+#include "quaternion.hpp"
+#include "soa.hpp"
 #include "vec3.hpp"
 
 namespace quat {
 #include "detail/isa_namespace.inc"
 namespace detail {
 
-// The product f[0] f[1] ... f[count - 1] in four interleaved chains, as compose of quaternions
-// does, but with the chains' components stored component-major (component c of chain j at
-// chain[c][j]): each step is then the same arithmetic on four lanes, which compilers turn into
-// vector instructions even at SSE2. Held as four dual quaternions, the 32 running components
-// overflow SSE2's 16 registers and the loop stays scalar: 2.4 times slower (measured by
-// rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+// The four chains of chained_product for dual quaternions, their running products stored
+// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
+// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
+// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
+// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> interleaved_dual_product(const dual_quaternion<T>* f,
-                                                                    std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        dual_quaternion<T> product = dual_quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
-    for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
-    for (std::size_t i = 0; i < run; ++i) {
-        T b[8][lanes] = {};
-        for (std::size_t j = 0; j < lanes; ++j) {
-            const dual_quaternion<T>& factor = f[j * run + i];
-            const T components[8] = {factor.real.w, factor.real.x, factor.real.y, factor.real.z,
-                                     factor.dual.w, factor.dual.x, factor.dual.y, factor.dual.z};
-            for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+struct dual_chain_components {
+    static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,
+                                       dual_quaternion<T> (&chain)[product_chains]) noexcept {
+        constexpr std::size_t lanes = product_chains;
+        T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
+        for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
+        for (std::size_t i = 0; i < run; ++i) {
+            T b[8][lanes] = {};
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const dual_quaternion<T>& factor = f[j * run + i];
+                const T components[8] = {factor.real.w, factor.real.x, factor.real.y,
+                                         factor.real.z, factor.dual.w, factor.dual.x,
+                                         factor.dual.y, factor.dual.z};
+                for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+            }
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
+                const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
+                const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
+                const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
+                const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
+                const T components[8] = {real.w, real.x, real.y, real.z,
+                                         dual.w, dual.x, dual.y, dual.z};
+                for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
+            }
         }
-        for (std::size_t j = 0; j < lanes; ++j) {
-            const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
-            const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
-            const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
-            const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
-            const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
-            const T components[8] = {real.w, real.x, real.y, real.z,
-                                     dual.w, dual.x, dual.y, dual.z};
-            for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
-        }
+        for (std::size_t j = 0; j < lanes; ++j)
+            chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
     }
-    dual_quaternion<T> chain[lanes] = {};
-    for (std::size_t j = 0; j < lanes; ++j)
-        chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
-    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
-    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
-}
+};
 
 }  // namespace detail
 
@@ -92,7 +88,7 @@ template <class T>
 void transform(const homogeneous_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
                soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
+    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
                 "quat::transform: an output array partially overlaps an input array");
     detail::transform_points<true>(rotation_block(m), translation_of(m), input, output);
 }
@@ -106,14 +102,16 @@ void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_ident
 
 /// Container form of the array-of-structs transform by unit dq: any contiguous input and output
 /// of vec3<T>. Precondition: size(output) >= size(input).
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
     transform(dq, detail::data_of(input), detail::data_of(output), detail::size_of(input));
 }
 /// Container form of the array-of-structs transform by the 4x4 matrix m.
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
@@ -126,15 +124,12 @@ void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& outp
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
                                                    std::size_t count) noexcept {
-    return detail::interleaved_dual_product(dq, count);
+    return detail::chained_product<dual_quaternion<T>, detail::dual_chain_components<T>>(dq, count);
 }
 
 /// compose over any contiguous container or view of dual_quaternion<T>.
-template <class Range, class T = std::remove_cv_t<std::remove_pointer_t<
-                           decltype(detail::data_of(std::declval<const Range&>()))>>>
-[[nodiscard]] constexpr std::enable_if_t<std::is_same_v<T, dual_quaternion<decltype(T{}.real.w)>>,
-                                         T>
-compose(const Range& factors) noexcept {
+template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range>>
+[[nodiscard]] constexpr dual_quaternion<T> compose(const Range& factors) noexcept {
     return compose(detail::data_of(factors), detail::size_of(factors));
 }
 

@@ -118,6 +118,12 @@ template <class T>
             m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
 }
 
+/// M v as the math writes it (GLM, Eigen, Sophus): the same as rotate(m, v).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const rotation_matrix<T>& m, const vec3<T>& v) noexcept {
+    return rotate(m, v);
+}
+
 /// Transpose; for a rotation, its inverse.
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> transpose(const rotation_matrix<T>& m) noexcept {

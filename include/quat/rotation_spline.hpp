@@ -13,9 +13,9 @@
 #include "detail/block_tridiagonal.hpp"
 #include "detail/containers.hpp"
 #include "detail/math.hpp"
+#include "detail/relative_rotation.hpp"
 #include "detail/rotation_vector_jacobian.hpp"
 #include "detail/segments.hpp"
-#include "kinematics.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
 
@@ -104,9 +104,7 @@ public:
             const quaternion<T>& q = rotation[i];
             // Zero, not |q|^2 == 0: normalize scales subnormal keyframes up first.
             if (!detail::is_finite(t) || (i > 0 && !(detail::to_scalar<T>(time[i - 1]) < t)) ||
-                !detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
-                !detail::is_finite(q.z) ||
-                (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)))
+                !detail::is_finite(q) || (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)))
                 return std::nullopt;
         }
         rotation_spline spline(times, rotations);
@@ -253,7 +251,7 @@ private:
 /// rotation_spline(times, rotations) takes its scalar from the rotations: quaternion<T> gives T.
 template <class Times, class Rotations>
 rotation_spline(const Times&, const Rotations&)
-    -> rotation_spline<detail::quaternion_scalar_t<Rotations>>;
+    -> rotation_spline<detail::element_scalar_t<quaternion, Rotations>>;
 
 template <class T>
 bool rotation_spline<T>::build() {

@@ -7,8 +7,8 @@
 
 #include "config.hpp"
 #include "detail/math.hpp"
+#include "detail/relative_rotation.hpp"
 #include "dual_quaternion.hpp"
-#include "kinematics.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
 

@@ -59,9 +59,7 @@ template <class T>
 [[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
     const quaternion<T>& q, const vec3<T>& axis) noexcept {
     const std::optional<vec3<T>> unit_axis = try_normalize(axis);
-    if (!unit_axis || !detail::is_finite(q.w) || !detail::is_finite(q.x) ||
-        !detail::is_finite(q.y) || !detail::is_finite(q.z) || !detail::is_near_unit(q))
-        return std::nullopt;
+    if (!unit_axis || !detail::is_finite(q) || !detail::is_near_unit(q)) return std::nullopt;
     return detail::try_swing_twist_unit(q, *unit_axis);
 }
 

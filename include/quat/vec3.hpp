@@ -2,9 +2,11 @@
 #ifndef QUAT_VEC3_HPP_INCLUDED
 #define QUAT_VEC3_HPP_INCLUDED
 
+#include <cstddef>
 #include <limits>
 #include <optional>
 
+#include "config.hpp"
 #include "detail/math.hpp"
 
 namespace quat {
@@ -26,6 +28,18 @@ struct vec3 {
     template <class U>
     [[gnu::always_inline]] constexpr explicit vec3(const vec3<U>& v) noexcept
         : x(static_cast<T>(v.x)), y(static_cast<T>(v.y)), z(static_cast<T>(v.z)) {}
+
+    /// Component i in {0, 1, 2}: x, y, z (checked in debug builds).
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator[](std::size_t i) noexcept {
+        QUAT_ASSERT(i < 3, "vec3 index out of range");
+        return i == 0 ? x : (i == 1 ? y : z);
+    }
+    /// Component i in {0, 1, 2}, read-only.
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator[](
+        std::size_t i) const noexcept {
+        QUAT_ASSERT(i < 3, "vec3 index out of range");
+        return i == 0 ? x : (i == 1 ? y : z);
+    }
 };
 
 #include "detail/isa_namespace.inc"
@@ -116,14 +130,47 @@ template <class T>
     return max(max(abs(v.x), abs(v.y)), abs(v.z));
 }
 
+/// True when every component of v is finite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite(const vec3<T>& v) noexcept {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);
+}
+
 /// True when every component of v is finite and one is non-zero: a vector with a direction.
 template <class T>
 [[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
-           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
+    return is_finite(v) && !(v.x == T(0) && v.y == T(0) && v.z == T(0));
 }
 
 }  // namespace detail
+
+namespace detail {
+
+/// a + t (b - a) with std::lerp's guarantees (C++20, P0811): exactly a at t = 0 and b at t = 1,
+/// monotonic in t, lerp(a, a, t) == a for finite t. Where a and b differ in sign (or one is zero)
+/// the weighted sum t b + (1 - t) a has them all; otherwise a + t (b - a), exactly b at t = 1 and
+/// kept from passing b just before it. The same value as std::lerp wherever that is not NaN; where
+/// it is (a NaN or infinite a or t), NaN, not std::lerp's b.
+template <class T>
+[[nodiscard]] constexpr T lerp(T a, T b, T t) noexcept {
+    if ((a <= T(0) && b >= T(0)) || (a >= T(0) && b <= T(0))) return t * b + (T(1) - t) * a;
+    if (t == T(1)) return b;
+    const T x = a + t * (b - a);
+    // Moving towards b and beyond: never short of b. Otherwise never past it. A NaN x is kept.
+    if ((t > T(1)) == (b > a)) return !(x <= b) ? x : b;
+    return !(x >= b) ? x : b;
+}
+
+}  // namespace detail
+
+/// The point a + t (b - a), component by component as std::lerp computes it: exactly a at t = 0
+/// and b at t = 1, monotonic in t, and a for a == b; t outside [0, 1] extrapolates. NaN in gives
+/// NaN out (where std::lerp may return b). Not a rotation interpolation (slerp and nlerp are).
+template <class T>
+[[nodiscard]] constexpr vec3<T> lerp(const vec3<T>& a, const vec3<T>& b,
+                                     detail::type_identity_t<T> t) noexcept {
+    return {detail::lerp(a.x, b.x, t), detail::lerp(a.y, b.y, t), detail::lerp(a.z, b.z, t)};
+}
 
 /// Euclidean length |v|, without overflow or underflow for huge or tiny components.
 template <class T>

@@ -22,7 +22,8 @@
 // LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
 // OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
 // SOFTWARE.
-// Opt-in: keep this file beside the single quat.hpp, which it includes.
+// Opt-in: keep this file at quat/io.hpp beside the single quat.hpp, which it
+// includes.
 
 // Printing quat's types: operator<< for streams and, where <format> exists, std::formatter.
 // Opt-in: quat.hpp does not include this header, and no other quat header includes <ostream>.
@@ -35,7 +36,7 @@
 //   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
 //   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
 //   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
-//   alignment_with_sensitivity{quaternion{...}, 0.25, true, rotation_matrix{...}}
+//   alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}
 //   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
@@ -56,9 +57,9 @@
 #ifndef QUAT_IO_HPP_INCLUDED
 #define QUAT_IO_HPP_INCLUDED
 
-#include <cstddef>
 #include <ostream>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 #if __has_include(<version>)
@@ -69,9 +70,20 @@
 #endif
 
 #include "quat.hpp"
+// ---- begin quat/detail/print_layout.hpp ----
+// The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
+// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
+// for the fixed text and p.value(component) for each scalar; format_printer, value_formatter and
+// name_formatter adapt the layout to std::format and fmt, whose formatters derive from them. No
+// <ostream> and no <format> here: those are the printers' own.
+#ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
+#define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
+
+#include <cstddef>
+#include <string_view>
+
 
 namespace quat {
-
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
 // `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
@@ -117,9 +129,6 @@ template <class Enum, std::size_t N>
 [[nodiscard]] constexpr std::string_view spelling(frame f) noexcept {
     return name_in(frame_names, f, "frame?");
 }
-
-// The layout of each type, written once for streams, std::format and fmt: a printer p offers
-// p.text(ascii) for the fixed text and p.value(component) for each scalar.
 
 // "{a, b, ...}"
 template <class Printer, class T, class... Rest>
@@ -200,10 +209,8 @@ void write_layout(Printer& p, const alignment<T>& a) {
 template <class Printer, class T>
 void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
     p.text("alignment_with_sensitivity{");
-    write_layout(p, a.rotation);
+    write_layout(p, static_cast<const alignment<T>&>(a));
     p.text(", ");
-    p.value(a.rssd);
-    p.text(a.unique ? ", true, " : ", false, ");
     write_layout(p, a.sensitivity);
     p.text("}");
 }
@@ -247,34 +254,6 @@ void write_layout(Printer& p, const screw<T>& s) {
     p.text(", ");
     p.value(s.displacement);
     p.text("}");
-}
-
-// Writes to a stream that carries the flags, precision and locale of the user's stream.
-template <class CharT, class Traits>
-struct stream_printer {
-    std::basic_ostream<CharT, Traits>& out;
-
-    void text(std::string_view ascii) {
-        for (char c : ascii) out.put(out.widen(c));
-    }
-    template <class T>
-    void value(const T& component) {
-        out << component;
-    }
-};
-
-// std::complex's recipe: format into a local stream with os's flags, precision and locale (its
-// width is 0), then insert the whole text, to which os's width, fill and adjustment apply.
-template <class CharT, class Traits, class Value>
-std::basic_ostream<CharT, Traits>& print_to_stream(std::basic_ostream<CharT, Traits>& os,
-                                                   const Value& value) {
-    std::basic_ostringstream<CharT, Traits> text;
-    text.flags(os.flags());
-    text.imbue(os.getloc());
-    text.precision(os.precision());
-    stream_printer<CharT, Traits> printer{text};
-    write_layout(printer, value);
-    return os << text.str();
 }
 
 // Writes to a std::format or fmt context, each component through Formatter, which parsed the spec.
@@ -333,6 +312,69 @@ struct name_formatter {
         return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
     }
 };
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
+// ---- end quat/detail/print_layout.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// Writes to a stream that carries the flags, precision and locale of the user's stream.
+template <class CharT, class Traits>
+struct stream_printer {
+    std::basic_ostream<CharT, Traits>& out;
+
+    void text(std::string_view ascii) {
+        for (char c : ascii) out.put(out.widen(c));
+    }
+    template <class T>
+    void value(const T& component) {
+        out << component;
+    }
+};
+
+// std::complex's recipe: format into a local stream with os's flags, precision and locale (its
+// width is 0), then insert the whole text, to which os's width, fill and adjustment apply.
+template <class CharT, class Traits, class Value>
+std::basic_ostream<CharT, Traits>& print_to_stream(std::basic_ostream<CharT, Traits>& os,
+                                                   const Value& value) {
+    std::basic_ostringstream<CharT, Traits> text;
+    text.flags(os.flags());
+    text.imbue(os.getloc());
+    text.precision(os.precision());
+    stream_printer<CharT, Traits> printer{text};
+    write_layout(printer, value);
+    return os << text.str();
+}
 
 }  // namespace detail
 
@@ -402,7 +444,7 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
-/// Prints alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}, the
+/// Prints alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}, the
 /// sensitivity matrix by rows; stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -487,7 +529,7 @@ template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
     : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}; the
+/// Formats alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>

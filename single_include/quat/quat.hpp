@@ -55,9 +55,13 @@
 #ifndef QUAT_ALIGN_HPP_INCLUDED
 #define QUAT_ALIGN_HPP_INCLUDED
 
-#include <limits>
 #include <optional>
-#include <type_traits>
+
+// ---- begin quat/detail/shortest_arc.hpp ----
+// The work behind align.hpp's rotation_between and look_rotation: the shortest-arc formulas for
+// lengths in range, the float path computed in double, and the camera frame before its fallback.
+#ifndef QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
+#define QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
 
 // ---- begin quat/conversions.hpp ----
 // Conversions among quaternions, rotation matrices, axis-angle pairs, rotation vectors and modified
@@ -79,9 +83,33 @@
 #ifndef QUAT_VEC3_HPP_INCLUDED
 #define QUAT_VEC3_HPP_INCLUDED
 
+#include <cstddef>
 #include <limits>
 #include <optional>
 
+// ---- begin quat/config.hpp ----
+// quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
+#ifndef QUAT_CONFIG_HPP_INCLUDED
+#define QUAT_CONFIG_HPP_INCLUDED
+
+#define QUAT_VERSION_MAJOR 1
+#define QUAT_VERSION_MINOR 0
+#define QUAT_VERSION_PATCH 0
+
+/// Precondition check used throughout quat: QUAT_ASSERT(condition, message), the message a string
+/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG pay
+/// nothing. Define it before including quat to log, trap or abort your way. The handler must not
+/// return (past a failed index check the function would read out of bounds) and must not throw:
+/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate.
+/// Debug builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass
+/// and propagate), index ranges, output sizes and batch aliasing.
+#ifndef QUAT_ASSERT
+#include <cassert>
+#define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
+#endif
+
+#endif  // QUAT_CONFIG_HPP_INCLUDED
+// ---- end quat/config.hpp ----
 // ---- begin quat/detail/math.hpp ----
 // Scalar functions that work at compile time and at run time, and for user-defined scalars.
 //
@@ -586,6 +614,18 @@ struct vec3 {
     template <class U>
     [[gnu::always_inline]] constexpr explicit vec3(const vec3<U>& v) noexcept
         : x(static_cast<T>(v.x)), y(static_cast<T>(v.y)), z(static_cast<T>(v.z)) {}
+
+    /// Component i in {0, 1, 2}: x, y, z (checked in debug builds).
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator[](std::size_t i) noexcept {
+        QUAT_ASSERT(i < 3, "vec3 index out of range");
+        return i == 0 ? x : (i == 1 ? y : z);
+    }
+    /// Component i in {0, 1, 2}, read-only.
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator[](
+        std::size_t i) const noexcept {
+        QUAT_ASSERT(i < 3, "vec3 index out of range");
+        return i == 0 ? x : (i == 1 ? y : z);
+    }
 };
 
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -699,14 +739,47 @@ template <class T>
     return max(max(abs(v.x), abs(v.y)), abs(v.z));
 }
 
+/// True when every component of v is finite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite(const vec3<T>& v) noexcept {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);
+}
+
 /// True when every component of v is finite and one is non-zero: a vector with a direction.
 template <class T>
 [[nodiscard]] constexpr bool has_direction(const vec3<T>& v) noexcept {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z) &&
-           !(v.x == T(0) && v.y == T(0) && v.z == T(0));
+    return is_finite(v) && !(v.x == T(0) && v.y == T(0) && v.z == T(0));
 }
 
 }  // namespace detail
+
+namespace detail {
+
+/// a + t (b - a) with std::lerp's guarantees (C++20, P0811): exactly a at t = 0 and b at t = 1,
+/// monotonic in t, lerp(a, a, t) == a for finite t. Where a and b differ in sign (or one is zero)
+/// the weighted sum t b + (1 - t) a has them all; otherwise a + t (b - a), exactly b at t = 1 and
+/// kept from passing b just before it. The same value as std::lerp wherever that is not NaN; where
+/// it is (a NaN or infinite a or t), NaN, not std::lerp's b.
+template <class T>
+[[nodiscard]] constexpr T lerp(T a, T b, T t) noexcept {
+    if ((a <= T(0) && b >= T(0)) || (a >= T(0) && b <= T(0))) return t * b + (T(1) - t) * a;
+    if (t == T(1)) return b;
+    const T x = a + t * (b - a);
+    // Moving towards b and beyond: never short of b. Otherwise never past it. A NaN x is kept.
+    if ((t > T(1)) == (b > a)) return !(x <= b) ? x : b;
+    return !(x >= b) ? x : b;
+}
+
+}  // namespace detail
+
+/// The point a + t (b - a), component by component as std::lerp computes it: exactly a at t = 0
+/// and b at t = 1, monotonic in t, and a for a == b; t outside [0, 1] extrapolates. NaN in gives
+/// NaN out (where std::lerp may return b). Not a rotation interpolation (slerp and nlerp are).
+template <class T>
+[[nodiscard]] constexpr vec3<T> lerp(const vec3<T>& a, const vec3<T>& b,
+                                     detail::type_identity_t<T> t) noexcept {
+    return {detail::lerp(a.x, b.x, t), detail::lerp(a.y, b.y, t), detail::lerp(a.z, b.z, t)};
+}
 
 /// Euclidean length |v|, without overflow or underflow for huge or tiny components.
 template <class T>
@@ -778,29 +851,6 @@ struct axis_angle {
 
 #endif  // QUAT_AXIS_ANGLE_HPP_INCLUDED
 // ---- end quat/axis_angle.hpp ----
-// ---- begin quat/config.hpp ----
-// quat — 3D rotations for C++17/20. Version numbers and the one overridable assertion.
-#ifndef QUAT_CONFIG_HPP_INCLUDED
-#define QUAT_CONFIG_HPP_INCLUDED
-
-#define QUAT_VERSION_MAJOR 1
-#define QUAT_VERSION_MINOR 0
-#define QUAT_VERSION_PATCH 0
-
-/// Precondition check used throughout quat: QUAT_ASSERT(condition, message), the message a string
-/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG pay
-/// nothing. Define it before including quat to log, trap or abort your way. The handler must not
-/// return (past a failed index check the function would read out of bounds) and must not throw:
-/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate.
-/// Debug builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass
-/// and propagate), index ranges, output sizes and batch aliasing.
-#ifndef QUAT_ASSERT
-#include <cassert>
-#define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
-#endif
-
-#endif  // QUAT_CONFIG_HPP_INCLUDED
-// ---- end quat/config.hpp ----
 // ---- begin quat/quaternion.hpp ----
 // Quaternions w + xi + yj + zk (scalar first, Hamilton's ij = k) and their algebra.
 #ifndef QUAT_QUATERNION_HPP_INCLUDED
@@ -949,6 +999,12 @@ template <class T>
     return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
             m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
             m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+
+/// M v as the math writes it (GLM, Eigen, Sophus): the same as rotate(m, v).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const rotation_matrix<T>& m, const vec3<T>& v) noexcept {
+    return rotate(m, v);
 }
 
 /// Transpose; for a rotation, its inverse.
@@ -1195,6 +1251,12 @@ template <class T>
     return max(max(abs(q.w), abs(q.x)), max(abs(q.y), abs(q.z)));
 }
 
+/// True when every component of q is finite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite(const quaternion<T>& q) noexcept {
+    return is_finite(q.w) && is_finite(q.x) && is_finite(q.y) && is_finite(q.z);
+}
+
 /// NaN in every component.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> nan_quaternion() noexcept {
@@ -1243,9 +1305,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_normalize(
     const quaternion<T>& q) noexcept {
-    if (!detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
-        !detail::is_finite(q.z))
-        return std::nullopt;
+    if (!detail::is_finite(q)) return std::nullopt;
     if (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)) return std::nullopt;
     return normalize(q);
 }
@@ -1312,6 +1372,12 @@ template <class T>
     return detail::rotate_unchecked(q, v);
 }
 
+/// q * v, as GLM, Eigen and Unity write it: the same as rotate(q, v), debug check included.
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const quaternion<T>& q, const vec3<T>& v) noexcept {
+    return rotate(q, v);
+}
+
 /// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
 /// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
 /// NaN when a or b has a NaN or infinite component.
@@ -1342,10 +1408,16 @@ template <class T>
 
 namespace detail {
 
+/// The scalar type of rotation_x<T>(angle) and its siblings: T when the caller names it (void when
+/// not), else that of the angle: double for an integer angle, the angle's type otherwise.
+template <class T, class A>
+using axis_rotation_scalar_t = std::conditional_t<std::is_void_v<T>, real_t<A>, T>;
+
 // The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
-template <int Axis, class A>
-[[nodiscard]] constexpr quaternion<real_t<A>> axis_rotation(A angle) noexcept {
-    using T = real_t<A>;
+// The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
+// rotation_x(numbers::pi_v<float>), without a narrowing warning at the call.
+template <int Axis, class T, class A>
+[[nodiscard]] constexpr quaternion<T> axis_rotation(A angle) noexcept {
     const T half = static_cast<T>(angle) * T(0.5), s = detail::sin(half);
     return {detail::cos(half), Axis == 0 ? s : T(0), Axis == 1 ? s : T(0), Axis == 2 ? s : T(0)};
 }
@@ -1353,22 +1425,28 @@ template <int Axis, class A>
 }  // namespace detail
 
 /// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
-/// An integer angle gives a quatd.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_x(A angle) noexcept {
-    return detail::axis_rotation<0>(angle);
+/// The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless named:
+/// rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_x(
+    A angle) noexcept {
+    return detail::axis_rotation<0, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
 /// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_y(A angle) noexcept {
-    return detail::axis_rotation<1>(angle);
+/// Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_y(
+    A angle) noexcept {
+    return detail::axis_rotation<1, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
 /// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
-template <class A>
-[[nodiscard]] constexpr quaternion<detail::real_t<A>> rotation_z(A angle) noexcept {
-    return detail::axis_rotation<2>(angle);
+/// Precision as rotation_x.
+template <class T = void, class A>
+[[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_z(
+    A angle) noexcept {
+    return detail::axis_rotation<2, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 }  // inline namespace isa_...
 
@@ -1489,6 +1567,26 @@ template <class T>
     return {u / s, T(2) * detail::atan2(s, p.w)};
 }
 
+/// The angle in [0, pi] of the rotation q: to_axis_angle(q).angle, q and -q alike, 0 for the
+/// identity, any non-zero scale of q giving the same; NaN for NaN or infinite components, 0 for the
+/// zero quaternion (whose axis is NaN). Eigen's AngleAxis(q).angle() agrees; glm::angle, 2 acos(w)
+/// in [0, 2 pi], returns 2 pi minus it for -cos(1/2) <= w < 0 (and this angle for w below that,
+/// where it switches to 2 asin(|v|)).
+template <class T>
+[[nodiscard]] constexpr T angle(const quaternion<T>& q) noexcept {
+    return to_axis_angle(q).angle;
+}
+
+/// The unit axis of the rotation q: to_axis_angle(q).axis, the axis about which q turns by
+/// angle(q) in [0, pi] counter-clockwise, so q and -q agree; (1, 0, 0) for the identity (as Eigen's
+/// AngleAxis); any non-zero scale of q gives the same; NaN for the zero quaternion or NaN or
+/// infinite components. glm::axis keeps q's sign (the opposite axis for w < 0) and gives
+/// (0, 0, 1) for the identity.
+template <class T>
+[[nodiscard]] constexpr vec3<T> axis(const quaternion<T>& q) noexcept {
+    return to_axis_angle(q).axis;
+}
+
 /// Axis and angle in [0, pi] of the rotation matrix m, exact at 180° (through the quaternion).
 template <class T>
 [[nodiscard]] constexpr axis_angle<T> to_axis_angle(const rotation_matrix<T>& m) noexcept {
@@ -1586,6 +1684,16 @@ template <class T>
 
 #endif  // QUAT_CONVERSIONS_HPP_INCLUDED
 // ---- end quat/conversions.hpp ----
+// ---- begin quat/detail/power_of_two.hpp ----
+// Exact scaling by powers of two, which moves a vector's length into the range where products
+// of lengths neither overflow nor underflow without changing its direction, and the compensated
+// cross product the near-parallel cases need.
+#ifndef QUAT_DETAIL_POWER_OF_TWO_HPP_INCLUDED
+#define QUAT_DETAIL_POWER_OF_TWO_HPP_INCLUDED
+
+#include <limits>
+#include <type_traits>
+
 
 namespace quat {
 
@@ -1669,6 +1777,42 @@ template <class T>
     return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
             difference_of_products(a.x, b.y, a.y, b.x)};
 }
+
+}  // namespace detail
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_POWER_OF_TWO_HPP_INCLUDED
+// ---- end quat/detail/power_of_two.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
 
 /// The half turn rotation_between picks for exactly opposite directions: about
 /// normalize(from x e), e the coordinate axis of from's smallest |component| (the first of x, y,
@@ -1790,6 +1934,39 @@ template <class T>
 }
 
 }  // namespace detail
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
+// ---- end quat/detail/shortest_arc.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
 
 /// The shortest-arc unit quaternion turning the direction of `from` into the direction of `to`:
 /// the rotation by the angle between them about from x to. Any non-zero finite lengths (scaled by
@@ -1860,6 +2037,18 @@ template <class T>
 
 #endif  // QUAT_ALIGN_HPP_INCLUDED
 // ---- end quat/align.hpp ----
+// ---- begin quat/align_points.hpp ----
+// Point-set registration: the rigid motion (align_points) or the similarity (align_points_with_scale)
+// that best maps one set of corresponding points onto another in the least-squares sense, after
+// Kabsch (1976) and Umeyama ("Least-squares estimation of transformation parameters between two
+// point patterns", IEEE PAMI 13(4), 1991), with the rotation from align_vectors' q-method instead of
+// an SVD: the centred points are a Wahba problem, so there is never a reflection.
+#ifndef QUAT_ALIGN_POINTS_HPP_INCLUDED
+#define QUAT_ALIGN_POINTS_HPP_INCLUDED
+
+#include <cstddef>
+#include <optional>
+
 // ---- begin quat/align_vectors.hpp ----
 // Wahba's problem: the rotation that best aligns one set of vectors with another, as scipy's
 // Rotation.align_vectors finds it, with the residual and scipy's sensitivity matrix.
@@ -1867,8 +2056,7 @@ template <class T>
 #define QUAT_ALIGN_VECTORS_HPP_INCLUDED
 
 #include <cstddef>
-#include <limits>
-#include <utility>
+#include <optional>
 
 // ---- begin quat/detail/containers.hpp ----
 // The arrays quat's functions over many elements accept: any contiguous container or view with
@@ -1877,12 +2065,10 @@ template <class T>
 #define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 namespace quat {
-
-template <class T>
-struct quaternion;
 
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
@@ -1929,12 +2115,21 @@ template <class T, std::size_t N>
     return N;
 }
 
-// The T of a container of quaternion<T>: declared only, for the type of its data.
-template <class T>
-T quaternion_scalar(const quaternion<T>*) noexcept;
-template <class Rotations>
-using quaternion_scalar_t =
-    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
+// The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
+// way quat's container forms name the scalar type of their elements. Not a type for a container of
+// anything else, so a container form whose default template argument uses it drops out of overload
+// resolution. element_scalar is declared only, for the type of its result.
+template <template <class> class Value, class T>
+T element_scalar(const Value<T>*) noexcept;
+template <template <class> class Value, class Container>
+using element_scalar_t =
+    decltype(detail::element_scalar<Value>(detail::data_of(std::declval<const Container&>())));
+
+// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
+template <class In, class Out, class Input, class Output>
+using if_arrays_of = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
 
 }  // namespace detail
 }  // inline namespace isa_...
@@ -1942,6 +2137,24 @@ using quaternion_scalar_t =
 
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 // ---- end quat/detail/containers.hpp ----
+// ---- begin quat/detail/wahba.hpp ----
+// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights,
+// with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
+// weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
+// arrays; align_points.hpp on the points less their centroids.
+#ifndef QUAT_DETAIL_WAHBA_HPP_INCLUDED
+#define QUAT_DETAIL_WAHBA_HPP_INCLUDED
+
+#include <cstddef>
+
+// ---- begin quat/nearest_rotation.hpp ----
+// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
+#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
+#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
 // ---- begin quat/detail/symmetric_eigen.hpp ----
 // Eigenvalues and eigenvectors of a symmetric 4x4 matrix: the one solver behind nearest_rotation,
 // align_vectors and mean, whose answers are eigenvectors of such a matrix read as quaternions; and
@@ -2121,14 +2334,6 @@ template <class T>
 
 #endif  // QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 // ---- end quat/detail/symmetric_eigen.hpp ----
-// ---- begin quat/nearest_rotation.hpp ----
-// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
-#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
-#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
-
-#include <limits>
-#include <optional>
-
 
 namespace quat {
 
@@ -2224,29 +2429,8 @@ template <class T>
 
 namespace quat {
 
-/// The rotation that best aligns two sets of vectors, and how well it does (align_vectors).
 template <class T>
-struct alignment {
-    /// Unit quaternion, w >= 0, of the rotation R minimizing sum w_i |targets_i - R sources_i|^2.
-    quaternion<T> rotation;
-    /// sqrt(sum w_i |targets_i - R sources_i|^2), summed from the residuals.
-    T rssd;
-    /// False when other rotations fit as well: one pair, collinear vectors, and a few symmetric
-    /// sets (see align_vectors for the thresholds).
-    bool unique;
-};
-
-/// An alignment and scipy's sensitivity matrix (align_vectors_with_sensitivity).
-template <class T>
-struct alignment_with_sensitivity {
-    quaternion<T> rotation;  ///< As alignment::rotation.
-    T rssd;                  ///< As alignment::rssd.
-    bool unique;             ///< As alignment::unique.
-    /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
-    /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
-    /// for return_sensitivity=True. Not a rotation: rotation_matrix only stores it.
-    rotation_matrix<T> sensitivity;
-};
+struct alignment;  // align_vectors.hpp; complete wherever a solution is made
 
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
@@ -2274,13 +2458,6 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-// The T of a container of vec3<T>: declared only, for the type of its data.
-template <class T>
-T vec3_scalar(const vec3<T>*) noexcept;
-template <class Vectors>
-using vec3_scalar_t =
-    decltype(detail::vec3_scalar(detail::data_of(std::declval<const Vectors&>())));
-
 template <class T>
 struct wahba_solution {
     alignment<T> result;
@@ -2288,6 +2465,7 @@ struct wahba_solution {
     T total_weight;                // sum w_i of the scaled weights
     T target_scale, source_scale;  // B of the data: profile times these and the weights' scale
     bool infinite;                 // a weight was infinite (no sensitivity matrix)
+    bool negative;                 // a weight was negative (the callers' debug check)
 };
 
 // 1 where x is zero or lies within [min()^(1/4), max()^(1/4)], where every product of three such
@@ -2304,8 +2482,7 @@ template <class T>
 // max |component|, or infinity for a NaN or infinite component.
 template <class T>
 [[nodiscard]] constexpr T largest_component(const vec3<T>& v) noexcept {
-    if (!detail::is_finite(v.x) || !detail::is_finite(v.y) || !detail::is_finite(v.z))
-        return detail::infinity<T>();
+    if (!detail::is_finite(v)) return detail::infinity<T>();
     return detail::largest_magnitude(v);
 }
 
@@ -2413,10 +2590,10 @@ template <class T, class X, class Y, class Weight>
 }
 
 template <class T>
-[[nodiscard]] constexpr wahba_solution<T> nan_wahba() noexcept {
+[[nodiscard]] constexpr wahba_solution<T> nan_wahba(bool negative) noexcept {
     const T nan = detail::quiet_nan<T>();
     const rotation_matrix<T> profile{{{nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}}};
-    return {{{nan, nan, nan, nan}, nan, false}, profile, nan, T(1), T(1), false};
+    return {{{nan, nan, nan, nan}, nan, false}, profile, nan, T(1), T(1), false, negative};
 }
 
 // One pair with infinite weight (scipy >= 1.11's "primary" pair): it is aligned exactly in
@@ -2589,12 +2766,9 @@ template <class T, class Target, class Source, class Weight>
 // The data are first summed as they are; only where that overflows, underflows (sizes outside
 // [min()^(1/4), max()^(1/4)]), meets an infinite weight or NaN are they examined closely and
 // divided by powers of two (scale_of), so sizes from subnormal to max() give the same rotation.
-template <class T, class Weight>
-[[nodiscard]] constexpr wahba_solution<T> solve_wahba(const vec3<T>* targets,
-                                                      const vec3<T>* sources, std::size_t count,
-                                                      Weight weight) noexcept {
-    const auto target = [targets](std::size_t i) { return targets[i]; };
-    const auto source = [sources](std::size_t i) { return sources[i]; };
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr wahba_solution<T> solve_wahba(Target target, Source source,
+                                                      std::size_t count, Weight weight) noexcept {
     T b[3][3] = {};
     data_sizes<T> sizes{};
     T total = profile_of(b, sizes, count, target, source, weight);
@@ -2619,24 +2793,23 @@ template <class T, class Weight>
                 finite = finite && detail::is_finite(w);
                 weight_size = detail::max(weight_size, detail::abs(w));
             }
-            target_size = detail::max(target_size, largest_component(targets[i]));
-            source_size = detail::max(source_size, largest_component(sources[i]));
+            target_size = detail::max(target_size, largest_component(target(i)));
+            source_size = detail::max(source_size, largest_component(source(i)));
         }
     }
-    QUAT_ASSERT(!(lowest < T(0)), "quat::align_vectors: a weight is negative");
     if (!finite || infinite > 1 || !detail::is_finite(target_size) ||
         !detail::is_finite(source_size))
-        return nan_wahba<T>();
+        return nan_wahba<T>(lowest < T(0));
     if (plain) {
         alignment<T> result = rotation_of_profile(b, count, target, source, weight);
         result.rssd = rssd_of(result.rotation, count, target, source, weight);
-        return {result, rotation_matrix<T>{b}, total, T(1), T(1), false};
+        return {result, rotation_matrix<T>{b}, total, T(1), T(1), false, lowest < T(0)};
     }
     // Separate scales for the rotation (only B's direction counts), one for both in the residuals.
     const T pt = scale_of(target_size), ps = scale_of(source_size), pw = scale_of(weight_size);
     const T p = scale_of(detail::max(target_size, source_size));
-    const auto scaled_target = [&](std::size_t i) { return targets[i] / pt; };
-    const auto scaled_source = [&](std::size_t i) { return sources[i] / ps; };
+    const auto scaled_target = [&](std::size_t i) { return target(i) / pt; };
+    const auto scaled_source = [&](std::size_t i) { return source(i) / ps; };
     const auto scaled_weight = [&](std::size_t i) {
         const T w = weight(i);  // an infinite weight's pair is aligned apart, and not in rssd
         return w == detail::infinity<T>() ? T(0) : w / pw;
@@ -2649,10 +2822,10 @@ template <class T, class Weight>
     // An infinite weight's pair is left out of rssd, as scipy does (its residual is the
     // difference of the lengths).
     result.rssd = rssd_of(
-                      result.rotation, count, [&](std::size_t i) { return targets[i] / p; },
-                      [&](std::size_t i) { return sources[i] / p; }, scaled_weight) *
+                      result.rotation, count, [&](std::size_t i) { return target(i) / p; },
+                      [&](std::size_t i) { return source(i) / p; }, scaled_weight) *
                   detail::sqrt(pw) * p;
-    return {result, rotation_matrix<T>{b}, total, pt, ps, infinite != 0};
+    return {result, rotation_matrix<T>{b}, total, pt, ps, infinite != 0, lowest < T(0)};
 }
 
 // scipy's sensitivity mean(w) / zeta (kappa I + B B^T), kappa = s0 s1 + s1 s2 + s2 s0 and
@@ -2695,7 +2868,71 @@ template <class T>
     return sensitivity;
 }
 
+// solve_wahba over two arrays.
+template <class T, class Weight>
+[[nodiscard]] constexpr wahba_solution<T> solve_wahba(const vec3<T>* targets,
+                                                      const vec3<T>* sources, std::size_t count,
+                                                      Weight weight) noexcept {
+    return solve_wahba<T>([targets](std::size_t i) { return targets[i]; },
+                          [sources](std::size_t i) { return sources[i]; }, count, weight);
+}
+
 }  // namespace detail
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_WAHBA_HPP_INCLUDED
+// ---- end quat/detail/wahba.hpp ----
+
+namespace quat {
+
+/// The rotation that best aligns two sets of vectors, and how well it does (align_vectors).
+template <class T>
+struct alignment {
+    /// Unit quaternion, w >= 0, of the rotation R minimizing sum w_i |targets_i - R sources_i|^2.
+    quaternion<T> rotation;
+    /// sqrt(sum w_i |targets_i - R sources_i|^2), summed from the residuals.
+    T rssd;
+    /// False when other rotations fit as well: one pair, collinear vectors, and a few symmetric
+    /// sets (see align_vectors for the thresholds).
+    bool unique;
+};
+
+/// An alignment and scipy's sensitivity matrix (align_vectors_with_sensitivity): an alignment
+/// with one more field, so it passes wherever an alignment<T> is taken.
+template <class T>
+struct alignment_with_sensitivity : alignment<T> {
+    /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
+    /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
+    /// for return_sensitivity=True. Not a rotation: rotation_matrix only stores it.
+    rotation_matrix<T> sensitivity;
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
 
 /// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
 /// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
@@ -2709,7 +2946,7 @@ template <class T>
 /// symmetric sets). Then the optimal rotation nearest the identity: rotation_between(sources[0],
 /// targets[0]) for one pair, the identity for no pairs (rssd 0). A NaN or infinite component gives
 /// a NaN rotation and rssd, unique = false.
-template <class Targets, class Sources, class T = detail::vec3_scalar_t<Targets>>
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
                                                    const Sources& sources) noexcept {
     QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
@@ -2729,17 +2966,64 @@ template <class Targets, class Sources, class T = detail::vec3_scalar_t<Targets>
 /// weights (scipy raises), a NaN weight, or an infinite weight on a zero vector give a NaN result.
 /// Precondition: weights >= 0 (QUAT_ASSERT; unchecked, a negative weight counts against its pair,
 /// and rssd may be NaN).
-template <class Targets, class Sources, class Weights, class T = detail::vec3_scalar_t<Targets>>
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
                                                    const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
                     detail::size_of(weights) == detail::size_of(sources),
                 "quat::align_vectors: targets, sources and weights differ in size");
     const auto* w = detail::data_of(weights);
-    return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
-                                  detail::size_of(sources),
-                                  [w](std::size_t i) { return static_cast<T>(w[i]); })
-        .result;
+    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
+        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
+        [w](std::size_t i) { return static_cast<T>(w[i]); });
+    QUAT_ASSERT(!solution.negative, "quat::align_vectors: a weight is negative");
+    return solution.result;
+}
+
+/// align_vectors(targets, sources), or std::nullopt for input it does not align: no pairs,
+/// containers of different sizes, a NaN or infinite component, or an rssd beyond max() (vectors
+/// near max() that stay apart). A set that fits other rotations as well is not bad input: it gives an alignment with unique = false, as align_vectors does.
+/// Never asserts.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
+    const Targets& targets, const Sources& sources) noexcept {
+    const std::size_t count = detail::size_of(sources);
+    if (count == 0 || detail::size_of(targets) != count) return std::nullopt;
+    const alignment<T> result =
+        detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources), count,
+                               [](std::size_t) { return T(1); })
+            .result;
+    if (!detail::is_finite(result.rotation.w) || !detail::is_finite(result.rssd))
+        return std::nullopt;
+    return result;
+}
+
+/// align_vectors(targets, sources, weights), or std::nullopt as try_align_vectors(targets, sources)
+/// and also when the weights differ in size, a weight is negative or NaN, no weight is positive, or
+/// more than one is infinite. Never asserts.
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    const std::size_t count = detail::size_of(sources);
+    if (count == 0 || detail::size_of(targets) != count || detail::size_of(weights) != count)
+        return std::nullopt;
+    const auto* w = detail::data_of(weights);
+    bool positive = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T wi = static_cast<T>(w[i]);
+        if (!(wi >= T(0))) return std::nullopt;  // negative or NaN: the debug check's case
+        positive = positive || wi > T(0);
+    }
+    if (!positive) return std::nullopt;
+    const alignment<T> result =
+        detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources), count,
+                               [w](std::size_t i) { return static_cast<T>(w[i]); })
+            .result;
+    if (!detail::is_finite(result.rotation.w) || !detail::is_finite(result.rssd))
+        return std::nullopt;
+    return result;
 }
 
 /// align_vectors(targets, sources, weights) and scipy's sensitivity matrix: mean(weights) / zeta
@@ -2748,7 +3032,8 @@ template <class Targets, class Sources, class Weights, class T = detail::vec3_sc
 /// mean of the targets' error variances (weights inversely proportional to them), it is the
 /// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
 /// elements when a weight is infinite (scipy raises).
-template <class Targets, class Sources, class Weights, class T = detail::vec3_scalar_t<Targets>>
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
     const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
     QUAT_ASSERT(
@@ -2759,8 +3044,8 @@ template <class Targets, class Sources, class Weights, class T = detail::vec3_sc
     const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
         detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
         [w](std::size_t i) { return static_cast<T>(w[i]); });
-    return {solution.result.rotation, solution.result.rssd, solution.result.unique,
-            detail::wahba_sensitivity(solution, detail::size_of(sources))};
+    QUAT_ASSERT(!solution.negative, "quat::align_vectors_with_sensitivity: a weight is negative");
+    return {solution.result, detail::wahba_sensitivity(solution, detail::size_of(sources))};
 }
 }  // inline namespace isa_...
 
@@ -2768,6 +3053,550 @@ template <class Targets, class Sources, class Weights, class T = detail::vec3_sc
 
 #endif  // QUAT_ALIGN_VECTORS_HPP_INCLUDED
 // ---- end quat/align_vectors.hpp ----
+// ---- begin quat/dual_quaternion.hpp ----
+// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
+#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
+#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
+
+#include <optional>
+
+
+namespace quat {
+
+/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
+/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
+/// dq and -dq are the same motion. Members are public, as for quaternion.
+template <class T>
+struct dual_quaternion {
+    quaternion<T> real;  ///< The rotation.
+    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
+
+    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
+    dual_quaternion() = default;
+    /// The dual quaternion real_part + eps dual_part.
+    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
+                                                     const quaternion<T>& dual_part) noexcept
+        : real(real_part), dual(dual_part) {}
+    /// Conversion from another precision, component by component.
+    template <class U>
+    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
+
+    /// The motion that moves nothing: real 1, dual 0.
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
+        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
+    }
+    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
+        const vec3<T>& t) noexcept {
+        return to_dual_quaternion(quaternion<T>::identity(), t);
+    }
+};
+
+using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
+using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
+/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
+                                                              const vec3<T>& translation) noexcept {
+    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
+                             translation.z * T(0.5)};
+    return {rotation, half * rotation};
+}
+
+/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
+/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const quaternion<T>& rotation) noexcept {
+    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
+}
+
+/// The rotation of the unit dual quaternion dq (its real part).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
+    return dq.real;
+}
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
+    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    const quaternion<T>& r = dq.real;
+    const quaternion<T>& d = dq.dual;
+    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
+                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
+                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
+    return half + half;
+}
+
+/// Negation: the same rigid motion.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
+    return {-dq.real, -dq.dual};
+}
+
+/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
+/// 48 multiplications and 40 additions.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
+                                                     const dual_quaternion<T>& b) noexcept {
+    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
+}
+
+/// a = a * b: as rigid motions, b is applied first, then the old a.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
+                                         const dual_quaternion<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
+/// rigid motion unless s is +-1: normalize or blend weights use it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real * s, dq.dual * s};
+}
+/// Product with a scalar, all eight components; s converts to T.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
+                                                     const dual_quaternion<T>& dq) noexcept {
+    return dq * s;
+}
+/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real / s, dq.dual / s};
+}
+/// dq = dq * s.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq * s;
+}
+/// dq = dq / s.
+template <class T>
+constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq / s;
+}
+
+/// Exact component-wise equality; dq == -dq is false although both are one motion.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return a.real == b.real && a.dual == b.dual;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
+/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
+/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
+/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
+/// parts; a NaN or infinite dual component, NaN in the dual part.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = inverse(dq.real);
+    return {real, -(real * dq.dual * real)};
+}
+
+/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
+/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
+/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
+/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = normalize(dq.real);
+    const quaternion<T> dual = dq.dual / norm(dq.real);
+    return {real, dual - real * dot(real, dual)};
+}
+
+/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
+/// normalized dual part overflows.
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
+    const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T>& d = dq.dual;
+    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
+    const dual_quaternion<T> result = normalize(dq);
+    // A dual part huge beside a tiny real part can overflow once divided by |real|.
+    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
+    return result;
+}
+
+/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
+/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform: the real part is not a unit quaternion");
+    return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
+/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
+/// transform_vector for a direction).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    return transform(dq, p);
+}
+
+/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
+/// Precondition: |real| = 1 (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
+                                                 const vec3<T>& v) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform_vector: the real part is not a unit quaternion");
+    return detail::rotate_unchecked(dq.real, v);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
+// ---- end quat/dual_quaternion.hpp ----
+
+namespace quat {
+
+/// The rigid motion that best maps sources onto targets, and how well it does (align_points).
+template <class T>
+struct point_alignment {
+    /// Unit dual quaternion of x -> R x + t minimizing sum w_i |targets_i - (R sources_i + t)|^2;
+    /// to_homogeneous(motion) is its 4x4 matrix.
+    dual_quaternion<T> motion;
+    /// The weighted root-mean-square residual sqrt(sum w_i |targets_i - motion(sources_i)|^2 /
+    /// sum w_i), summed from the residuals.
+    T rms;
+    /// False when other motions fit as well: the points (of positive weight) lie on one line or
+    /// coincide, fewer than three distinct among them (see align_points for the threshold).
+    bool unique;
+};
+
+/// The similarity that best maps sources onto targets (align_points_with_scale): a point_alignment
+/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map.
+template <class T>
+struct similarity_alignment : point_alignment<T> {
+    /// The uniform scale, > 0.
+    T scale;
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// True when every weight is finite and >= 0: the weighted registrations' precondition.
+template <class T, class Weight>
+[[nodiscard]] constexpr bool valid_weights(const Weight* weights, std::size_t count) noexcept {
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = static_cast<T>(weights[i]);
+        if (!(w >= T(0)) || !detail::is_finite(w)) return false;
+    }
+    return true;
+}
+
+/// The weighted mean of point(i), i < count, with weights weight(i) / total (total their sum):
+/// every term is at most its point's size, so nothing overflows, and a second pass adds the mean of
+/// the remainders, which recovers the digits the first pass rounded away (points far from the
+/// origin with a small spread keep their spread).
+template <class T, class Point, class Weight>
+[[nodiscard]] constexpr vec3<T> weighted_centroid(std::size_t count, Point point, Weight weight,
+                                                  T total) noexcept {
+    vec3<T> mean{T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) mean += point(i) * (weight(i) / total);
+    vec3<T> correction{T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) correction += (point(i) - mean) * (weight(i) / total);
+    return mean + correction;
+}
+
+/// The registration of point sets: the centroids, the rotation of the centred points (Wahba's
+/// problem), then the scale (Umeyama's trace(R^T B) / sum w |s_i - cs|^2, or 1) and the residual.
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr similarity_alignment<T> solve_registration(Target target, Source source,
+                                                                   std::size_t count,
+                                                                   Weight raw_weight,
+                                                                   bool scaled) noexcept {
+    T largest(0);
+    bool finite = true;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = raw_weight(i);
+        const vec3<T> a = target(i), b = source(i);
+        finite = finite && w >= T(0) && detail::is_finite(w) && detail::is_finite(a) &&
+                 detail::is_finite(b);
+        largest = detail::max(largest, w);
+    }
+    const T nan = detail::quiet_nan<T>();
+    if (!finite) {
+        const quaternion<T> q{nan, nan, nan, nan};
+        return {{{q, q}, nan, false}, nan};
+    }
+    if (!(largest > T(0))) return {{dual_quaternion<T>::identity(), T(0), false}, T(1)};
+    // Weights divided by the power of two of the largest: their sum neither overflows nor
+    // underflows, and only their ratios count.
+    const T pw = binade_of(largest);
+    const auto weight = [&](std::size_t i) { return raw_weight(i) / pw; };
+    T total(0);
+    for (std::size_t i = 0; i < count; ++i) total += weight(i);
+    const vec3<T> ct = weighted_centroid(count, target, weight, total);
+    const vec3<T> cs = weighted_centroid(count, source, weight, total);
+    const auto centred_target = [&](std::size_t i) { return target(i) - ct; };
+    const auto centred_source = [&](std::size_t i) { return source(i) - cs; };
+    const alignment<T> fit = solve_wahba<T>(centred_target, centred_source, count, weight).result;
+
+    // The centred points divided by the powers of two of their largest components, so that
+    // neither products of sizes nor sums of squares overflow or underflow.
+    T target_size(0), source_size(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        target_size = detail::max(target_size, largest_magnitude(centred_target(i)));
+        source_size = detail::max(source_size, largest_magnitude(centred_source(i)));
+    }
+    const T pt = target_size > T(0) ? binade_of(target_size) : T(1);
+    const T ps = source_size > T(0) ? binade_of(source_size) : T(1);
+    const rotation_matrix<T> m = to_matrix(fit.rotation);
+    const auto turned_source = [&](std::size_t i) { return rotate(m, centred_source(i) / ps); };
+    T scale(1);
+    bool determined = true;
+    if (scaled) {
+        T along(0), spread(0);
+        for (std::size_t i = 0; i < count; ++i) {
+            const vec3<T> s = turned_source(i);
+            along += weight(i) * dot(centred_target(i) / pt, s);
+            spread += weight(i) * dot(s, s);
+        }
+        // along >= 0 at the optimal rotation; 0 (targets or sources all equal) or no spread
+        // leaves the scale undetermined.
+        determined = along > T(0) && spread > T(0);
+        scale = determined ? along / spread * (pt / ps) : T(1);
+    }
+    // The residuals in units of the larger side's power of two, so their squares stay in range.
+    const T p = binade_of(detail::max(pt, scale * ps));
+    const T factor = scale * (ps / p);
+    T squares(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const vec3<T> residual = centred_target(i) / p - turned_source(i) * factor;
+        squares += weight(i) * dot(residual, residual);
+    }
+    const vec3<T> translation = ct - rotate(m, cs) * scale;
+    return {{to_dual_quaternion(fit.rotation, translation), sqrt(squares / total) * p,
+             fit.unique && determined},
+            scale};
+}
+
+/// solve_registration over arrays of points (of any precision) and a container of weights.
+template <class T, class Targets, class Sources, class Weight>
+[[nodiscard]] constexpr similarity_alignment<T> register_arrays(const Targets& targets,
+                                                                const Sources& sources,
+                                                                Weight weight,
+                                                                bool scaled) noexcept {
+    const auto* t = detail::data_of(targets);
+    const auto* s = detail::data_of(sources);
+    return solve_registration<T>([t](std::size_t i) { return vec3<T>(t[i]); },
+                                 [s](std::size_t i) { return vec3<T>(s[i]); },
+                                 detail::size_of(sources), weight, scaled);
+}
+
+/// The checked registration: empty for no points, mismatched sizes, non-finite values, a negative,
+/// NaN or infinite weight, no positive weight, or a residual beyond max().
+template <class T, class Targets, class Sources, class Weights>
+[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_register(
+    const Targets& targets, const Sources& sources, const Weights* weights,
+    std::size_t weight_count, bool scaled) noexcept {
+    const std::size_t count = detail::size_of(sources);
+    if (count == 0 || detail::size_of(targets) != count || weight_count != count)
+        return std::nullopt;
+    bool positive = weights == nullptr;
+    if (weights != nullptr) {
+        if (!valid_weights<T>(weights, count)) return std::nullopt;
+        for (std::size_t i = 0; i < count; ++i) positive = positive || weights[i] > 0;
+    }
+    if (!positive) return std::nullopt;
+    const similarity_alignment<T> result =
+        weights == nullptr
+            ? register_arrays<T>(
+                  targets, sources, [](std::size_t) { return T(1); }, scaled)
+            : register_arrays<T>(
+                  targets, sources, [weights](std::size_t i) { return static_cast<T>(weights[i]); },
+                  scaled);
+    if (!detail::is_finite(result.motion.real.w) || !detail::is_finite(result.rms) ||
+        !detail::is_finite(largest_magnitude(result.motion.dual)) ||
+        !detail::is_finite(result.scale))
+        return std::nullopt;
+    return result;
+}
+
+}  // namespace detail
+
+/// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
+/// unit dual quaternion: never a reflection. targets and sources are equally long (QUAT_ASSERT)
+/// containers of vec3<T> with data() and size(), or C arrays, of corresponding points. The centroids
+/// are taken in two passes, so points far from the origin keep their spread. unique is false when
+/// the targets, or the sources, less their centroid, all lie within 64 epsilon radians of one line
+/// (collinear points, fewer than three distinct): then the rotation is the one align_vectors
+/// chooses for the centred points. No points: the identity, rms 0, not unique. A NaN or infinite
+/// component gives NaN in every component, rms NaN, unique false; try_align_points checks instead.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
+                                                        const Sources& sources) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+                "quat::align_points: targets and sources differ in size");
+    return detail::register_arrays<T>(
+        targets, sources, [](std::size_t) { return T(1); }, false);
+}
+
+/// align_points with weights (a container of scalars convertible to T, as long as the points):
+/// the motion minimizing sum weights[i] |targets[i] - (R sources[i] + t)|^2, with rms weighted
+/// alike. A zero weight drops its pair; only the weights' ratios count. Precondition: weights >= 0
+/// and finite (QUAT_ASSERT); unchecked, a negative, NaN or infinite weight gives the NaN result.
+/// No positive weight: the identity, rms 0, not unique.
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
+                                                        const Sources& sources,
+                                                        const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
+                    detail::size_of(weights) == detail::size_of(sources),
+                "quat::align_points: targets, sources and weights differ in size");
+    const auto* w = detail::data_of(weights);
+    QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
+                "quat::align_points: a weight is negative, NaN or infinite");
+    return detail::register_arrays<T>(
+        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, false);
+}
+
+/// The similarity x -> scale R x + t minimizing sum |targets[i] - (scale R sources[i] + t)|^2
+/// (Umeyama 1991): motion holds R and t, scale > 0 is trace(R^T B) / sum |sources[i] - cs|^2 with
+/// B the centred points' sum targets_c sources_c^T, rms the residual of the similarity. As
+/// align_points otherwise; unique is also false (and scale 1) where the targets or the sources all
+/// coincide, which leaves the scale undetermined.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
+    const Targets& targets, const Sources& sources) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+                "quat::align_points_with_scale: targets and sources differ in size");
+    return detail::register_arrays<T>(
+        targets, sources, [](std::size_t) { return T(1); }, true);
+}
+
+/// align_points_with_scale with weights, as align_points(targets, sources, weights).
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
+                    detail::size_of(weights) == detail::size_of(sources),
+                "quat::align_points_with_scale: targets, sources and weights differ in size");
+    const auto* w = detail::data_of(weights);
+    QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
+                "quat::align_points_with_scale: a weight is negative, NaN or infinite");
+    return detail::register_arrays<T>(
+        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, true);
+}
+
+/// align_points(targets, sources), or std::nullopt for input it does not register: no points,
+/// different sizes, a NaN or infinite component, or a residual beyond max(). Collinear points are
+/// not bad input: they give unique = false. Never asserts.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<point_alignment<T>> try_align_points(
+    const Targets& targets, const Sources& sources) noexcept {
+    const auto result = detail::try_register<T>(targets, sources, static_cast<const T*>(nullptr),
+                                                detail::size_of(sources), false);
+    if (!result) return std::nullopt;
+    return point_alignment<T>(*result);
+}
+
+/// align_points(targets, sources, weights), or std::nullopt as try_align_points(targets, sources)
+/// and also for weights of another size, a negative, NaN or infinite weight, or none positive.
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<point_alignment<T>> try_align_points(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    const auto result = detail::try_register<T>(targets, sources, detail::data_of(weights),
+                                                detail::size_of(weights), false);
+    if (!result) return std::nullopt;
+    return point_alignment<T>(*result);
+}
+
+/// align_points_with_scale(targets, sources), or std::nullopt as try_align_points.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_align_points_with_scale(
+    const Targets& targets, const Sources& sources) noexcept {
+    return detail::try_register<T>(targets, sources, static_cast<const T*>(nullptr),
+                                   detail::size_of(sources), true);
+}
+
+/// align_points_with_scale(targets, sources, weights), or std::nullopt as try_align_points with
+/// weights.
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_align_points_with_scale(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    return detail::try_register<T>(targets, sources, detail::data_of(weights),
+                                   detail::size_of(weights), true);
+}
+
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_ALIGN_POINTS_HPP_INCLUDED
+// ---- end quat/align_points.hpp ----
 // ---- begin quat/batch.hpp ----
 // Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
 // many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
@@ -2785,14 +3614,264 @@ template <class Targets, class Sources, class Weights, class T = detail::vec3_sc
 // One definition across instruction sets: the functions here are compiled differently under
 // different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
 // live in the inline namespace named after the instruction set (detail/math.hpp says what the key
-// covers). soa_points, a type, stays outside: it is the same everywhere.
+// covers). The struct-of-arrays views are in soa.hpp, which this header includes; the loops that
+// rotate and transform points (shared with rigid_batch.hpp) in detail/transform_points.hpp.
 #ifndef QUAT_BATCH_HPP_INCLUDED
 #define QUAT_BATCH_HPP_INCLUDED
 
 #include <cstddef>
+#include <type_traits>
+#include <utility>
+
+// ---- begin quat/detail/chained_product.hpp ----
+// The product of many factors in four interleaved chains: compose over an array of quaternions
+// (batch.hpp) and of dual quaternions (rigid_batch.hpp).
+#ifndef QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+#define QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+
+#include <cstddef>
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The number of chains: enough for a CPU to overlap the products (each waits on its predecessor).
+inline constexpr std::size_t product_chains = 4;
+
+// The four chains of chained_product for types whose four running products the compiler keeps in
+// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1].
+// A type that needs another layout (dual quaternions, rigid_batch.hpp) gives chained_product a
+// class with the same static member.
+template <class Value>
+struct chain_values {
+    static constexpr void run_products(const Value* f, std::size_t run,
+                                       Value (&chain)[product_chains]) noexcept {
+        Value acc[product_chains] = {Value::identity(), Value::identity(), Value::identity(),
+                                     Value::identity()};
+        for (std::size_t i = 0; i < run; ++i)
+            for (std::size_t j = 0; j < product_chains; ++j) acc[j] = acc[j] * f[j * run + i];
+        for (std::size_t j = 0; j < product_chains; ++j) chain[j] = acc[j];
+    }
+};
+
+// The product f[0] f[1] ... f[count - 1] (f[count - 1] applies first); identity when count == 0.
+// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
+// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
+// the same product as the left-to-right loop by associativity, rounded differently. Never inlined:
+// g++ fuses multiply-adds differently in different callers (-ffp-contract=fast), and one copy keeps
+// compose(factors) and compose(pointer, count) equal to the last bit.
+template <class Value, class Chains = chain_values<Value>>
+[[nodiscard, gnu::noinline]] constexpr Value chained_product(const Value* f,
+                                                             std::size_t count) noexcept {
+    constexpr std::size_t lanes = product_chains;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        Value product = Value::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    Value chain[lanes] = {};
+    Chains::run_products(f, run, chain);
+    // The factors beyond the four runs join the last chain.
+    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
+    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+// ---- end quat/detail/chained_product.hpp ----
+// ---- begin quat/detail/overlap.hpp ----
+// Whether two arrays overlap: the aliasing preconditions of the functions over many elements
+// (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
+#ifndef QUAT_DETAIL_OVERLAP_HPP_INCLUDED
+#define QUAT_DETAIL_OVERLAP_HPP_INCLUDED
+
+#include <cstddef>
 #include <cstdint>
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
+[[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                   std::size_t b_bytes) noexcept {
+    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
+    return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
+}
+// True when the two ranges are one and the same (an in-place call) or do not overlap.
+[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                           std::size_t b_bytes) noexcept {
+    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_OVERLAP_HPP_INCLUDED
+// ---- end quat/detail/overlap.hpp ----
+// ---- begin quat/detail/transform_points.hpp ----
+// The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
+// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
+// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
+// its shuffles out (interleaved_points_avx.hpp), and float arrays beyond 16 MiB on x86 are written
+// with non-temporal stores (streaming_store.hpp).
+#ifndef QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#define QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+
+#include <cstddef>
 #include <type_traits>
 
+// ---- begin quat/soa.hpp ----
+// Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
+// component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
+// them are in batch.hpp (rotate), rigid_batch.hpp (transform) and elementwise.hpp (rotate_each).
+//
+// The view types are the same under every instruction set, so they stay outside the instruction-set
+// namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
+#ifndef QUAT_SOA_HPP_INCLUDED
+#define QUAT_SOA_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+
+
+namespace quat {
+
+/// Points stored as three separate coordinate arrays (struct of arrays), each `count` long.
+/// Use soa_points<const T> for inputs and soa_points<T> for outputs; soa_points<T> converts to
+/// soa_points<const T>, so one object can be both (an in-place rotate(q, points, points)).
+template <class T>
+struct soa_points {
+    T* x;               ///< x coordinates
+    T* y;               ///< y coordinates
+    T* z;               ///< z coordinates
+    std::size_t count;  ///< number of points in each array
+
+    /// The same arrays, read-only. Always inlined: a member function is not keyed by instruction
+    /// set as quat's free functions are (see detail/math.hpp), so no copy of it may be emitted.
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_points<const U>() const noexcept {
+        return {x, y, z, count};
+    }
+};
+
+/// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
+/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
+/// soa_quaternions<T> converts to it.
+template <class T>
+struct soa_quaternions {
+    T* w;               ///< scalar parts
+    T* x;               ///< i components
+    T* y;               ///< j components
+    T* z;               ///< k components
+    std::size_t count;  ///< number of rotations in each array
+
+    /// The same arrays, read-only; always inlined, as soa_points' conversion.
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
+        return {w, x, y, z, count};
+    }
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The aliasing rule of the struct-of-arrays forms: each output array is one of the input arrays or
+// overlaps none of them; every array holds `count` elements. The inputs come as a plain array, not
+// a braced list: std::initializer_list's members are the standard library's inline functions, not
+// keyed by instruction set.
+template <class T, std::size_t N>
+[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
+                                        std::size_t count) noexcept {
+    const std::size_t bytes = count * sizeof(T);
+    const T* const outputs[] = {output.x, output.y, output.z};
+    for (const T* out : outputs)
+        for (const T* in : inputs)
+            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
+    return true;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_SOA_HPP_INCLUDED
+// ---- end quat/soa.hpp ----
 // ---- begin quat/detail/interleaved_points_avx.hpp ----
 // The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
 // out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
@@ -3103,12 +4182,352 @@ inline void stream_fence() noexcept {
 
 #endif  // QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
 // ---- end quat/detail/streaming_store.hpp ----
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// Points per block where a block is computed into a local buffer first: the streaming rotation.
+inline constexpr std::size_t batch_block = 256;
+
+// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
+// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
+
+// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
+// so its results carry no added zero.
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                     vec3<T>* output, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    std::size_t done = 0;
+    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
+    // in AVX builds, the rest (all of it elsewhere) below.
+    if constexpr (std::is_same_v<T, float>) {
+        static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                      "vec3<float> must be three packed floats");
+        if (n >= 8)
+            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
+    }
+    // Point i is read before it is written and no iteration touches another's point, so the
+    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = done; i < n; ++i) {
+        const T x = input[i].x, y = input[i].y, z = input[i].z;
+        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
+          oz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            ox += tx;
+            oy += ty;
+            oz += tz;
+        }
+        output[i] = vec3<T>{ox, oy, oz};
+    }
+}
+
+// Arrays at least this large (16 MiB of output) are written with non-temporal stores: they do not
+// fit in cache anyway, and a normal store first reads the destination line (read-for-ownership),
+// which costs a third more memory traffic than a copy.
+inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
+
+// Rotates block by block into a local buffer, then streams the buffer to memory. The points are
+// written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
+template <bool Translate>
+void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
+                         const vec3<float>* input, vec3<float>* output,
+                         std::size_t count) noexcept {
+    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                  "vec3<float> must be three packed floats");
+    vec3<float> buffer[batch_block];
+    for (std::size_t start = 0; start < count; start += batch_block) {
+        const std::size_t n = count - start < batch_block ? count - start : batch_block;
+        transform_block<Translate>(m, t, input + start, buffer, n);
+        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
+    }
+    stream_fence();
+}
+
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
+                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    // Each index is read before it is written, so each output array may be its own input array, and
+    // there is no dependence between iterations (the documented aliasing rule): say so to the
+    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = 0; i < n; ++i) {
+        const T px = x[i], py = y[i], pz = z[i];
+        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
+          rz = m20 * px + m21 * py + m22 * pz;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        ox[i] = rx;
+        oy[i] = ry;
+        oz[i] = rz;
+    }
+}
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
+// and of the rigid transform (rigid_batch.hpp).
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                      vec3<T>* output, std::size_t count) noexcept {
+    // Beyond 16 MiB the points go through a buffer and non-temporal stores, in every x86 build. The
+    // evidence differs by machine. Zen 5 (issue 6): streaming won only in AVX-512 builds (4M
+    // points 2.7-3.1 ms against 3.4-3.8 plain; memcpy 2.3-2.5) and lost with SSE2 and AVX2
+    // (3.4-4.1 against 2.2-3.1). The Intel Xeon of issue 16, where 4M points sit in a 480 MiB L3
+    // that memcpy's rep movsb fills without reading the destination: streaming won at every level
+    // (medians of 5: SSE2 5.7 ms against 6.6 plain, AVX2 4.7-4.9 against 5.2-6.0; memcpy 3.7).
+    if constexpr (std::is_same_v<T, float>) {
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_bytes) {
+            transform_streaming<Translate>(m, t, input, output, count);
+            return;
+        }
+    }
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    transform_block<Translate>(m, t, input, output, count);
+}
+
+// The struct-of-arrays loop of rotate and of the rigid transform.
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
+                      soa_points<T> output) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS).
+            float rx[batch_block], ry[batch_block], rz[batch_block];
+            for (std::size_t start = 0; start < input.count; start += batch_block) {
+                const std::size_t n =
+                    input.count - start < batch_block ? input.count - start : batch_block;
+                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
+                                           rx, ry, rz, n);
+                stream_floats(output.x + start, rx, n);
+                stream_floats(output.y + start, ry, n);
+                stream_floats(output.z + start, rz, n);
+            }
+            stream_fence();
+            return;
+        }
+    }
+    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
+                               input.count);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+// ---- end quat/detail/transform_points.hpp ----
 // ---- begin quat/interpolation.hpp ----
 // Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
-// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle).
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
+// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
 #ifndef QUAT_INTERPOLATION_HPP_INCLUDED
 #define QUAT_INTERPOLATION_HPP_INCLUDED
 
+#include <type_traits>
+
+// ---- begin quat/detail/exp_log.hpp ----
+// e^x and ln x for quat's scalars: in long double by series in constant evaluation (as
+// detail/math.hpp's sqrt and sin), the compiler's builtins at run time, and ADL exp and log for a
+// user scalar. Only exp(quaternion) and log(quaternion) use them.
+#ifndef QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+#define QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+
+#include <cmath>
+#include <type_traits>
+
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+namespace compile_time {
+
+// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a few ulp of
+// long double over the whole range. ln 2 is split into a head with 32 significant bits (fdlibm's
+// ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
+inline constexpr real ln2 = 0.693147180559945309417232121458176568L;
+inline constexpr real ln2_head = 0.693147180369123816490L;
+inline constexpr real ln2_tail = ln2 - ln2_head;
+
+[[nodiscard]] constexpr real exp(real x) noexcept {
+    if (is_nan(x)) return x;
+    if (x > 11357) return infinity<real>();
+    if (x < -11400) return 0;
+    // x = k ln 2 + r with |r| <= ln 2 / 2; e^r by its Taylor series, then times 2^k exactly.
+    const real quotient = x / ln2;
+    long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
+    const real r = (x - static_cast<real>(k) * ln2_head) - static_cast<real>(k) * ln2_tail;
+    real term = 1, sum = 1;
+    for (int n = 1; n < 40; ++n) {
+        term *= r / static_cast<real>(n);
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    for (; k > 0; --k) sum *= 2;
+    for (; k < 0; ++k) sum /= 2;
+    return sum;
+}
+
+[[nodiscard]] constexpr real log(real x) noexcept {
+    if (is_nan(x) || x < 0) return quiet_nan<real>();
+    if (x == 0) return -infinity<real>();
+    if (x == infinity<real>()) return x;
+    // x = m 2^e with m in [sqrt(1/2), sqrt(2)) (exact scalings), then ln m = 2 atanh(f),
+    // f = (m - 1) / (m + 1), |f| < 0.172, by its series.
+    long long e = 0;
+    constexpr real big = 18446744073709551616.0L;  // 2^64
+    while (x >= big) {
+        x /= big;
+        e += 64;
+    }
+    while (x < 1 / big) {
+        x *= big;
+        e -= 64;
+    }
+    while (x >= 2) {
+        x /= 2;
+        ++e;
+    }
+    while (x < 1) {
+        x *= 2;
+        --e;
+    }
+    if (x > 1.41421356237309504880L) {
+        x /= 2;
+        ++e;
+    }
+    const real f = (x - 1) / (x + 1), f2 = f * f;
+    real power = f, sum = f;
+    for (int n = 1; n < 40; ++n) {
+        power *= f2;
+        const real term = power / static_cast<real>(2 * n + 1);
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    const auto k = static_cast<real>(e);
+    return k * ln2_head + (k * ln2_tail + 2 * sum);
+}
+
+}  // namespace compile_time
+
+/// e^x; for a user scalar, exp found by argument-dependent lookup (only exp(quaternion) needs it).
+template <class T>
+[[nodiscard]] constexpr T scalar_exp(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::exp(static_cast<compile_time::real>(x)));
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_expf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_exp(x);
+        } else {
+            return __builtin_expl(x);
+        }
+    } else {
+        using std::exp;
+        return exp(x);
+    }
+}
+
+/// ln x (NaN for negative x, -Inf for 0); for a user scalar, log found by argument-dependent
+/// lookup (only log(quaternion) needs it).
+template <class T>
+[[nodiscard]] constexpr T scalar_log(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::log(static_cast<compile_time::real>(x)));
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_logf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_log(x);
+        } else {
+            return __builtin_logl(x);
+        }
+    } else {
+        using std::log;
+        return log(x);
+    }
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+// ---- end quat/detail/exp_log.hpp ----
 
 namespace quat {
 
@@ -3211,6 +4630,65 @@ template <class T>
     return quaternion<T>{detail::cos(half), v.x, v.y, v.z} + (p - p);
 }
 
+/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
+/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
+/// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept) to huge or subnormal |v| (measured as
+/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
+/// ignores w and returns the identity for |v| < epsilon.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
+    const vec3<T> v{q.x, q.y, q.z};
+    const T e = detail::scalar_exp(q.w);
+    const T angle = norm(v);
+    if (angle == T(0)) return {e, q.x, q.y, q.z};
+    const T angle2 = angle * angle;
+    T c{}, sinc{};  // cos|v| and sin|v| / |v|
+    if (angle2 * angle2 < detail::epsilon<T>()) {
+        // Taylor series; the first omitted terms are below epsilon^1.5.
+        c = T(1) - angle2 / T(2) + angle2 * angle2 / T(24);
+        sinc = T(1) - angle2 / T(6) + angle2 * angle2 / T(120);
+    } else {
+        c = detail::cos(angle);
+        sinc = detail::sin(angle) / angle;
+    }
+    const vec3<T> u = v * (sinc * e);
+    return {c * e, u.x, u.y, u.z};
+}
+
+/// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
+/// part's length in [0, pi], so exp(log(q)) == q. For a unit q with w >= 0, log(q) is
+/// (0, to_rotation_vector(q) / 2) to within a few eps; for w < 0 its vector part is half the
+/// rotation vector of the longer way round (length above pi / 2), as q and -q differ here. Real q:
+/// (ln w, 0, 0, 0) for w > 0 (v's signed zeros kept), (ln|w|, pi, 0, 0) for w < 0 (the axis
+/// (1, 0, 0), as to_axis_angle and glm::log choose), (-Inf, 0, 0, 0) for zero. Accurate for tiny
+/// |v| (no 0/0) and for components from subnormal to max() (|q| and |v| scaled as norm does);
+/// NaN or infinite components give NaN in every component.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> log(const quaternion<T>& q) noexcept {
+    const T s2 = squared_norm(q);
+    T log_norm{};
+    if (detail::in_normal_range(s2)) {
+        log_norm = T(0.5) * detail::scalar_log(s2);
+    } else {
+        // |q|^2 over- or underflowed: ln|q| = ln(scale) + ln|q / scale| with scale the largest
+        // |component|, which brings |q / scale| into [1, 2].
+        if (s2 != s2) return detail::nan_quaternion<T>();  // a NaN that largest_magnitude may skip
+        const T scale = detail::largest_magnitude(q);
+        if (!detail::is_finite(scale)) return detail::nan_quaternion<T>();
+        if (scale == T(0)) return {-detail::infinity<T>(), q.x, q.y, q.z};
+        log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
+    }
+    const vec3<T> v{q.x, q.y, q.z};
+    const T length = norm(v);
+    if (length == T(0)) {
+        if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};
+        return {log_norm, q.x, q.y, q.z};
+    }
+    const vec3<T> u = v / length * detail::atan2(length, q.w);
+    return {log_norm, u.x, u.y, u.z};
+}
+
 /// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
 /// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
 /// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
@@ -3234,28 +4712,6 @@ template <class T>
 
 #endif  // QUAT_INTERPOLATION_HPP_INCLUDED
 // ---- end quat/interpolation.hpp ----
-
-namespace quat {
-
-/// Points stored as three separate coordinate arrays (struct of arrays), each `count` long.
-/// Use soa_points<const T> for inputs and soa_points<T> for outputs; soa_points<T> converts to
-/// soa_points<const T>, so one object can be both (an in-place rotate(q, points, points)).
-template <class T>
-struct soa_points {
-    T* x;               ///< x coordinates
-    T* y;               ///< y coordinates
-    T* z;               ///< z coordinates
-    std::size_t count;  ///< number of points in each array
-
-    /// The same arrays, read-only. Always inlined: a member function is not keyed by instruction
-    /// set as quat's free functions are (see detail/math.hpp), so no copy of it may be emitted.
-    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
-    [[gnu::always_inline]] constexpr operator soa_points<const U>() const noexcept {
-        return {x, y, z, count};
-    }
-};
-
-}  // namespace quat
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -3284,191 +4740,8 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
-template <class In, class Out, class Input, class Output>
-using if_arrays_of = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
-template <class T, class Input, class Output>
-using if_point_arrays = if_arrays_of<vec3<T>, vec3<T>, Input, Output>;
-
-// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
-// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
-[[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                   std::size_t b_bytes) noexcept {
-    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
-    return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
-}
-// True when the two ranges are one and the same (an in-place call) or do not overlap.
-[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                           std::size_t b_bytes) noexcept {
-    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
-}
-
-// Points (or slerp parameters) per block where a block is computed into a local buffer first:
-// the streaming rotation and the batch slerp, whose output type could alias its input t.
-inline constexpr std::size_t batch_block = 256;
+// Slerp parameters per block computed into local arrays first: the output could alias t's type.
 inline constexpr std::size_t batch_block_slerp = 128;
-
-// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
-// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wpass-failed"
-#endif
-
-// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
-// so its results carry no added zero.
-template <bool Translate, class T>
-void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
-                     vec3<T>* output, std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
-            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
-    const T tx = t.x, ty = t.y, tz = t.z;
-    std::size_t done = 0;
-    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
-    // in AVX builds, the rest (all of it elsewhere) below.
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
-                      "vec3<float> must be three packed floats");
-        if (n >= 8)
-            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
-    }
-    // Point i is read before it is written and no iteration touches another's point, so the
-    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
-#if defined(__clang__)
-#pragma clang loop vectorize(assume_safety)
-#elif defined(__GNUC__)
-#pragma GCC ivdep
-#endif
-    for (std::size_t i = done; i < n; ++i) {
-        const T x = input[i].x, y = input[i].y, z = input[i].z;
-        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
-          oz = m20 * x + m21 * y + m22 * z;
-        if constexpr (Translate) {
-            ox += tx;
-            oy += ty;
-            oz += tz;
-        }
-        output[i] = vec3<T>{ox, oy, oz};
-    }
-}
-
-// Arrays at least this large (16 MiB of output) are written with non-temporal stores: they do not
-// fit in cache anyway, and a normal store first reads the destination line (read-for-ownership),
-// which costs a third more memory traffic than a copy.
-inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
-
-// Rotates block by block into a local buffer, then streams the buffer to memory. The points are
-// written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
-template <bool Translate>
-void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
-                         const vec3<float>* input, vec3<float>* output,
-                         std::size_t count) noexcept {
-    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
-                  "vec3<float> must be three packed floats");
-    vec3<float> buffer[batch_block];
-    for (std::size_t start = 0; start < count; start += batch_block) {
-        const std::size_t n = count - start < batch_block ? count - start : batch_block;
-        transform_block<Translate>(m, t, input + start, buffer, n);
-        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
-    }
-    stream_fence();
-}
-
-template <bool Translate, class T>
-void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
-                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
-            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
-    const T tx = t.x, ty = t.y, tz = t.z;
-    // Each index is read before it is written, so each output array may be its own input array, and
-    // there is no dependence between iterations (the documented aliasing rule): say so to the
-    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
-#if defined(__clang__)
-#pragma clang loop vectorize(assume_safety)
-#elif defined(__GNUC__)
-#pragma GCC ivdep
-#endif
-    for (std::size_t i = 0; i < n; ++i) {
-        const T px = x[i], py = y[i], pz = z[i];
-        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
-          rz = m20 * px + m21 * py + m22 * pz;
-        if constexpr (Translate) {
-            rx += tx;
-            ry += ty;
-            rz += tz;
-        }
-        ox[i] = rx;
-        oy[i] = ry;
-        oz[i] = rz;
-    }
-}
-
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-// Each output array is one of the input arrays or overlaps none of them.
-template <class T>
-[[nodiscard]] bool soa_same_or_disjoint(soa_points<const T> input, soa_points<T> output) noexcept {
-    const std::size_t bytes = input.count * sizeof(T);
-    // Plain arrays, not braced lists: std::initializer_list's members are the standard library's
-    // inline functions, not keyed by instruction set.
-    const T* const outputs[] = {output.x, output.y, output.z};
-    const T* const inputs[] = {input.x, input.y, input.z};
-    for (const T* out : outputs)
-        for (const T* in : inputs)
-            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
-    return true;
-}
-
-// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
-// and of the rigid transform (rigid_batch.hpp).
-template <bool Translate, class T>
-void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
-                      vec3<T>* output, std::size_t count) noexcept {
-    // Beyond 16 MiB the points go through a buffer and non-temporal stores, in every x86 build. The
-    // evidence differs by machine. Zen 5 (issue 6): streaming won only in AVX-512 builds (4M
-    // points 2.7-3.1 ms against 3.4-3.8 plain; memcpy 2.3-2.5) and lost with SSE2 and AVX2
-    // (3.4-4.1 against 2.2-3.1). The Intel Xeon of issue 16, where 4M points sit in a 480 MiB L3
-    // that memcpy's rep movsb fills without reading the destination: streaming won at every level
-    // (medians of 5: SSE2 5.7 ms against 6.6 plain, AVX2 4.7-4.9 against 5.2-6.0; memcpy 3.7).
-    if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_bytes) {
-            transform_streaming<Translate>(m, t, input, output, count);
-            return;
-        }
-    }
-    // Each point is read before it is written, so output == input is safe here; g++ and clang
-    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
-    transform_block<Translate>(m, t, input, output, count);
-}
-
-// The struct-of-arrays loop of rotate and of the rigid transform.
-template <bool Translate, class T>
-void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
-                      soa_points<T> output) noexcept {
-    if constexpr (std::is_same_v<T, float>) {
-        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
-            // Out of cache: move a block into local arrays, then stream them (as for AoS).
-            float rx[batch_block], ry[batch_block], rz[batch_block];
-            for (std::size_t start = 0; start < input.count; start += batch_block) {
-                const std::size_t n =
-                    input.count - start < batch_block ? input.count - start : batch_block;
-                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
-                                           rx, ry, rz, n);
-                stream_floats(output.x + start, rx, n);
-                stream_floats(output.y + start, ry, n);
-                stream_floats(output.z + start, rz, n);
-            }
-            stream_fence();
-            return;
-        }
-    }
-    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
-                               input.count);
-}
 
 // sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
 // term is below epsilon / 100 at pi/2 (through x^13 for float, x^21 for double). Unlike std::sin it
@@ -3568,7 +4841,7 @@ template <class T>
 void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
             soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
+    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
                 "quat::rotate: an output array partially overlaps an input array");
     detail::transform_points<false>(m, vec3<T>{}, input, output);
 }
@@ -3582,14 +4855,16 @@ void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>>
 
 /// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
 /// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input).
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
     rotate(q, detail::data_of(input), detail::data_of(output), detail::size_of(input));
 }
 /// Container form of the array-of-structs rotation by m.
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
@@ -3604,27 +4879,12 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 /// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        quaternion<T> product = quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * q[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    quaternion<T> acc[lanes] = {quaternion<T>::identity(), quaternion<T>::identity(),
-                                quaternion<T>::identity(), quaternion<T>::identity()};
-    for (std::size_t i = 0; i < run; ++i)
-        for (std::size_t j = 0; j < lanes; ++j) acc[j] = acc[j] * q[j * run + i];
-    for (std::size_t i = lanes * run; i < count; ++i) acc[lanes - 1] = acc[lanes - 1] * q[i];
-    return (acc[0] * acc[1]) * (acc[2] * acc[3]);
+    return detail::chained_product(q, count);
 }
 
 /// compose over any contiguous container or view of quaternion<T>.
-template <class Range,
-          class T = std::remove_cv_t<
-              std::remove_pointer_t<decltype(detail::data_of(std::declval<const Range&>()))>>,
-          class = std::enable_if_t<std::is_same_v<T, quaternion<decltype(T{}.w)>>>>
-[[nodiscard]] constexpr T compose(const Range& factors) noexcept {
+template <class Range, class T = detail::element_scalar_t<quaternion, Range>>
+[[nodiscard]] constexpr quaternion<T> compose(const Range& factors) noexcept {
     return compose(detail::data_of(factors), detail::size_of(factors));
 }
 
@@ -3674,195 +4934,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
 #define QUAT_BLEND_HPP_INCLUDED
 
 #include <cstddef>
-#include <utility>
 
-// ---- begin quat/dual_quaternion.hpp ----
-// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
-#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
-#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
-
-#include <optional>
-
-
-namespace quat {
-
-/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
-/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
-/// dq and -dq are the same motion. Members are public, as for quaternion.
-template <class T>
-struct dual_quaternion {
-    quaternion<T> real;  ///< The rotation.
-    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
-
-    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
-    dual_quaternion() = default;
-    /// The dual quaternion real_part + eps dual_part.
-    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
-                                                     const quaternion<T>& dual_part) noexcept
-        : real(real_part), dual(dual_part) {}
-    /// Conversion from another precision, component by component.
-    template <class U>
-    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
-        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
-
-    /// The motion that moves nothing: real 1, dual 0.
-    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
-        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
-    }
-};
-
-using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
-using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
-/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
-                                                              const vec3<T>& translation) noexcept {
-    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
-                             translation.z * T(0.5)};
-    return {rotation, half * rotation};
-}
-
-/// The rotation of the unit dual quaternion dq (its real part).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
-    return dq.real;
-}
-
-/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
-/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
-template <class T>
-[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
-    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
-    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
-    const quaternion<T>& r = dq.real;
-    const quaternion<T>& d = dq.dual;
-    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
-                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
-                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
-    return half + half;
-}
-
-/// Negation: the same rigid motion.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
-    return {-dq.real, -dq.dual};
-}
-
-/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
-/// 48 multiplications and 40 additions.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
-                                                     const dual_quaternion<T>& b) noexcept {
-    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
-}
-
-/// a = a * b: as rigid motions, b is applied first, then the old a.
-template <class T>
-constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
-                                         const dual_quaternion<T>& b) noexcept {
-    return a = a * b;
-}
-
-/// Exact component-wise equality; dq == -dq is false although both are one motion.
-template <class T>
-[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return a.real == b.real && a.dual == b.dual;
-}
-/// Negation of ==.
-template <class T>
-[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return !(a == b);
-}
-
-/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
-/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
-/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
-/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
-/// parts; a NaN or infinite dual component, NaN in the dual part.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = inverse(dq.real);
-    return {real, -(real * dq.dual * real)};
-}
-
-/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
-/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
-/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
-/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = normalize(dq.real);
-    const quaternion<T> dual = dq.dual / norm(dq.real);
-    return {real, dual - real * dot(real, dual)};
-}
-
-/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
-/// normalized dual part overflows.
-template <class T>
-[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
-    const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T>& d = dq.dual;
-    if (!try_normalize(dq.real) || !detail::is_finite(d.w) || !detail::is_finite(d.x) ||
-        !detail::is_finite(d.y) || !detail::is_finite(d.z))
-        return std::nullopt;
-    const dual_quaternion<T> result = normalize(dq);
-    // A dual part huge beside a tiny real part can overflow once divided by |real|.
-    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
-    return result;
-}
-
-/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
-/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform: the real part is not a unit quaternion");
-    return rotate(dq.real, p) + translation_of(dq);
-}
-
-/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
-/// Precondition: |real| = 1 (checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
-                                                 const vec3<T>& v) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform_vector: the real part is not a unit quaternion");
-    return detail::rotate_unchecked(dq.real, v);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
-// ---- end quat/dual_quaternion.hpp ----
 
 namespace quat {
 
@@ -3890,16 +4962,6 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// The T of a container of dual_quaternion<T>: declared only, for the type of its data.
-template <class T>
-T dual_quaternion_scalar(const dual_quaternion<T>*) noexcept;
-template <class Transforms>
-using dual_quaternion_scalar_t =
-    decltype(detail::dual_quaternion_scalar(detail::data_of(std::declval<const Transforms&>())));
-
-}  // namespace detail
 
 /// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
 /// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
@@ -3945,7 +5007,8 @@ template <class T, class Weight>
 /// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
 /// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
 /// Precondition: equal sizes (QUAT_ASSERT).
-template <class Transforms, class Weights, class T = detail::dual_quaternion_scalar_t<Transforms>>
+template <class Transforms, class Weights,
+          class T = detail::element_scalar_t<dual_quaternion, Transforms>>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
                                                  const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),
@@ -3959,11 +5022,18 @@ template <class Transforms, class Weights, class T = detail::dual_quaternion_sca
 #endif  // QUAT_BLEND_HPP_INCLUDED
 // ---- end quat/blend.hpp ----
 // ---- begin quat/constants.hpp ----
-// Mathematical constants, as C++20's <numbers> has them, in every language mode.
+// Mathematical constants, as C++20's <numbers> has them, in every language mode, and conversions
+// between degrees and radians. The constants live in quat::numbers, nested as the standard's are in
+// std::numbers, so `using namespace quat;` brings in no `pi` to collide with a user's own: after it,
+// write `numbers::pi`. radians and degrees are functions in quat itself, as GLM's are in glm.
 #ifndef QUAT_CONSTANTS_HPP_INCLUDED
 #define QUAT_CONSTANTS_HPP_INCLUDED
 
+#include <type_traits>
+
+
 namespace quat {
+namespace numbers {
 
 /// pi in the floating-point type T, correctly rounded (like std::numbers::pi_v<T>).
 template <class T>
@@ -3971,6 +5041,76 @@ inline constexpr T pi_v = static_cast<T>(3.1415926535897932384626433832795028841
 
 /// pi as a double (like std::numbers::pi).
 inline constexpr double pi = pi_v<double>;
+
+}  // namespace numbers
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// pi / 180 in R. For float and double, computed in long double and rounded to R once: the
+/// correctly rounded factor. A user scalar gets R(pi) / R(180).
+template <class R>
+[[nodiscard]] constexpr R radians_per_degree() noexcept {
+    if constexpr (std::is_floating_point_v<R>) {
+        return static_cast<R>(numbers::pi_v<long double> / 180.0L);
+    } else {
+        return detail::pi<R>() / R(180);
+    }
+}
+
+/// 180 / pi in R, rounded as radians_per_degree.
+template <class R>
+[[nodiscard]] constexpr R degrees_per_radian() noexcept {
+    if constexpr (std::is_floating_point_v<R>) {
+        return static_cast<R>(180.0L / numbers::pi_v<long double>);
+    } else {
+        return R(180) / detail::pi<R>();
+    }
+}
+
+}  // namespace detail
+
+/// degrees * (pi / 180), the factor rounded once to the result type: float in, float out; an
+/// integer gives a double (as std::sin does). GLM's glm::radians, and equal to it for double.
+/// Not exact: radians(180.0) is pi to within an ulp, and degrees(radians(x)) may differ from x in
+/// the last place.
+template <class A>
+[[nodiscard]] constexpr detail::real_t<A> radians(A angle_degrees) noexcept {
+    using R = detail::real_t<A>;
+    return static_cast<R>(angle_degrees) * detail::radians_per_degree<R>();
+}
+
+/// radians * (180 / pi), the factor rounded once to the result type: float in, float out; an
+/// integer gives a double. GLM's glm::degrees.
+template <class A>
+[[nodiscard]] constexpr detail::real_t<A> degrees(A angle_radians) noexcept {
+    using R = detail::real_t<A>;
+    return static_cast<R>(angle_radians) * detail::degrees_per_radian<R>();
+}
+}  // inline namespace isa_...
 
 }  // namespace quat
 
@@ -4419,11 +5559,17 @@ template <sequence S, frame F, class T>
 // ---- end quat/continuous_euler.hpp ----
 // ---- begin quat/elementwise.hpp ----
 // Element-by-element batches: point i turned by rotation i (rotate_each), the products a[i] * b[i]
-// (compose_each), and to_matrix / to_quaternion over arrays. No allocation; any scalar type.
+// (compose_each), and the conversions to_matrix_each and to_quaternion_each.
+//
+// Names: a function over arrays ends in _each when element i of its output comes from element i of
+// each input array (rotation i turns point i; a[i] * b[i]; matrix i of rotation i). One transform
+// applied to many elements keeps the plain name of its single form, with arrays in place of the
+// element (batch.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out), rigid_batch.hpp's
+// transform(dq, points, out)), as does a reduction of an array to one value (compose(factors)).
 //
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
-// vectorize them (checked with -fopt-info-vec and objdump). to_matrix and to_quaternion run the
-// scalar conversions element by element: vectorized versions (blocks of matrices regrouped
+// vectorize them (checked with -fopt-info-vec and objdump). to_matrix_each and to_quaternion_each
+// run the scalar conversions element by element: vectorized versions (blocks of matrices regrouped
 // through local arrays, a branch-free to_quaternion) measured slower than these loops for SSE2
 // and AVX2 with g++ 12, and 1.2 to 1.6 times faster only with AVX-512 (to_matrix slower there
 // with clang 14): g++ has no cheap way to regroup the nine interleaved entries of a matrix. Where
@@ -4431,40 +5577,18 @@ template <sequence S, frame F, class T>
 // multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
-// as in batch.hpp. Aliasing: an output may be exactly an input of its own type (in place) or
-// overlap no input; it may never overlap an input of another type. A partial overlap is a
-// precondition violation: QUAT_ASSERT reports it in debug builds (a constant number of pointer
-// range comparisons per call); with NDEBUG the values written are unspecified. Like all of quat's
-// functions they live in the instruction-set namespace (detail/math.hpp).
+// as in batch.hpp; the struct-of-arrays views are soa.hpp's. Aliasing: an output may be exactly an
+// input of its own type (in place) or overlap no input; it may never overlap an input of another
+// type. A partial overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (a
+// constant number of pointer range comparisons per call); with NDEBUG the values written are
+// unspecified. Like all of quat's functions they live in the instruction-set namespace
+// (detail/math.hpp).
 #ifndef QUAT_ELEMENTWISE_HPP_INCLUDED
 #define QUAT_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
 #include <type_traits>
-#include <utility>
 
-
-namespace quat {
-
-/// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
-/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
-/// soa_quaternions<T> converts to it.
-template <class T>
-struct soa_quaternions {
-    T* w;               ///< scalar parts
-    T* x;               ///< i components
-    T* y;               ///< j components
-    T* z;               ///< k components
-    std::size_t count;  ///< number of rotations in each array
-
-    /// The same arrays, read-only; always inlined, as soa_points' conversion (batch.hpp).
-    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
-    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
-        return {w, x, y, z, count};
-    }
-};
-
-}  // namespace quat
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -4492,13 +5616,6 @@ inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
-
-// The T of a container of rotation_matrix<T>: declared only, for the type of its data.
-template <class T>
-T matrix_scalar(const rotation_matrix<T>*) noexcept;
-template <class Matrices>
-using matrix_scalar_t =
-    decltype(detail::matrix_scalar(detail::data_of(std::declval<const Matrices&>())));
 
 // rotate(q, v) is M v with M = I + s (w [u]x + [u]x^2), u = (x, y, z), s = 4 - 2 |q|^2 (2 / |q|^2
 // to first order). Applied without forming M, as v + s (w t + u x t) with t = u x v: 24 operations
@@ -4639,20 +5756,6 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
 #endif
 }
 
-// Each output array is one of the input arrays or overlaps none of them.
-template <class T>
-[[nodiscard]] bool soa_same_or_disjoint(soa_quaternions<const T> q, soa_points<const T> p,
-                                        soa_points<T> output) noexcept {
-    const std::size_t bytes = p.count * sizeof(T);
-    // Plain arrays, not braced lists, as in batch.hpp.
-    const T* const outputs[] = {output.x, output.y, output.z};
-    const T* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
-    for (const T* out : outputs)
-        for (const T* in : inputs)
-            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
-    return true;
-}
-
 }  // namespace detail
 
 /// output[i] = rotate(rotations[i], points[i]) for i < count (arrays of structs), for unit
@@ -4684,7 +5787,9 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
     QUAT_ASSERT(rotations.count == points.count,
                 "quat::rotate_each: rotations and points differ in size");
     QUAT_ASSERT(output.count >= points.count, "quat::rotate_each: output shorter than the input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint(rotations, points, output),
+    QUAT_ASSERT(detail::soa_same_or_disjoint({rotations.w, rotations.x, rotations.y, rotations.z,
+                                              points.x, points.y, points.z},
+                                             output, points.count),
                 "quat::rotate_each: an output array partially overlaps an input array");
     detail::rotate_each_soa(rotations, points, output);
 }
@@ -4692,7 +5797,7 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
 /// Container form of rotate_each: contiguous rotations (quaternion<T>) and points, any contiguous
 /// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output).
 template <class Rotations, class Points, class Output,
-          class T = detail::quaternion_scalar_t<Rotations>,
+          class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Points, Output>>
 void rotate_each(const Rotations& rotations, const Points& points, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(rotations) == detail::size_of(points),
@@ -4718,7 +5823,7 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
 }
 
 /// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output).
-template <class A, class B, class Output, class T = detail::quaternion_scalar_t<A>,
+template <class A, class B, class Output, class T = detail::element_scalar_t<quaternion, A>,
           class = detail::if_arrays_of<quaternion<T>, quaternion<T>, B, Output>>
 void compose_each(const A& a, const B& b, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(a) == detail::size_of(b),
@@ -4732,42 +5837,45 @@ void compose_each(const A& a, const B& b, Output&& output) noexcept {
 /// output[i] = to_matrix(q[i]) for i < count, for unit q[i] (unchecked: a non-unit q gives a matrix
 /// that is not a rotation). output must not overlap q.
 template <class T>
-void to_matrix(const quaternion<T>* q, rotation_matrix<T>* output, std::size_t count) noexcept {
+void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
+                    std::size_t count) noexcept {
     QUAT_ASSERT(detail::disjoint(q, count * sizeof(quaternion<T>), output,
                                  count * sizeof(rotation_matrix<T>)),
-                "quat::to_matrix: output overlaps the input");
+                "quat::to_matrix_each: output overlaps the input");
     for (std::size_t i = 0; i < count; ++i) {
         const quaternion<T> r = q[i];
         output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
     }
 }
 
-/// Container form of the batch to_matrix. Precondition: size(output) >= size(q).
-template <class Rotations, class Output, class T = detail::quaternion_scalar_t<Rotations>,
+/// Container form of to_matrix_each. Precondition: size(output) >= size(q).
+template <class Rotations, class Output, class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<quaternion<T>, rotation_matrix<T>, Rotations, Output>>
-void to_matrix(const Rotations& q, Output&& output) noexcept {
+void to_matrix_each(const Rotations& q, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(q),
-                "quat::to_matrix: output shorter than the input");
-    to_matrix(detail::data_of(q), detail::data_of(output), detail::size_of(q));
+                "quat::to_matrix_each: output shorter than the input");
+    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::size_of(q));
 }
 
 /// output[i] = to_quaternion(m[i]) for i < count (w >= 0). Precondition: rotation matrices, as for
 /// the scalar to_quaternion; output must not overlap m.
 template <class T>
-void to_quaternion(const rotation_matrix<T>* m, quaternion<T>* output, std::size_t count) noexcept {
+void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
+                        std::size_t count) noexcept {
     QUAT_ASSERT(detail::disjoint(m, count * sizeof(rotation_matrix<T>), output,
                                  count * sizeof(quaternion<T>)),
-                "quat::to_quaternion: output overlaps the input");
+                "quat::to_quaternion_each: output overlaps the input");
     for (std::size_t i = 0; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 
-/// Container form of the batch to_quaternion. Precondition: size(output) >= size(m).
-template <class Matrices, class Output, class T = detail::matrix_scalar_t<Matrices>,
+/// Container form of to_quaternion_each. Precondition: size(output) >= size(m).
+template <class Matrices, class Output,
+          class T = detail::element_scalar_t<rotation_matrix, Matrices>,
           class = detail::if_arrays_of<rotation_matrix<T>, quaternion<T>, Matrices, Output>>
-void to_quaternion(const Matrices& m, Output&& output) noexcept {
+void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(m),
-                "quat::to_quaternion: output shorter than the input");
-    to_quaternion(detail::data_of(m), detail::data_of(output), detail::size_of(m));
+                "quat::to_quaternion_each: output shorter than the input");
+    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::size_of(m));
 }
 
 }  // inline namespace isa_...
@@ -4775,150 +5883,6 @@ void to_quaternion(const Matrices& m, Output&& output) noexcept {
 
 #endif  // QUAT_ELEMENTWISE_HPP_INCLUDED
 // ---- end quat/elementwise.hpp ----
-// ---- begin quat/fast_slerp.hpp ----
-// Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
-// much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
-// of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
-// double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
-// rad). The bounds are asserted by tests/test_fast_slerp.cpp and measured on 10^6 samples by
-// `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
-#ifndef QUAT_FAST_SLERP_HPP_INCLUDED
-#define QUAT_FAST_SLERP_HPP_INCLUDED
-
-#include <type_traits>
-
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types:
-/// a branch on the sign of a . b goes either way on random input and costs more than the polynomials.
-template <class T>
-[[nodiscard]] constexpr T sign_factor(T x) noexcept {
-    if constexpr (std::is_same_v<T, float>) {
-        return __builtin_copysignf(T(1), x);
-    } else if constexpr (std::is_same_v<T, double>) {
-        return __builtin_copysign(T(1), x);
-    } else if constexpr (std::is_same_v<T, long double>) {
-        return __builtin_copysignl(T(1), x);
-    } else {
-        return x < T(0) ? T(-1) : T(1);
-    }
-}
-
-}  // namespace detail
-
-/// nlerp from unit a (t = 0) to unit b (t = 1) along the shorter arc with t corrected so that the
-/// speed is nearly constant: rotation angle within 5.9e-4 rad of slerp's, |result| = 1 to rounding,
-/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit
-/// a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle error
-/// grows quickly).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> corrected_nlerp(const quaternion<T>& a,
-                                                      const quaternion<T>& b,
-                                                      detail::type_identity_t<T> t) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
-                "quat::corrected_nlerp: a or b is not a unit quaternion");
-    // nlerp at tau is slerp at t when tau = 1/2 + tan((t - 1/2) theta) / (2 tan(theta / 2)), theta
-    // the 4D angle between a and the nearer of b, -b. zeux (Arseny Kapoulkine), "Approximating
-    // slerp" (2015), writes tau = t + t (t - 1/2) (t - 1) k: tau is 0 and 1 at the ends whatever k
-    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear in
-    // w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
-    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
-    const T k00 = T(1.112132429948791), k01 = T(-1.0468288499833223);
-    const T k10 = T(-1.741641016389086), k11 = T(2.5617072945285786);
-    const T k20 = T(0.6675284572043932), k21 = T(-1.5895475706814315);
-    const T d = dot(a, b);
-    const T x = detail::abs(d);
-    const T w = t - t * t;
-    const T k = (k00 + k01 * w) + x * ((k10 + k11 * w) + x * (k20 + k21 * w));
-    const T tau = t - (t - T(0.5)) * w * k;
-    // |(1 - tau) a + tau b|^2 = 1 - 2 tau (1 - tau) (1 - x) for unit a and b: exactly 1 at tau = 0
-    // and tau = 1, where the division then leaves the end point as it is.
-    const T squared_length = T(1) + (x * T(2) - T(2)) * (tau - tau * tau);
-    return (a * (T(1) - tau) + b * (tau * detail::sign_factor(d))) / detail::sqrt(squared_length);
-}
-
-/// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
-/// trigonometry: rotation angle within 3.4e-8 rad of slerp's in double and 4e-7 rad in float (about
-/// the exact slerp's own rounding), |result| = 1 within the same, exactly a at t = 0 and b or -b at
-/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1]; outside,
-/// the angle and length errors grow quickly.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
-                                                 detail::type_identity_t<T> t) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
-                "quat::slerp_fast: a or b is not a unit quaternion");
-    // With psi half the 4D angle between a and the nearer of b, -b (psi <= pi/4), c = cos psi and
-    // alpha = 2t - 1, slerp's weights are E - O for a and E + O for b, where E = cos(alpha psi) /
-    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves both.
-    // As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
-    // sin(alpha psi) / sin psi satisfy as functions of c, as in Eberly 2011, "A fast and accurate
-    // algorithm for computing SLERP", J. Graphics, GPU, and Game Tools 15(3)), with u = t - 1/2 and
-    // w = t (1 - t):  E = 1/2 - (w y / c) P(w, y),  O = u - u w y R(w, y),  P = 2 + (1 - 4w) y / 3 + ...,
-    // R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where cubics
-    // in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
-    // bench/fit_slerp_fast.py fits the coefficients to the smallest largest rotation-angle and
-    // length errors (3.33e-8 both before rounding, within the 3.4e-8 rad that the tests assert; the
-    // series themselves, cut after y^3, leave 1.4e-5 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
-    const T p00 = T(2.0000036702103374);
-    const T p10 = T(0.3335047863139534), p11 = T(-1.3337634041499677);
-    const T p20 = T(-0.06481534760799428), p21 = T(0.1712160812299326),
-            p22 = T(0.35801086529937354);
-    const T p30 = T(0.025435000954561436), p31 = T(-0.05846757933736984),
-            p32 = T(-0.16262932866110547);
-    const T r00 = T(1.3332819707202537);
-    const T r10 = T(-0.40120298637938917), r11 = T(-0.5342158551913353);
-    const T r20 = T(0.14357184224791386), r21 = T(0.257330323741846), r22 = T(0.1300863069559305);
-    const T r30 = T(-0.09100478817206194), r31 = T(-0.21791497866289397);
-    const T d = dot(a, b);
-    // The coefficients depend on t alone, so they are computed while the dot product and the
-    // square root are still on their way.
-    const T u = t - T(0.5);
-    const T w = t - t * t;
-    const T p1 = p10 + p11 * w, p2 = p20 + w * (p21 + w * p22), p3 = p30 + w * (p31 + w * p32);
-    const T r1 = r10 + r11 * w, r2 = r20 + w * (r21 + w * r22), r3 = r30 + r31 * w;
-    const T c = detail::sqrt(detail::abs(d) * T(0.5) + T(0.5));
-    const T inverse_c = T(1) / c;
-    const T y = c - T(1);
-    const T y2 = y * y;
-    const T even = T(0.5) - (w * y) * ((p00 + y * p1) + y2 * (p2 + y * p3)) * inverse_c;
-    const T odd = u - (u * w * y) * ((r00 + y * r1) + y2 * (r2 + y * r3));
-    return a * (even - odd) + b * ((even + odd) * detail::sign_factor(d));
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_FAST_SLERP_HPP_INCLUDED
-// ---- end quat/fast_slerp.hpp ----
 // ---- begin quat/homogeneous_matrix.hpp ----
 // 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
 // conversions to and from dual quaternions.
@@ -4977,6 +5941,11 @@ struct homogeneous_matrix {
                  {T(0), T(1), T(0), T(0)},
                  {T(0), T(0), T(1), T(0)},
                  {T(0), T(0), T(0), T(1)}}};
+    }
+    /// The pure translation x -> x + t: to_homogeneous(rotation_matrix<T>::identity(), t).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr homogeneous_matrix from_translation(
+        const vec3<T>& t) noexcept {
+        return to_homogeneous(rotation_matrix<T>::identity(), t);
     }
 };
 
@@ -5073,17 +6042,58 @@ template <class T>
     return rotate(rotation_block(m), v);
 }
 
+/// h * p, as GLM's mat4 * vec4(p, 1) and Eigen's Isometry3 * Vector3 read: the same as
+/// transform(h, p). A point transform: p is rotated, then translated (transform_vector turns a
+/// direction without translating).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const homogeneous_matrix<T>& h,
+                                          const vec3<T>& p) noexcept {
+    return transform(h, p);
+}
+
+/// The rigid motion x -> R x + t as a 4x4 matrix: rotation block r, last column translation,
+/// last row (0, 0, 0, 1), each copied exactly. Precondition: r is a rotation (not checked; any
+/// 3x3 matrix is copied as given).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(const rotation_matrix<T>& rotation,
+                                                             const vec3<T>& translation) noexcept {
+    const rotation_matrix<T>& r = rotation;
+    const vec3<T>& t = translation;
+    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
+             {r(1, 0), r(1, 1), r(1, 2), t.y},
+             {r(2, 0), r(2, 1), r(2, 2), t.z},
+             {T(0), T(0), T(0), T(1)}}};
+}
+
+/// The pure rotation r as a 4x4 matrix: to_homogeneous(r, {0, 0, 0}).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const rotation_matrix<T>& rotation) noexcept {
+    return to_homogeneous(rotation, vec3<T>{T(0), T(0), T(0)});
+}
+
+/// The rigid motion x -> R x + t, R the rotation of unit q: to_homogeneous(to_matrix(q), t), with
+/// the translation exact (to_homogeneous(to_dual_quaternion(q, t)) rounds it). Precondition: unit
+/// q (checked in debug builds by to_matrix).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(const quaternion<T>& rotation,
+                                                             const vec3<T>& translation) noexcept {
+    return to_homogeneous(to_matrix(rotation), translation);
+}
+
+/// The pure rotation by unit q as a 4x4 matrix: to_homogeneous(to_matrix(q), {0, 0, 0}).
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
+    const quaternion<T>& rotation) noexcept {
+    return to_homogeneous(to_matrix(rotation), vec3<T>{T(0), T(0), T(0)});
+}
+
 /// The 4x4 matrix of the unit dual quaternion dq: rotation block to_matrix(dq.real), last column
 /// translation_of(dq), last row (0, 0, 0, 1). Precondition: unit dq (normalize gives one).
 template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(
     const dual_quaternion<T>& dq) noexcept {
-    const rotation_matrix<T> r = to_matrix(dq.real);
-    const vec3<T> t = translation_of(dq);
-    return {{{r(0, 0), r(0, 1), r(0, 2), t.x},
-             {r(1, 0), r(1, 1), r(1, 2), t.y},
-             {r(2, 0), r(2, 1), r(2, 2), t.z},
-             {T(0), T(0), T(0), T(1)}}};
+    return to_homogeneous(to_matrix(dq.real), translation_of(dq));
 }
 
 namespace detail {
@@ -5107,6 +6117,18 @@ template <class T>
 }
 
 }  // namespace detail
+
+/// The inverse x -> R^T (x - t) of the rigid motion m = [R t; 0 1]: rotation block R^T, translation
+/// -R^T t, exact transposition and 9 multiplications. Precondition: m is rigid (checked in debug
+/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to its
+/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that is
+/// not m's inverse (invert those with a general 4x4 inverse). NaN propagates.
+template <class T>
+[[nodiscard]] constexpr homogeneous_matrix<T> inverse(const homogeneous_matrix<T>& m) noexcept {
+    QUAT_ASSERT(detail::is_near_rigid(m), "quat::inverse: the matrix is not a rigid motion");
+    const rotation_matrix<T> r_transposed = transpose(rotation_block(m));
+    return to_homogeneous(r_transposed, -rotate(r_transposed, translation_of(m)));
+}
 
 /// The unit dual quaternion (real part w >= 0) of the rigid motion m, exact at half turns (through
 /// to_quaternion). Precondition: m is rigid (checked in debug builds); try_to_dual_quaternion
@@ -5289,7 +6311,7 @@ inline namespace isa_generic {
 /// for empty or unequal sizes and an unspecified, possibly NaN, rotation for bad times. A NaN t
 /// gives NaN; a NaN or infinite keyframe gives a non-finite component wherever it is used (held
 /// as it is outside the times, as slerp gives it inside).
-template <class Times, class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> keyframe_slerp(const Times& times, const Rotations& rotations,
                                                      detail::type_identity_t<T> t) noexcept {
     const std::size_t count = detail::size_of(rotations);
@@ -5324,14 +6346,29 @@ template <class Times, class Rotations, class T = detail::quaternion_scalar_t<Ro
 
 #endif  // QUAT_KEYFRAME_SLERP_HPP_INCLUDED
 // ---- end quat/keyframe_slerp.hpp ----
-// ---- begin quat/kinematics.hpp ----
-// Angular velocity between two orientations, and integrating an angular velocity over a time step.
-#ifndef QUAT_KINEMATICS_HPP_INCLUDED
-#define QUAT_KINEMATICS_HPP_INCLUDED
+// ---- begin quat/keyframe_squad.hpp ----
+// Squad through keyframes at given times: Shoemake's spherical cubic with its control points scaled
+// for uneven spacing, so that the angular velocity is continuous across every inner keyframe.
+#ifndef QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
+#define QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
+
+#include <cstddef>
+
+// ---- begin quat/squad.hpp ----
+// Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
+// continuous across them when the keyframes are evenly spaced in time.
+#ifndef QUAT_SQUAD_HPP_INCLUDED
+#define QUAT_SQUAD_HPP_INCLUDED
+
+// ---- begin quat/detail/relative_rotation.hpp ----
+// The relative rotation between two orientations, accurate when they are close: shared by
+// kinematics.hpp (angular velocity), squad.hpp (control points), sclerp.hpp and
+// rotation_spline.hpp, so that none of them includes another concept's header for it.
+#ifndef QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
+#define QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
 
 
 namespace quat {
-
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
 // `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
@@ -5373,7 +6410,247 @@ template <bool Body, class T>
 }
 
 }  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
+#endif  // QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
+// ---- end quat/detail/relative_rotation.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// squad_control with the tangent skewed towards one neighbour: q exp(-((l_n + l_p) + skew (l_n -
+/// l_p)) / 4), l_n = log(q* next), l_p = log(q* previous), neighbours on q's hemisphere. skew = 0
+/// is Shoemake's control point, computed with exactly its operations; keyframe_squad passes
+/// skew = (h_before - h_after) / (h_before + h_after) for keyframes at uneven times.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> skewed_squad_control(const quaternion<T>& previous,
+                                                           const quaternion<T>& current,
+                                                           const quaternion<T>& next,
+                                                           T skew) noexcept {
+    // log of a unit quaternion is half its rotation vector; exp(v) is from_rotation_vector(2 v).
+    const vec3<T> to_next = to_rotation_vector(relative_rotation<true>(current, next));
+    const vec3<T> to_previous = to_rotation_vector(relative_rotation<true>(current, previous));
+    vec3<T> sum = to_next + to_previous;
+    if (skew != T(0)) sum = sum + (to_next - to_previous) * skew;
+    return current * from_rotation_vector(sum * T(-0.25));
+}
+
+}  // namespace detail
+
+/// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
+/// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
+/// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
+/// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
+/// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
+/// them). At the ends of a path pass the end keyframe twice, squad_control(q0, q0, q1): the path
+/// then starts (and ends) at half the end segment's slerp speed. keyframe_squad builds the whole
+/// path from keyframes at given times, with these points scaled for uneven spacing.
+/// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
+                                                    const quaternion<T>& current,
+                                                    const quaternion<T>& next) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(previous) && detail::is_near_unit(current) &&
+                    detail::is_near_unit(next),
+                "quat::squad_control: an input is not a unit quaternion");
+    return detail::skewed_squad_control(previous, current, next, T(0));
+}
+
+/// The spherical cubic from keyframe q1 (t = 0) to keyframe q2 (t = 1) with inner control points
+/// a1 = squad_control(q0, q1, q2) and a2 = squad_control(q1, q2, q3):
+/// slerp(slerp(q1, q2, t), slerp(a1, a2, t), 2t(1 - t)). Returns q1 at t = 0 and q2 (or -q2) at
+/// t = 1 exactly; every slerp takes the shorter arc, so the result depends only on the rotations,
+/// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
+/// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
+/// neighbouring durations there (the controls know nothing of time): keyframe_squad scales the
+/// controls for the spacing, and rotation_spline is smooth to the acceleration. Argument order:
+/// keyframe, control, control, keyframe (GLM's glm::squad takes q1, q2, s1, s2: a port that keeps
+/// GLM's order compiles and is wrong). Preconditions: unit inputs (debug-checked) and t in
+/// [0, 1]; a NaN or infinite input gives a non-finite component (at t = 0 and t = 1 only where
+/// that keyframe is returned).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
+                                            const quaternion<T>& a2, const quaternion<T>& q2,
+                                            detail::type_identity_t<T> t) noexcept {
+    // Checked here, although slerp checks too, so that the message names squad, not slerp.
+    QUAT_ASSERT(detail::is_near_unit(q1) && detail::is_near_unit(a1) && detail::is_near_unit(a2) &&
+                    detail::is_near_unit(q2),
+                "quat::squad: an input is not a unit quaternion");
+    return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_SQUAD_HPP_INCLUDED
+// ---- end quat/squad.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// (before - after) / (before + after) for positive durations, formed from their ratio so that
+/// neither the sum nor the difference can overflow or underflow: exactly 0 for equal durations,
+/// and +-1 in the limit of one duration negligible beside the other.
+template <class T>
+[[nodiscard]] constexpr T duration_skew(T before, T after) noexcept {
+    if (before > after) {
+        const T ratio = after / before;
+        return (T(1) - ratio) / (T(1) + ratio);
+    }
+    const T ratio = before / after;
+    return (ratio - T(1)) / (T(1) + ratio);
+}
+
+}  // namespace detail
+
+/// The rotation at time t on Shoemake's squad through unit `rotations` at strictly increasing
+/// `times` (containers, C arrays and time types as for keyframe_slerp), its control points scaled
+/// for uneven spacing so that the angular velocity is continuous across every keyframe. On segment
+/// i, with h_i = t_(i+1) - t_i: squad(q_i, a_i, a_(i+1), q_(i+1), (t - t_i) / h_i), where
+///     a_i = q_i exp(-(h_(i-1) log(q_i* q_(i+1)) + h_i log(q_i* q_(i-1))) / (2 (h_(i-1) + h_i)))
+/// (neighbours on q_i's hemisphere, as squad_control takes them) and a_0, a_(n-1) are the end
+/// keyframes themselves. Derivation (docs/keyframes.md): near q_i the segment after it is
+/// q_i exp(u (l_i + 2 c)), the one before q_i exp((u - 1) (l_(i-1) - 2 c)), with l the logs of
+/// the steps and c = log(q_i* a_i); equal rates per unit of time on both sides give a_i, and the
+/// tangent (l_(i-1) + l_i) / (h_(i-1) + h_i) of Kochanek and Bartels' adjustment for unequal
+/// intervals (SIGGRAPH 1984), with every control point within a quarter turn of its keyframe.
+/// Evenly spaced times give squad_control's points by the same operations. Exactly rotations[i]
+/// at times[i]; the end keyframes are left and reached at their segment's slerp velocity (as in
+/// rotation_spline: two keyframes give keyframe_slerp) and held outside the times.
+/// Preconditions, debug checks (messages naming keyframe_squad) and release results for bad sizes
+/// or times are keyframe_slerp's. A NaN t gives NaN; a NaN or infinite keyframe k a non-finite
+/// component on segments k - 2 to k + 1, where it is an end or a control point's neighbour.
+template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
+[[nodiscard]] constexpr quaternion<T> keyframe_squad(const Times& times, const Rotations& rotations,
+                                                     detail::type_identity_t<T> t) noexcept {
+    const std::size_t count = detail::size_of(rotations);
+    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
+                "quat::keyframe_squad: times and rotations differ in size or are empty");
+    if (count == 0 || detail::size_of(times) != count) {
+        const T nan = detail::quiet_nan<T>();
+        return {nan, nan, nan, nan};
+    }
+    const auto* time = detail::data_of(times);
+    QUAT_ASSERT(detail::are_keyframe_times<T>(time, count),
+                "quat::keyframe_squad: keyframe times are not increasing, or not finite");
+    const quaternion<T>* rotation = detail::data_of(rotations);
+    const auto at = [time](std::size_t k) { return detail::to_scalar<T>(time[k]); };
+    const T first = at(0), last = at(count - 1);
+    if (count == 1 || t <= first || t >= last) {
+        const quaternion<T>& end = count == 1 || t <= first ? rotation[0] : rotation[count - 1];
+        QUAT_ASSERT(detail::is_near_unit(end),
+                    "quat::keyframe_squad: a rotation is not a unit quaternion");
+        return t == t ? end : end * t;
+    }
+    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to squad
+    const bool first_segment = i == 0, last_segment = i + 2 == count;
+    // The keyframes the segment uses: its ends and, for the control points, their neighbours.
+    QUAT_ASSERT(detail::is_near_unit(rotation[first_segment ? i : i - 1]) &&
+                    detail::is_near_unit(rotation[i]) && detail::is_near_unit(rotation[i + 1]) &&
+                    detail::is_near_unit(rotation[last_segment ? i + 1 : i + 2]),
+                "quat::keyframe_squad: a rotation is not a unit quaternion");
+    const T start = at(i), end = at(i + 1), duration = end - start;
+    const quaternion<T> control_start =
+        first_segment
+            ? rotation[i]
+            : detail::skewed_squad_control(rotation[i - 1], rotation[i], rotation[i + 1],
+                                           detail::duration_skew(start - at(i - 1), duration));
+    const quaternion<T> control_end =
+        last_segment
+            ? rotation[i + 1]
+            : detail::skewed_squad_control(rotation[i], rotation[i + 1], rotation[i + 2],
+                                           detail::duration_skew(duration, at(i + 2) - end));
+    return squad(rotation[i], control_start, control_end, rotation[i + 1], (t - start) / duration);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
+// ---- end quat/keyframe_squad.hpp ----
+// ---- begin quat/kinematics.hpp ----
+// Angular velocity between two orientations, and integrating an angular velocity over a time step.
+#ifndef QUAT_KINEMATICS_HPP_INCLUDED
+#define QUAT_KINEMATICS_HPP_INCLUDED
+
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
 /// Body-frame angular velocity (a gyroscope's reading, radians per unit of dt) that turns unit q0
 /// into unit q1 in time dt at a constant rate: integrate_body(q0, omega, dt) == q1 as rotations,
 /// along the shorter arc (q1 and -q1 give the same omega, |omega dt| <= pi). Relative error of a
@@ -5562,7 +6839,7 @@ template <class T>
 /// w >= 0. Where the mean is not unique (try_mean reports it), one of the minimizers. NaN for an
 /// empty container or a NaN or infinite component. Precondition: unit quaternions (QUAT_ASSERT);
 /// unchecked, longer ones count more.
-template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations) noexcept {
     return detail::mean_of(detail::solve_mean<false>(
         detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
@@ -5573,7 +6850,7 @@ template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
 /// count), as long as rotations (QUAT_ASSERT); a zero weight drops that rotation. Precondition:
 /// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, or a weight is
 /// negative, NaN or infinite.
-template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations,
                                            const Weights& weights) noexcept {
     QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
@@ -5589,7 +6866,7 @@ template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<
 /// within 1/4096 of 1, as the debug check of mean), or a mean that is not unique: the two largest
 /// eigenvalues of sum q_i q_i^T differ by at most sqrt(epsilon) times the number of rotations (two
 /// rotations half a turn apart, for one). Never asserts.
-template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations) noexcept {
     return detail::unique_mean_of(detail::solve_mean<true>(
         detail::data_of(rotations), detail::size_of(rotations), [](std::size_t) { return T(1); }));
@@ -5599,7 +6876,7 @@ template <class Rotations, class T = detail::quaternion_scalar_t<Rotations>>
 /// rotations differ in size, no weight is positive, a weight is negative, NaN or infinite, or the
 /// mean is not unique: the two largest eigenvalues of sum w_i q_i q_i^T differ by at most
 /// sqrt(epsilon) times the sum of the weights. Never asserts.
-template <class Rotations, class Weights, class T = detail::quaternion_scalar_t<Rotations>>
+template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations,
                                                               const Weights& weights) noexcept {
     if (detail::size_of(weights) != detail::size_of(rotations)) return std::nullopt;
@@ -5693,7 +6970,7 @@ template <class T, class Generator>
     // (x, y) on a circle of radius sqrt(1 - u1) and (w, z) on one of radius sqrt(u1): the squared
     // radii are uniform, which makes the point uniform on the 3-sphere.
     const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
-    const T theta1 = T(2) * pi_v<T> * u2, theta2 = pi_v<T> * (u3 - T(0.5));
+    const T theta1 = T(2) * numbers::pi_v<T> * u2, theta2 = numbers::pi_v<T> * (u3 - T(0.5));
     // |cos|: pi rounded to float exceeds pi, so theta2 can land just past -pi/2 (u3 = 2^-31 gave
     // w = -3.1e-8); mirroring that sliver keeps w >= 0 and moves no probability.
     return {r2 * detail::abs(detail::cos(theta2)), r1 * detail::sin(theta1),
@@ -5707,14 +6984,13 @@ template <class T, class Generator>
 // ---- end quat/random.hpp ----
 // ---- begin quat/rigid_batch.hpp ----
 // Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
-// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops,
-// aliasing rules and instruction-set namespaces are those of batch.hpp.
+// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
+// (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
+// namespaces are those of batch.hpp.
 #ifndef QUAT_RIGID_BATCH_HPP_INCLUDED
 #define QUAT_RIGID_BATCH_HPP_INCLUDED
 
 #include <cstddef>
-#include <type_traits>
-#include <utility>
 
 
 namespace quat {
@@ -5744,49 +7020,42 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-// The product f[0] f[1] ... f[count - 1] in four interleaved chains, as compose of quaternions
-// does, but with the chains' components stored component-major (component c of chain j at
-// chain[c][j]): each step is then the same arithmetic on four lanes, which compilers turn into
-// vector instructions even at SSE2. Held as four dual quaternions, the 32 running components
-// overflow SSE2's 16 registers and the loop stays scalar: 2.4 times slower (measured by
-// rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+// The four chains of chained_product for dual quaternions, their running products stored
+// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
+// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
+// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
+// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> interleaved_dual_product(const dual_quaternion<T>* f,
-                                                                    std::size_t count) noexcept {
-    constexpr std::size_t lanes = 4;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        dual_quaternion<T> product = dual_quaternion<T>::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
-    for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
-    for (std::size_t i = 0; i < run; ++i) {
-        T b[8][lanes] = {};
-        for (std::size_t j = 0; j < lanes; ++j) {
-            const dual_quaternion<T>& factor = f[j * run + i];
-            const T components[8] = {factor.real.w, factor.real.x, factor.real.y, factor.real.z,
-                                     factor.dual.w, factor.dual.x, factor.dual.y, factor.dual.z};
-            for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+struct dual_chain_components {
+    static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,
+                                       dual_quaternion<T> (&chain)[product_chains]) noexcept {
+        constexpr std::size_t lanes = product_chains;
+        T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
+        for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
+        for (std::size_t i = 0; i < run; ++i) {
+            T b[8][lanes] = {};
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const dual_quaternion<T>& factor = f[j * run + i];
+                const T components[8] = {factor.real.w, factor.real.x, factor.real.y,
+                                         factor.real.z, factor.dual.w, factor.dual.x,
+                                         factor.dual.y, factor.dual.z};
+                for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+            }
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
+                const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
+                const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
+                const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
+                const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
+                const T components[8] = {real.w, real.x, real.y, real.z,
+                                         dual.w, dual.x, dual.y, dual.z};
+                for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
+            }
         }
-        for (std::size_t j = 0; j < lanes; ++j) {
-            const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
-            const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
-            const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
-            const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
-            const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
-            const T components[8] = {real.w, real.x, real.y, real.z,
-                                     dual.w, dual.x, dual.y, dual.z};
-            for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
-        }
+        for (std::size_t j = 0; j < lanes; ++j)
+            chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
     }
-    dual_quaternion<T> chain[lanes] = {};
-    for (std::size_t j = 0; j < lanes; ++j)
-        chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
-    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
-    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
-}
+};
 
 }  // namespace detail
 
@@ -5816,7 +7085,7 @@ template <class T>
 void transform(const homogeneous_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
                soa_points<T> output) noexcept {
     QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint(input, output),
+    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
                 "quat::transform: an output array partially overlaps an input array");
     detail::transform_points<true>(rotation_block(m), translation_of(m), input, output);
 }
@@ -5830,14 +7099,16 @@ void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_ident
 
 /// Container form of the array-of-structs transform by unit dq: any contiguous input and output
 /// of vec3<T>. Precondition: size(output) >= size(input).
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
     transform(dq, detail::data_of(input), detail::data_of(output), detail::size_of(input));
 }
 /// Container form of the array-of-structs transform by the 4x4 matrix m.
-template <class T, class Input, class Output, class = detail::if_point_arrays<T, Input, Output>>
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
@@ -5850,15 +7121,12 @@ void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& outp
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
                                                    std::size_t count) noexcept {
-    return detail::interleaved_dual_product(dq, count);
+    return detail::chained_product<dual_quaternion<T>, detail::dual_chain_components<T>>(dq, count);
 }
 
 /// compose over any contiguous container or view of dual_quaternion<T>.
-template <class Range, class T = std::remove_cv_t<std::remove_pointer_t<
-                           decltype(detail::data_of(std::declval<const Range&>()))>>>
-[[nodiscard]] constexpr std::enable_if_t<std::is_same_v<T, dual_quaternion<decltype(T{}.real.w)>>,
-                                         T>
-compose(const Range& factors) noexcept {
+template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range>>
+[[nodiscard]] constexpr dual_quaternion<T> compose(const Range& factors) noexcept {
     return compose(detail::data_of(factors), detail::size_of(factors));
 }
 
@@ -6280,9 +7548,7 @@ public:
             const quaternion<T>& q = rotation[i];
             // Zero, not |q|^2 == 0: normalize scales subnormal keyframes up first.
             if (!detail::is_finite(t) || (i > 0 && !(detail::to_scalar<T>(time[i - 1]) < t)) ||
-                !detail::is_finite(q.w) || !detail::is_finite(q.x) || !detail::is_finite(q.y) ||
-                !detail::is_finite(q.z) ||
-                (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)))
+                !detail::is_finite(q) || (q.w == T(0) && q.x == T(0) && q.y == T(0) && q.z == T(0)))
                 return std::nullopt;
         }
         rotation_spline spline(times, rotations);
@@ -6429,7 +7695,7 @@ private:
 /// rotation_spline(times, rotations) takes its scalar from the rotations: quaternion<T> gives T.
 template <class Times, class Rotations>
 rotation_spline(const Times&, const Rotations&)
-    -> rotation_spline<detail::quaternion_scalar_t<Rotations>>;
+    -> rotation_spline<detail::element_scalar_t<quaternion, Rotations>>;
 
 template <class T>
 bool rotation_spline<T>::build() {
@@ -6765,11 +8031,17 @@ template <class T>
 
 #endif  // QUAT_SCREW_HPP_INCLUDED
 // ---- end quat/screw.hpp ----
-// ---- begin quat/squad.hpp ----
-// Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
-// continuous across them when the keyframes are evenly spaced in time.
-#ifndef QUAT_SQUAD_HPP_INCLUDED
-#define QUAT_SQUAD_HPP_INCLUDED
+// ---- begin quat/slerp_fast.hpp ----
+// Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
+// much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
+// of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
+// double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
+// rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6 samples by
+// `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
+#ifndef QUAT_SLERP_FAST_HPP_INCLUDED
+#define QUAT_SLERP_FAST_HPP_INCLUDED
+
+#include <type_traits>
 
 
 namespace quat {
@@ -6798,55 +8070,111 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
-/// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
-/// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
-/// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
-/// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
-/// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
-/// them). At the ends of a path pass the end keyframe twice, squad_control(q0, q0, q1): the path
-/// then starts (and ends) at half the end segment's slerp speed.
-/// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
+namespace detail {
+
+/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types:
+/// a branch on the sign of a . b goes either way on random input and costs more than the polynomials.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
-                                                    const quaternion<T>& current,
-                                                    const quaternion<T>& next) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(previous) && detail::is_near_unit(current) &&
-                    detail::is_near_unit(next),
-                "quat::squad_control: an input is not a unit quaternion");
-    // log of a unit quaternion is half its rotation vector, and exp(v) is from_rotation_vector(2 v).
-    const vec3<T> to_next = to_rotation_vector(detail::relative_rotation<true>(current, next));
-    const vec3<T> to_previous =
-        to_rotation_vector(detail::relative_rotation<true>(current, previous));
-    return current * from_rotation_vector((to_next + to_previous) * T(-0.25));
+[[nodiscard]] constexpr T sign_factor(T x) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        return __builtin_copysignf(T(1), x);
+    } else if constexpr (std::is_same_v<T, double>) {
+        return __builtin_copysign(T(1), x);
+    } else if constexpr (std::is_same_v<T, long double>) {
+        return __builtin_copysignl(T(1), x);
+    } else {
+        return x < T(0) ? T(-1) : T(1);
+    }
 }
 
-/// The spherical cubic from keyframe q1 (t = 0) to keyframe q2 (t = 1) with inner control points
-/// a1 = squad_control(q0, q1, q2) and a2 = squad_control(q1, q2, q3):
-/// slerp(slerp(q1, q2, t), slerp(a1, a2, t), 2t(1 - t)). Returns q1 at t = 0 and q2 (or -q2) at
-/// t = 1 exactly; every slerp takes the shorter arc, so the result depends only on the rotations,
-/// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
-/// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
-/// neighbouring durations there (the controls know nothing of time), and rotation_spline is the
-/// path to use. Argument order: keyframe, control, control, keyframe (GLM's glm::squad takes
-/// q1, q2, s1, s2: a port that keeps GLM's order compiles and is wrong). Preconditions: unit
-/// inputs (debug-checked) and t in [0, 1]; a NaN or infinite input gives a non-finite component
-/// (at t = 0 and t = 1 only where that keyframe is returned).
+}  // namespace detail
+
+/// nlerp from unit a (t = 0) to unit b (t = 1) along the shorter arc with t corrected so that the
+/// speed is nearly constant: rotation angle within 5.9e-4 rad of slerp's, |result| = 1 to rounding,
+/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit
+/// a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle error
+/// grows quickly).
 template <class T>
-[[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
-                                            const quaternion<T>& a2, const quaternion<T>& q2,
-                                            detail::type_identity_t<T> t) noexcept {
-    // Checked here, although slerp checks too, so that the message names squad, not slerp.
-    QUAT_ASSERT(detail::is_near_unit(q1) && detail::is_near_unit(a1) && detail::is_near_unit(a2) &&
-                    detail::is_near_unit(q2),
-                "quat::squad: an input is not a unit quaternion");
-    return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
+[[nodiscard]] constexpr quaternion<T> corrected_nlerp(const quaternion<T>& a,
+                                                      const quaternion<T>& b,
+                                                      detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::corrected_nlerp: a or b is not a unit quaternion");
+    // nlerp at tau is slerp at t when tau = 1/2 + tan((t - 1/2) theta) / (2 tan(theta / 2)), theta
+    // the 4D angle between a and the nearer of b, -b. zeux (Arseny Kapoulkine), "Approximating
+    // slerp" (2015), writes tau = t + t (t - 1/2) (t - 1) k: tau is 0 and 1 at the ends whatever k
+    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear in
+    // w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
+    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad).
+    // const, not constexpr: a user scalar need not be a literal type.
+    const T k00 = T(1.112132429948791), k01 = T(-1.0468288499833223);
+    const T k10 = T(-1.741641016389086), k11 = T(2.5617072945285786);
+    const T k20 = T(0.6675284572043932), k21 = T(-1.5895475706814315);
+    const T d = dot(a, b);
+    const T x = detail::abs(d);
+    const T w = t - t * t;
+    const T k = (k00 + k01 * w) + x * ((k10 + k11 * w) + x * (k20 + k21 * w));
+    const T tau = t - (t - T(0.5)) * w * k;
+    // |(1 - tau) a + tau b|^2 = 1 - 2 tau (1 - tau) (1 - x) for unit a and b: exactly 1 at tau = 0
+    // and tau = 1, where the division then leaves the end point as it is.
+    const T squared_length = T(1) + (x * T(2) - T(2)) * (tau - tau * tau);
+    return (a * (T(1) - tau) + b * (tau * detail::sign_factor(d))) / detail::sqrt(squared_length);
+}
+
+/// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
+/// trigonometry: rotation angle within 3.4e-8 rad of slerp's in double and 4e-7 rad in float (about
+/// the exact slerp's own rounding), |result| = 1 within the same, exactly a at t = 0 and b or -b at
+/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1]; outside,
+/// the angle and length errors grow quickly.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
+                                                 detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp_fast: a or b is not a unit quaternion");
+    // With psi half the 4D angle between a and the nearer of b, -b (psi <= pi/4), c = cos psi and
+    // alpha = 2t - 1, slerp's weights are E - O for a and E + O for b, where E = cos(alpha psi) /
+    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves both.
+    // As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
+    // sin(alpha psi) / sin psi satisfy as functions of c, as in Eberly 2011, "A fast and accurate
+    // algorithm for computing SLERP", J. Graphics, GPU, and Game Tools 15(3)), with u = t - 1/2 and
+    // w = t (1 - t):  E = 1/2 - (w y / c) P(w, y),  O = u - u w y R(w, y),  P = 2 + (1 - 4w) y / 3 + ...,
+    // R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where cubics
+    // in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
+    // bench/fit_slerp_fast.py fits the coefficients to the smallest largest rotation-angle and
+    // length errors (3.33e-8 both before rounding, within the 3.4e-8 rad that the tests assert; the
+    // series themselves, cut after y^3, leave 1.4e-5 rad).
+    // const, not constexpr: a user scalar need not be a literal type.
+    const T p00 = T(2.0000036702103374);
+    const T p10 = T(0.3335047863139534), p11 = T(-1.3337634041499677);
+    const T p20 = T(-0.06481534760799428), p21 = T(0.1712160812299326),
+            p22 = T(0.35801086529937354);
+    const T p30 = T(0.025435000954561436), p31 = T(-0.05846757933736984),
+            p32 = T(-0.16262932866110547);
+    const T r00 = T(1.3332819707202537);
+    const T r10 = T(-0.40120298637938917), r11 = T(-0.5342158551913353);
+    const T r20 = T(0.14357184224791386), r21 = T(0.257330323741846), r22 = T(0.1300863069559305);
+    const T r30 = T(-0.09100478817206194), r31 = T(-0.21791497866289397);
+    const T d = dot(a, b);
+    // The coefficients depend on t alone, so they are computed while the dot product and the
+    // square root are still on their way.
+    const T u = t - T(0.5);
+    const T w = t - t * t;
+    const T p1 = p10 + p11 * w, p2 = p20 + w * (p21 + w * p22), p3 = p30 + w * (p31 + w * p32);
+    const T r1 = r10 + r11 * w, r2 = r20 + w * (r21 + w * r22), r3 = r30 + r31 * w;
+    const T c = detail::sqrt(detail::abs(d) * T(0.5) + T(0.5));
+    const T inverse_c = T(1) / c;
+    const T y = c - T(1);
+    const T y2 = y * y;
+    const T even = T(0.5) - (w * y) * ((p00 + y * p1) + y2 * (p2 + y * p3)) * inverse_c;
+    const T odd = u - (u * w * y) * ((r00 + y * r1) + y2 * (r2 + y * r3));
+    return a * (even - odd) + b * ((even + odd) * detail::sign_factor(d));
 }
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_SQUAD_HPP_INCLUDED
-// ---- end quat/squad.hpp ----
+#endif  // QUAT_SLERP_FAST_HPP_INCLUDED
+// ---- end quat/slerp_fast.hpp ----
 // ---- begin quat/swing_twist.hpp ----
 // Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
 #ifndef QUAT_SWING_TWIST_HPP_INCLUDED
@@ -6928,9 +8256,7 @@ template <class T>
 [[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
     const quaternion<T>& q, const vec3<T>& axis) noexcept {
     const std::optional<vec3<T>> unit_axis = try_normalize(axis);
-    if (!unit_axis || !detail::is_finite(q.w) || !detail::is_finite(q.x) ||
-        !detail::is_finite(q.y) || !detail::is_finite(q.z) || !detail::is_near_unit(q))
-        return std::nullopt;
+    if (!unit_axis || !detail::is_finite(q) || !detail::is_near_unit(q)) return std::nullopt;
     return detail::try_swing_twist_unit(q, *unit_axis);
 }
 

@@ -37,6 +37,10 @@ int valid() {
     quat::euler<double> e{0.1, 0.2, 0.3};
     sink = sink + e[2];
     std::vector<vec3<double>> points(300, v), out(300);
+    const std::vector<double> weights(300, 0.5);
+    sink = sink + quat::align_points(points, points, weights).rms +
+           quat::align_points_with_scale(points, points).scale +
+           quat::align_vectors(points, points, weights).rssd;
     quat::rotate(unit, points, points);                           // in place
     quat::rotate(unit, points, out);                              // disjoint
     quat::rotate(unit, points.data(), points.data() + 150, 150);  // adjacent halves
@@ -62,6 +66,7 @@ int valid() {
     sink = sink + quat::transform(motion, v).x + quat::sclerp(motion, other, 0.3).dual.x;
     const std::vector<quat::dual_quaterniond> bones{motion, other};
     sink = sink + quat::blend(bones, std::vector<double>{0.5, 0.5}).dual.y;
+    sink = sink + quat::inverse(quat::to_homogeneous(drifted, v))(0, 3) + v[2];
     quat::transform(motion, points, points);
     quat::transform(quat::to_homogeneous(other), points.data(), points.data() + 150, 150);
     quat::transform(motion, quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
@@ -81,14 +86,15 @@ int valid() {
         quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
         quat::soa_points<double>{x.data(), y.data(), z.data(), 64});
     std::vector<quat::rotation_matrix<double>> matrices(300);
-    quat::to_matrix(products, matrices);
-    quat::to_quaternion(matrices, products);
+    quat::to_matrix_each(products, matrices);
+    quat::to_quaternion_each(matrices, products);
     sink = sink + points[7].x + products[9].w;
     // Keyframe paths: drifted keyframes at increasing times, t before, inside and after them.
     const std::vector<double> key_times{0, 1, 2.5};
     const std::vector<quatd> keys{drifted, turned, unit};
     for (const double at : {-1.0, 0.0, 0.7, 2.5, 3.0})
         sink = sink + quat::keyframe_slerp(key_times, keys, at).w +
+               quat::keyframe_squad(key_times, keys, at).w +
                quat::rotation_spline<double>(key_times, keys)(at).w;
     sink = sink + quat::squad(drifted, quat::squad_control(drifted, drifted, turned),
                               quat::squad_control(drifted, turned, unit), turned, 0.4)
@@ -146,6 +152,10 @@ int run(const char* name) {
         sink = quat::align_vectors(pair, std::vector<vec3<double>>{v}).rssd;
     if (std::strcmp(name, "align_vectors_negative_weight") == 0)
         sink = quat::align_vectors(pair, pair, std::vector<double>{1, -1}).rssd;
+    if (std::strcmp(name, "align_points_size") == 0)
+        sink = quat::align_points(pair, std::vector<vec3<double>>{v}).rms;
+    if (std::strcmp(name, "align_points_negative_weight") == 0)
+        sink = quat::align_points_with_scale(pair, pair, std::vector<double>{1, -1}).rms;
     if (std::strcmp(name, "squad_control") == 0)
         sink = quat::squad_control(quatd::identity(), not_unit, quatd::identity()).w;
     const std::vector<double> unsorted{0, 2, 1};
@@ -168,6 +178,20 @@ int run(const char* name) {
     if (std::strcmp(name, "keyframe_slerp_not_unit") == 0)
         sink = quat::keyframe_slerp(std::vector<double>{0, 1},
                                     std::vector<quatd>{quatd::identity(), not_unit}, 0.5)
+                   .w;
+    if (std::strcmp(name, "keyframe_squad_size") == 0)
+        sink = quat::keyframe_squad(std::vector<double>{0, 1}, three, 0.5).w;
+    if (std::strcmp(name, "keyframe_squad_unsorted") == 0)
+        sink = quat::keyframe_squad(std::vector<double>{0, 3, 1, 4},
+                                    std::vector<quatd>(4, quatd::identity()), 3.5)
+                   .w;
+    if (std::strcmp(name, "keyframe_squad_nan_time") == 0)  // sorted around t, NaN elsewhere
+        sink = quat::keyframe_squad(std::vector<double>{0, 1, nan_time}, three, 0.5).w;
+    if (std::strcmp(name, "keyframe_squad_not_unit") == 0)  // only a control point's neighbour
+        sink = quat::keyframe_squad(std::vector<double>{0, 1, 2, 3},
+                                    std::vector<quatd>{quatd::identity(), quatd::identity(),
+                                                       quatd::identity(), not_unit},
+                                    1.5)
                    .w;
     if (std::strcmp(name, "rotation_spline_infinite_time") == 0)
         sink = quat::rotation_spline<double>(
@@ -218,6 +242,15 @@ int run(const char* name) {
                    .real.w;
     if (std::strcmp(name, "homogeneous_index") == 0)
         sink = quat::to_homogeneous(motion)(0, 4 + static_cast<int>(sink));
+    if (std::strcmp(name, "vec3_index") == 0) {
+        const quat::vec3<double> p{1, 2, 3};
+        sink = p[static_cast<std::size_t>(3 + sink)];
+    }
+    if (std::strcmp(name, "homogeneous_inverse") == 0) {
+        quat::homogeneous_matrix<double> scaled = quat::to_homogeneous(motion);
+        scaled(0, 0) *= 2;
+        sink = quat::inverse(scaled)(0, 0);
+    }
     if (std::strcmp(name, "rigid_batch_overlap") == 0)
         quat::transform(motion, points.data(), points.data() + 1, 63);
     if (std::strcmp(name, "rigid_batch_soa_overlap") == 0)
@@ -248,9 +281,9 @@ int run(const char* name) {
         std::vector<quatd> out(10);
         quat::compose_each(rotations, products, out);
     }
-    if (std::strcmp(name, "to_matrix_overlap") == 0) {
+    if (std::strcmp(name, "to_matrix_each_overlap") == 0) {
         std::vector<quat::rotation_matrix<double>> matrices(64);
-        quat::to_matrix(reinterpret_cast<const quatd*>(matrices.data()), matrices.data(), 8);
+        quat::to_matrix_each(reinterpret_cast<const quatd*>(matrices.data()), matrices.data(), 8);
     }
     std::printf("no assertion fired for '%s' (%g)\n", name, static_cast<double>(sink));
     return 0;

@@ -27,6 +27,7 @@ static const char* quat_try_last_call = "";
          : (std::fprintf(stdout, "QUAT_ASSERT fired in %s: %s\n", quat_try_last_call, message), \
             std::fflush(stdout), std::abort()))
 
+#include <quat/align_points.hpp>
 #include <quat/quat.hpp>
 
 namespace {
@@ -70,8 +71,32 @@ bool finite(const quat::swing_twist_parts<T>& p) {
 }
 
 template <class T>
+bool finite(const quat::alignment<T>& a) {
+    return finite(a.rotation) && finite(a.rssd);
+}
+
+template <class T>
+bool finite(const quat::point_alignment<T>& a) {
+    return finite(a.motion) && finite(a.rms);
+}
+template <class T>
+bool finite(const quat::similarity_alignment<T>& a) {
+    return finite(a.motion) && finite(a.rms) && finite(a.scale) && a.scale > T(0);
+}
+
+template <class T>
+bool unit(const quat::alignment<T>& a) {
+    return std::fabs(quat::squared_norm(a.rotation) - T(1)) <= T(1e-3);
+}
+template <class T>
 bool unit(const quaternion<T>& q) {
     return std::fabs(quat::squared_norm(q) - T(1)) <= T(1e-3);
+}
+template <class T>
+bool unit(const quat::point_alignment<T>& a) {
+    // The dual part orthogonal to the real one, relative to its size (translations may be huge).
+    return unit(a.motion.real) && std::fabs(quat::dot(a.motion.real, a.motion.dual)) <=
+                                      T(1e-3) * quat::norm(a.motion.dual);
 }
 template <class T>
 bool unit(const vec3<T>& v) {
@@ -292,6 +317,51 @@ void align_cases() {
     for (const vec3<T>& a : v)
         for (const vec3<T>& b : v)
             CHECK_TRY(quat::try_look_rotation(a, b), "try_look_rotation" + str(a) + str(b));
+    current = "try_align_vectors";
+    const std::vector<vec3<T>> none,
+        basis{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}};
+    CHECK_TRY(quat::try_align_vectors(none, none), "try_align_vectors(no pairs)");
+    CHECK_TRY(quat::try_align_vectors(basis, none), "try_align_vectors(3 targets, no sources)");
+    CHECK_TRY(quat::try_align_vectors(none, basis, std::vector<T>{}),
+              "try_align_vectors(no targets, 3 sources, no weights)");
+    for (const vec3<T>& a : v) {
+        std::vector<vec3<T>> with_a = basis;
+        with_a[1] = a;
+        CHECK_TRY(quat::try_align_vectors(with_a, basis),
+                  "try_align_vectors(target " + str(a) + ")");
+        CHECK_TRY(quat::try_align_vectors(basis, with_a),
+                  "try_align_vectors(source " + str(a) + ")");
+    }
+    for (const T w : scalars<T>()) {
+        CHECK_TRY(quat::try_align_vectors(basis, basis, std::vector<T>{T(1), w, T(1)}),
+                  "try_align_vectors(weight " + str(w) + ")");
+        CHECK_TRY(quat::try_align_vectors(basis, basis, std::vector<T>{w, w, w}),
+                  "try_align_vectors(all weights " + str(w) + ")");
+        CHECK_TRY(quat::try_align_vectors(basis, basis, std::vector<T>{w, w}),
+                  "try_align_vectors(two weights " + str(w) + " for three pairs)");
+    }
+    current = "try_align_points";
+    for (const vec3<T>& a : v) {
+        std::vector<vec3<T>> with_a = basis;
+        with_a[1] = a;
+        CHECK_TRY(quat::try_align_points(with_a, basis), "try_align_points(target " + str(a) + ")");
+        CHECK_TRY(quat::try_align_points(basis, with_a), "try_align_points(source " + str(a) + ")");
+        CHECK_TRY(quat::try_align_points_with_scale(with_a, basis),
+                  "try_align_points_with_scale(target " + str(a) + ")");
+        CHECK_TRY(quat::try_align_points_with_scale(basis, with_a),
+                  "try_align_points_with_scale(source " + str(a) + ")");
+    }
+    for (const T w : scalars<T>()) {
+        CHECK_TRY(quat::try_align_points(basis, basis, std::vector<T>{T(1), w, T(1)}),
+                  "try_align_points(weight " + str(w) + ")");
+        CHECK_TRY(quat::try_align_points_with_scale(basis, basis, std::vector<T>{w, w, w}),
+                  "try_align_points_with_scale(all weights " + str(w) + ")");
+        CHECK_TRY(quat::try_align_points(basis, basis, std::vector<T>{w, w}),
+                  "try_align_points(two weights " + str(w) + " for three pairs)");
+    }
+    CHECK_TRY(quat::try_align_points(none, none), "try_align_points(no points)");
+    CHECK_TRY(quat::try_align_points_with_scale(basis, none),
+              "try_align_points_with_scale(3 targets, no sources)");
 }
 
 template <class T>

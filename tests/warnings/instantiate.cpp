@@ -83,7 +83,7 @@ T everything() {
     sum += compose(factors).w + compose(factors.data(), factors.size()).x + slerped[3].w + out[5].x;
     std::ostringstream text;
     text << q << v << m << aa << to_euler<sequence::zxz>(q) << extract_euler<sequence::xyz>(q);
-    return sum + pi_v<T> + T(pi) + T(text.str().size());
+    return sum + numbers::pi_v<T> + T(numbers::pi) + T(text.str().size());
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Instantiates the per-element batches (elementwise.hpp) for float, double and long double under
-// the strict warning flags: every overload of rotate_each, compose_each and the batch to_matrix and
-// to_quaternion, through pointers, std::vector, std::array and C arrays. Compiled, not run, by the
+// the strict warning flags: every overload of rotate_each, compose_each, to_matrix_each and
+// to_quaternion_each, through pointers, std::vector, std::array and C arrays. Compiled, not run, by the
 // strict_warnings CTest test.
 #include <array>
 #include <vector>
@@ -33,13 +33,13 @@ T elementwise() {
     quaternion<T> pair_products[2];
     compose_each(pair, pair, pair_products);
     std::vector<rotation_matrix<T>> matrices(5);
-    to_matrix(rotations.data(), matrices.data(), rotations.size());
-    to_matrix(rotations, matrices);
-    to_quaternion(matrices.data(), products.data(), matrices.size());
-    to_quaternion(matrices, products);
+    to_matrix_each(rotations.data(), matrices.data(), rotations.size());
+    to_matrix_each(rotations, matrices);
+    to_quaternion_each(matrices.data(), products.data(), matrices.size());
+    to_quaternion_each(matrices, products);
     std::array<rotation_matrix<T>, 2> pair_matrices{};
-    to_matrix(pair, pair_matrices);
-    to_quaternion(pair_matrices, pair_products);
+    to_matrix_each(pair, pair_matrices);
+    to_quaternion_each(pair_matrices, pair_products);
     return out[4].x + points[3].y + turned[1].z + z[2] + products[1].w + pair_products[0].x +
            matrices[2](1, 1);
 }

@@ -1,10 +1,11 @@
-// Instantiates align_vectors.hpp and mean.hpp (align_vectors, align_vectors_with_sensitivity,
-// mean, try_mean) for float, double and long double under the strict warning flags, with weights
+// Instantiates align_vectors.hpp, align_points.hpp and mean.hpp (align_vectors, try_align_vectors,
+// align_vectors_with_sensitivity, align_points[_with_scale] and their try_ forms, mean, try_mean) for float, double and long double under the strict warning flags, with weights
 // of another scalar type beside them (a double weight converts to T). Compiled, not run, by the
 // strict_warnings CTest test.
 #include <array>
 #include <vector>
 
+#include <quat/align_points.hpp>
 #include <quat/align_vectors.hpp>
 #include <quat/mean.hpp>
 
@@ -19,10 +20,22 @@ T estimation() {
     const std::vector<double> double_weights{1, 2, 3};
     const alignment<T> plain = align_vectors(targets, sources);
     const alignment<T> weighted = align_vectors(targets, sources, double_weights);
-    const auto [rotation, rssd, unique, sensitivity] =
+    const alignment_with_sensitivity<T> with =
         align_vectors_with_sensitivity(targets, sources, weights);
-    T sum = plain.rotation.w + weighted.rssd + rotation.x + rssd + sensitivity(0, 1);
-    sum += unique ? T(1) : T(0);
+    const quaternion<T> rotation = with.rotation;
+    T sum = plain.rotation.w + weighted.rssd + rotation.x + with.rssd + with.sensitivity(0, 1);
+    sum += with.unique ? T(1) : T(0);
+    sum += try_align_vectors(targets, sources).value_or(plain).rssd +
+           try_align_vectors(targets, sources, double_weights).value_or(plain).rssd;
+    const point_alignment<T> points = align_points(targets, sources);
+    const similarity_alignment<T> similar =
+        align_points_with_scale(targets, sources, double_weights);
+    sum += points.rms + points.motion.real.w + similar.scale +
+           align_points(targets, sources, weights).rms;
+    sum += try_align_points(targets, sources).value_or(points).rms +
+           try_align_points(targets, sources, weights).value_or(points).rms +
+           try_align_points_with_scale(targets, sources).value_or(similar).scale +
+           try_align_points_with_scale(targets, sources, double_weights).value_or(similar).scale;
     const std::vector<quaternion<T>> rotations{quaternion<T>::identity(), rotation, -rotation};
     sum += mean(rotations).w + mean(rotations, weights).x;
     sum += try_mean(rotations).value_or(quaternion<T>::identity()).y;

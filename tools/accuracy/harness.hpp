@@ -117,7 +117,7 @@ struct row {
     std::string unit;
     double target;  // quat's target in the unit above; NaN = no target
     std::optional<error_stats> quat, glm, eigen;
-    // A miss explained in the README (a rounding floor, not a defect) is tolerated up to this
+    // A miss explained in docs/accuracy.md (a rounding floor, not a defect) is tolerated up to this
     // ceiling by the exit status; NaN = no miss tolerated.
     double accepted = std::numeric_limits<double>::quiet_NaN();
 

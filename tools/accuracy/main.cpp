@@ -42,7 +42,7 @@ constexpr double target_exp_log = 2;
 constexpr double target_rotate = 4;
 constexpr double target_rotate_direction = 4;  // issue 12: a length fix must not cost direction
 constexpr double target_align = 4;  // rotation_between and look_rotation, angle to the reference
-// Ceilings for the misses the README explains (see the section "Targets missed"):
+// Ceilings for the misses docs/accuracy.md explains (see the section "Targets missed"):
 // Euler angles are three stored angles of magnitude up to pi, each rounded to half an ulp (1 eps in
 // float at pi); an extrapolated slerp turns by up to 2 pi, whose own rounding is 4 eps; normalize
 // rounds three times (sum of squares, sqrt, division).
@@ -288,10 +288,10 @@ int run(const options& opt) {
         }
     }
     if (missed > 0)
-        std::fprintf(
-            stderr,
-            "%d of quat's accuracy targets missed, %d beyond the ceilings the README explains\n",
-            missed, unexplained);
+        std::fprintf(stderr,
+                     "%d of quat's accuracy targets missed, %d beyond the ceilings "
+                     "docs/accuracy.md explains\n",
+                     missed, unexplained);
     return unexplained > 0 ? 1 : 0;
 }
 

@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
-#include <quat/fast_slerp.hpp>
 #include <quat/interpolation.hpp>
+#include <quat/slerp_fast.hpp>
 
 #include "measure.hpp"
 
 namespace accuracy {
 
 /// One member of the family and its documented bounds: rotation angle (rad) and | |r| - 1 |. The
-/// approximations' angle bounds are those of include/quat/fast_slerp.hpp, asserted by
-/// tests/test_fast_slerp.cpp and quoted in the benchmark labels (bench/bench_other.cpp), and their
+/// approximations' angle bounds are those of include/quat/slerp_fast.hpp, asserted by
+/// tests/test_slerp_fast.cpp and quoted in the benchmark labels (bench/bench_other.cpp), and their
 /// lengths are unit to 4 eps (tests/support/tolerance.hpp's unit_norm) except slerp_fast's; the
 /// exact slerp's are issue 7's targets (4 eps angle, 2 eps length, as in main.cpp).
 struct fast_slerp_method {

@@ -4,12 +4,10 @@
 #define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 namespace quat {
-
-template <class T>
-struct quaternion;
 
 #include "isa_namespace.inc"
 namespace detail {
@@ -33,12 +31,21 @@ template <class T, std::size_t N>
     return N;
 }
 
-// The T of a container of quaternion<T>: declared only, for the type of its data.
-template <class T>
-T quaternion_scalar(const quaternion<T>*) noexcept;
-template <class Rotations>
-using quaternion_scalar_t =
-    decltype(detail::quaternion_scalar(detail::data_of(std::declval<const Rotations&>())));
+// The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
+// way quat's container forms name the scalar type of their elements. Not a type for a container of
+// anything else, so a container form whose default template argument uses it drops out of overload
+// resolution. element_scalar is declared only, for the type of its result.
+template <template <class> class Value, class T>
+T element_scalar(const Value<T>*) noexcept;
+template <template <class> class Value, class Container>
+using element_scalar_t =
+    decltype(detail::element_scalar<Value>(detail::data_of(std::declval<const Container&>())));
+
+// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
+template <class In, class Out, class Input, class Output>
+using if_arrays_of = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
 
 }  // namespace detail
 }  // inline namespace isa_...

@@ -57,7 +57,7 @@ template <class T, class Char>
 struct formatter<::quat::alignment<T>, Char>
     : ::quat::detail::value_formatter<::quat::alignment<T>, fmt::formatter<T, Char>> {};
 
-/// Formats alignment_with_sensitivity{quaternion{...}, rssd, unique, rotation_matrix{...}}; the
+/// Formats alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}; the
 /// spec applies to each number.
 template <class T, class Char>
 struct formatter<::quat::alignment_with_sensitivity<T>, Char>

@@ -1,0 +1,234 @@
+// The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
+// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
+// for the fixed text and p.value(component) for each scalar; format_printer, value_formatter and
+// name_formatter adapt the layout to std::format and fmt, whose formatters derive from them. No
+// <ostream> and no <format> here: those are the printers' own.
+#ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
+#define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
+
+#include <cstddef>
+#include <string_view>
+
+#include "../align_vectors.hpp"
+#include "../axis_angle.hpp"
+#include "../dual_quaternion.hpp"
+#include "../euler.hpp"
+#include "../homogeneous_matrix.hpp"
+#include "../quaternion.hpp"
+#include "../rotation_matrix.hpp"
+#include "../screw.hpp"
+#include "../swing_twist.hpp"
+#include "../vec3.hpp"
+
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
+
+// Names in the enumerators' order (sequence and frame count from 0 without gaps).
+inline constexpr std::string_view sequence_names[] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx",
+                                                      "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"};
+inline constexpr std::string_view frame_names[] = {"intrinsic", "extrinsic"};
+
+template <class Enum, std::size_t N>
+[[nodiscard]] constexpr std::string_view name_in(const std::string_view (&names)[N], Enum value,
+                                                 std::string_view unknown) noexcept {
+    const auto index = static_cast<std::size_t>(value);  // a negative value wraps to a huge index
+    return index < N ? names[index] : unknown;
+}
+
+[[nodiscard]] constexpr std::string_view spelling(sequence s) noexcept {
+    return name_in(sequence_names, s, "sequence?");
+}
+
+[[nodiscard]] constexpr std::string_view spelling(frame f) noexcept {
+    return name_in(frame_names, f, "frame?");
+}
+
+// "{a, b, ...}"
+template <class Printer, class T, class... Rest>
+void write_braced(Printer& p, const T& first, const Rest&... rest) {
+    p.text("{");
+    p.value(first);
+    ((p.text(", "), p.value(rest)), ...);
+    p.text("}");
+}
+
+template <class Printer>
+void write_layout(Printer& p, sequence s) {
+    p.text(spelling(s));
+}
+
+template <class Printer>
+void write_layout(Printer& p, frame f) {
+    p.text(spelling(f));
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const vec3<T>& v) {
+    p.text("vec3");
+    write_braced(p, v.x, v.y, v.z);
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const quaternion<T>& q) {
+    p.text("quaternion");
+    write_braced(p, q.w, q.x, q.y, q.z);
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const rotation_matrix<T>& m) {
+    p.text("rotation_matrix{");
+    for (int row = 0; row < 3; ++row) {
+        if (row > 0) p.text(", ");
+        write_braced(p, m(row, 0), m(row, 1), m(row, 2));
+    }
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const axis_angle<T>& rotation) {
+    p.text("axis_angle{");
+    write_layout(p, rotation.axis);
+    p.text(", ");
+    p.value(rotation.angle);
+    p.text("}");
+}
+
+template <class Printer, class T, sequence S, frame F>
+void write_layout(Printer& p, const euler<T, S, F>& e) {
+    p.text("euler<");
+    p.text(spelling(S));
+    p.text(", ");
+    p.text(spelling(F));
+    p.text(">");
+    write_braced(p, e[0], e[1], e[2]);
+}
+
+template <class Printer, class T, sequence S, frame F>
+void write_layout(Printer& p, const euler_extraction<T, S, F>& extraction) {
+    p.text("euler_extraction{");
+    write_layout(p, extraction.angles);
+    p.text(extraction.gimbal_lock ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const alignment<T>& a) {
+    p.text("alignment{");
+    write_layout(p, a.rotation);
+    p.text(", ");
+    p.value(a.rssd);
+    p.text(a.unique ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
+    p.text("alignment_with_sensitivity{");
+    write_layout(p, static_cast<const alignment<T>&>(a));
+    p.text(", ");
+    write_layout(p, a.sensitivity);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const swing_twist_parts<T>& parts) {
+    p.text("swing_twist_parts{");
+    write_layout(p, parts.swing);
+    p.text(", ");
+    write_layout(p, parts.twist);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const dual_quaternion<T>& dq) {
+    p.text("dual_quaternion{");
+    write_layout(p, dq.real);
+    p.text(", ");
+    write_layout(p, dq.dual);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const homogeneous_matrix<T>& m) {
+    p.text("homogeneous_matrix{");
+    for (int row = 0; row < 4; ++row) {
+        if (row > 0) p.text(", ");
+        write_braced(p, m(row, 0), m(row, 1), m(row, 2), m(row, 3));
+    }
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const screw<T>& s) {
+    p.text("screw{");
+    write_layout(p, s.direction);
+    p.text(", ");
+    write_layout(p, s.moment);
+    p.text(", ");
+    p.value(s.angle);
+    p.text(", ");
+    p.value(s.displacement);
+    p.text("}");
+}
+
+// Writes to a std::format or fmt context, each component through Formatter, which parsed the spec.
+template <class Formatter, class Context>
+struct format_printer {
+    const Formatter& component_formatter;
+    Context& context;
+
+    void text(std::string_view ascii) {
+        auto out = context.out();
+        for (char c : ascii) *out++ = static_cast<typename Context::char_type>(c);
+        context.advance_to(out);
+    }
+    template <class T>
+    void value(const T& component) {
+        context.advance_to(component_formatter.format(component, context));
+    }
+};
+
+// The formatter of a quat value type for std::format and fmt: ComponentFormatter, the scalar's own
+// formatter, parses the spec once and formats every component with it.
+template <class Value, class ComponentFormatter>
+struct value_formatter {
+    ComponentFormatter component_formatter;
+
+    template <class ParseContext>
+    constexpr auto parse(ParseContext& context) {
+        return component_formatter.parse(context);
+    }
+    template <class FormatContext>
+    auto format(const Value& value, FormatContext& context) const {
+        format_printer<ComponentFormatter, FormatContext> printer{component_formatter, context};
+        write_layout(printer, value);
+        return context.out();
+    }
+};
+
+// The formatter of sequence and frame: their names through StringFormatter, the formatter of
+// std::basic_string_view<CharT>, so string specs such as width and fill apply.
+template <class Enum, class StringFormatter>
+struct name_formatter {
+    StringFormatter string_formatter;
+
+    template <class ParseContext>
+    constexpr auto parse(ParseContext& context) {
+        return string_formatter.parse(context);
+    }
+    template <class FormatContext>
+    auto format(Enum value, FormatContext& context) const {
+        using CharT = typename FormatContext::char_type;
+        constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
+        const std::string_view ascii = spelling(value);
+        const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
+        CharT name[longest]{};
+        for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
+        return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
+    }
+};
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED

@@ -1,0 +1,175 @@
+// The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
+// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
+// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
+// its shuffles out (interleaved_points_avx.hpp), and float arrays beyond 16 MiB on x86 are written
+// with non-temporal stores (streaming_store.hpp).
+#ifndef QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#define QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+
+#include "../rotation_matrix.hpp"
+#include "../soa.hpp"
+#include "../vec3.hpp"
+#include "interleaved_points_avx.hpp"
+#include "streaming_store.hpp"
+
+namespace quat {
+#include "isa_namespace.inc"
+namespace detail {
+
+// Points per block where a block is computed into a local buffer first: the streaming rotation.
+inline constexpr std::size_t batch_block = 256;
+
+// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
+// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
+
+// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
+// so its results carry no added zero.
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                     vec3<T>* output, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    std::size_t done = 0;
+    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
+    // in AVX builds, the rest (all of it elsewhere) below.
+    if constexpr (std::is_same_v<T, float>) {
+        static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                      "vec3<float> must be three packed floats");
+        if (n >= 8)
+            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
+    }
+    // Point i is read before it is written and no iteration touches another's point, so the
+    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = done; i < n; ++i) {
+        const T x = input[i].x, y = input[i].y, z = input[i].z;
+        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
+          oz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            ox += tx;
+            oy += ty;
+            oz += tz;
+        }
+        output[i] = vec3<T>{ox, oy, oz};
+    }
+}
+
+// Arrays at least this large (16 MiB of output) are written with non-temporal stores: they do not
+// fit in cache anyway, and a normal store first reads the destination line (read-for-ownership),
+// which costs a third more memory traffic than a copy.
+inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
+
+// Rotates block by block into a local buffer, then streams the buffer to memory. The points are
+// written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
+template <bool Translate>
+void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
+                         const vec3<float>* input, vec3<float>* output,
+                         std::size_t count) noexcept {
+    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                  "vec3<float> must be three packed floats");
+    vec3<float> buffer[batch_block];
+    for (std::size_t start = 0; start < count; start += batch_block) {
+        const std::size_t n = count - start < batch_block ? count - start : batch_block;
+        transform_block<Translate>(m, t, input + start, buffer, n);
+        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
+    }
+    stream_fence();
+}
+
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
+                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    // Each index is read before it is written, so each output array may be its own input array, and
+    // there is no dependence between iterations (the documented aliasing rule): say so to the
+    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = 0; i < n; ++i) {
+        const T px = x[i], py = y[i], pz = z[i];
+        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
+          rz = m20 * px + m21 * py + m22 * pz;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        ox[i] = rx;
+        oy[i] = ry;
+        oz[i] = rz;
+    }
+}
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
+// and of the rigid transform (rigid_batch.hpp).
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                      vec3<T>* output, std::size_t count) noexcept {
+    // Beyond 16 MiB the points go through a buffer and non-temporal stores, in every x86 build. The
+    // evidence differs by machine. Zen 5 (issue 6): streaming won only in AVX-512 builds (4M
+    // points 2.7-3.1 ms against 3.4-3.8 plain; memcpy 2.3-2.5) and lost with SSE2 and AVX2
+    // (3.4-4.1 against 2.2-3.1). The Intel Xeon of issue 16, where 4M points sit in a 480 MiB L3
+    // that memcpy's rep movsb fills without reading the destination: streaming won at every level
+    // (medians of 5: SSE2 5.7 ms against 6.6 plain, AVX2 4.7-4.9 against 5.2-6.0; memcpy 3.7).
+    if constexpr (std::is_same_v<T, float>) {
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_bytes) {
+            transform_streaming<Translate>(m, t, input, output, count);
+            return;
+        }
+    }
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    transform_block<Translate>(m, t, input, output, count);
+}
+
+// The struct-of-arrays loop of rotate and of the rigid transform.
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
+                      soa_points<T> output) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS).
+            float rx[batch_block], ry[batch_block], rz[batch_block];
+            for (std::size_t start = 0; start < input.count; start += batch_block) {
+                const std::size_t n =
+                    input.count - start < batch_block ? input.count - start : batch_block;
+                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
+                                           rx, ry, rz, n);
+                stream_floats(output.x + start, rx, n);
+                stream_floats(output.y + start, ry, n);
+                stream_floats(output.z + start, rz, n);
+            }
+            stream_fence();
+            return;
+        }
+    }
+    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
+                               input.count);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
