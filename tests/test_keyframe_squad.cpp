@@ -24,21 +24,6 @@ using quat::test::eps;
 
 namespace {
 
-// Keyframes q_(i+1) = q_i exp(step_i), |step_i| <= max_angle, with random signs.
-template <class T>
-std::vector<quaternion<T>> random_walk(quat::test::random_rotations& random, std::size_t count,
-                                       double max_angle) {
-    std::vector<quaternion<T>> keyframes{random.unit_quaternion<T>()};
-    while (keyframes.size() < count) {
-        const vec3<T> axis = random.unit_vector<T>();  // one statement each: a fixed order
-        const vec3<T> step = axis * random.uniform<T>(0.0, max_angle);
-        keyframes.push_back(quat::normalize(keyframes.back() * quat::from_rotation_vector(step)));
-    }
-    for (quaternion<T>& q : keyframes)
-        if (random.uniform<double>(0.0, 1.0) < 0.5) q = -q;
-    return keyframes;
-}
-
 // Increasing times from `start`, durations in [shortest, longest).
 template <class T>
 std::vector<T> random_times(quat::test::random_rotations& random, std::size_t count, double start,
@@ -86,7 +71,7 @@ TEMPLATE_TEST_CASE("with evenly spaced times keyframe_squad is squad with squad_
     // are squad_control's, computed by the same operations, and the results are equal.
     for (const double step : {0.5, 0.75}) {
         for (int n = 0; n < 50; ++n) {
-            const std::vector<quaternion<T>> q = random_walk<T>(random, 6, 2.5);
+            const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 6, 2.5);
             std::vector<T> times;
             for (std::size_t i = 0; i < q.size(); ++i) times.push_back(T(2 + step * double(i)));
             for (int k = 0; k < 40; ++k) {
@@ -101,7 +86,7 @@ TEMPLATE_TEST_CASE("with evenly spaced times keyframe_squad is squad with squad_
     // control points is a few eps instead of 0, and the paths agree to a few eps.
     T worst = 0;
     for (int n = 0; n < 50; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 6, 2.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 6, 2.5);
         std::vector<T> times;
         for (std::size_t i = 0; i < q.size(); ++i) times.push_back(T(0.1) * T(i));
         for (int k = 0; k < 40; ++k) {
@@ -120,7 +105,7 @@ TEMPLATE_TEST_CASE("keyframe_squad is each keyframe at its time, exactly", "[key
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 100; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 7, 2.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 7, 2.5);
         const std::vector<T> times = random_times<T>(random, q.size(), -3.0, 0.01, 5.0);
         for (std::size_t i = 0; i < q.size(); ++i)
             CHECK(quat::keyframe_squad(times, q, times[i]) == q[i]);
@@ -185,7 +170,7 @@ TEST_CASE("keyframe_squad's angular velocity is continuous across keyframes at u
     for (int n = 0; n < 20; ++n) {
         const std::vector<L> times{0.0L, 0.1L, 1.1L, 4.1L};
         std::vector<quaternion<L>> q;
-        for (const auto& k : random_walk<double>(random, times.size(), 1.5))
+        for (const auto& k : quat::test::random_walk<double>(random, times.size(), 1.5))
             q.push_back(quat::normalize(quaternion<L>(k)));  // unit in long double
         check(times, q);
     }
@@ -194,7 +179,7 @@ TEST_CASE("keyframe_squad's angular velocity is continuous across keyframes at u
     for (int n = 0; n < 50; ++n) {
         const std::vector<L> times = random_times<L>(random, 6, 0.0, 0.01, 10.0);
         std::vector<quaternion<L>> q;
-        for (const auto& k : random_walk<double>(random, times.size(), 2.5))
+        for (const auto& k : quat::test::random_walk<double>(random, times.size(), 2.5))
             q.push_back(quat::normalize(quaternion<L>(k)));  // unit in long double
         check(times, q);
     }
@@ -206,7 +191,7 @@ TEMPLATE_TEST_CASE("keyframe_squad holds the end keyframes outside the times", "
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 50; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 5, 1.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 5, 1.5);
         const std::vector<T> times = random_times<T>(random, q.size(), 1.0, 0.1, 3.0);
         const T first = times.front(), last = times.back(),
                 infinity = std::numeric_limits<T>::infinity();
@@ -222,7 +207,7 @@ TEMPLATE_TEST_CASE("keyframe_squad of two keyframes is keyframe_slerp; of one, t
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 100; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 2, 3.0);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 2, 3.0);
         const std::vector<T> times = random_times<T>(random, 2, -1.0, 0.1, 3.0);
         const T t = random.uniform<T>(-2.0, 3.0);
         CHECK(quat::keyframe_squad(times, q, t) == quat::keyframe_slerp(times, q, t));
@@ -240,7 +225,7 @@ TEMPLATE_TEST_CASE("keyframe_squad depends on the rotations, not on quaternion s
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 200; ++n) {
-        std::vector<quaternion<T>> q = random_walk<T>(random, 6, 2.5);
+        std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 6, 2.5);
         const std::vector<T> times = random_times<T>(random, q.size(), 0.0, 0.05, 4.0);
         std::vector<T> ts;
         std::vector<quaternion<T>> path;
@@ -305,7 +290,8 @@ TEST_CASE("keyframe_squad takes times and t of another precision than its rotati
     // float rotations at double times, with a double t: both are converted to float, the
     // rotations' scalar, and the result is the all-float call's.
     quat::test::random_rotations random;
-    const std::vector<quaternion<float>> rotations = random_walk<float>(random, 10, 2.0);
+    const std::vector<quaternion<float>> rotations =
+        quat::test::random_walk<float>(random, 10, 2.0);
     const std::vector<float> times = random_times<float>(random, rotations.size(), 0.0, 0.01, 3.0);
     const std::vector<double> double_times(times.begin(), times.end());
     for (int n = 0; n < 200; ++n) {

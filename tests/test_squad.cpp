@@ -22,21 +22,6 @@ using quat::test::eps;
 
 namespace {
 
-// Keyframes q_(i+1) = q_i exp(step_i), |step_i| <= max_angle, with random signs.
-template <class T>
-std::vector<quaternion<T>> random_walk(quat::test::random_rotations& random, std::size_t count,
-                                       double max_angle) {
-    std::vector<quaternion<T>> keyframes{random.unit_quaternion<T>()};
-    while (keyframes.size() < count) {
-        const vec3<T> axis = random.unit_vector<T>();  // one statement each: a fixed order
-        const vec3<T> step = axis * random.uniform<T>(0.0, max_angle);
-        keyframes.push_back(quat::normalize(keyframes.back() * quat::from_rotation_vector(step)));
-    }
-    for (quaternion<T>& q : keyframes)
-        if (random.uniform<double>(0.0, 1.0) < 0.5) q = -q;
-    return keyframes;
-}
-
 // The squad segment from keyframe i to i + 1, ends handled by repeating the end keyframe.
 template <class T>
 quaternion<T> segment(const std::vector<quaternion<T>>& q, std::size_t i, T t) {
@@ -52,7 +37,7 @@ TEMPLATE_TEST_CASE("squad passes through its keyframes exactly", "[squad]", floa
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 200; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 5, 2.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 5, 2.5);
         for (std::size_t i = 0; i + 1 < q.size(); ++i) {
             CHECK(segment(q, i, T(0)) == q[i]);
             CHECK(quat::angle_between(segment(q, i, T(1)), q[i + 1]) == T(0));
@@ -65,7 +50,7 @@ TEMPLATE_TEST_CASE("squad_control and squad depend on the rotations, not on quat
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 500; ++n) {
-        std::vector<quaternion<T>> q = random_walk<T>(random, 4, 2.5);
+        std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 4, 2.5);
         const T t = random.uniform<T>(0.0, 1.0);
         const quaternion<T> control = quat::squad_control(q[0], q[1], q[2]);
         const quaternion<T> path = segment(q, 1, t);
@@ -92,7 +77,7 @@ TEST_CASE("squad_control is Shoemake's q exp(-(log(q* next) + log(q* previous)) 
         return quaternion<long double>{std::cos(a), v.x * f, v.y * f, v.z * f};
     };
     for (int n = 0; n < 1000; ++n) {
-        std::vector<quaternion<double>> q = random_walk<double>(random, 3, 2.0);
+        std::vector<quaternion<double>> q = quat::test::random_walk<double>(random, 3, 2.0);
         for (std::size_t i = 1; i < 3; ++i)
             if (quat::dot(q[i], q[1]) < 0) q[i] = -q[i];
         if (quat::dot(q[0], q[1]) < 0) q[0] = -q[0];
@@ -114,7 +99,7 @@ TEMPLATE_TEST_CASE(
     quat::test::random_rotations random;
     T worst_squad = 0, worst_slerp = 0, typical_speed = 0;
     for (int n = 0; n < 100; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 6, 1.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 6, 1.5);
         for (std::size_t i = 1; i + 1 < q.size(); ++i) {
             const vec3<T> before = quat::body_angular_velocity(segment(q, i - 1, 1 - h), q[i], h);
             const vec3<T> after = quat::body_angular_velocity(q[i], segment(q, i, h), h);
@@ -137,7 +122,7 @@ TEST_CASE("with uneven spacing squad's angular velocity jumps by the ratio of th
     // over [0, 1] per segment, so the same tangent at keyframe 1 means velocities in the ratio of
     // the two segments' durations when they take 1 s and 3 s.
     quat::test::random_rotations random;
-    const std::vector<quaternion<double>> q = random_walk<double>(random, 4, 1.0);
+    const std::vector<quaternion<double>> q = quat::test::random_walk<double>(random, 4, 1.0);
     const double h = 1e-6, first = 1.0, second = 3.0;
     const vec3<double> before = quat::body_angular_velocity(segment(q, 0, 1 - h), q[1], h * first);
     const vec3<double> after = quat::body_angular_velocity(q[1], segment(q, 1, h), h * second);
@@ -149,7 +134,7 @@ TEMPLATE_TEST_CASE("squad agrees with GLM's squad and intermediate on keyframes 
     using T = TestType;
     quat::test::random_rotations random;
     for (int n = 0; n < 1000; ++n) {
-        std::vector<quaternion<T>> q = random_walk<T>(random, 4, 1.5);
+        std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 4, 1.5);
         for (std::size_t i = 1; i < q.size(); ++i)
             if (quat::dot(q[i - 1], q[i]) < 0) q[i] = -q[i];
         const T t = random.uniform<T>(0.0, 1.0);
@@ -217,7 +202,7 @@ TEST_CASE("GLM's squad(q1, q2, s1, s2, h) is quat's squad(q1, s1, s2, q2, h)", "
     quat::test::random_rotations random;
     double glm_order_worst = 0;
     for (int n = 0; n < 100; ++n) {
-        std::vector<quaternion<double>> q = random_walk<double>(random, 4, 1.5);
+        std::vector<quaternion<double>> q = quat::test::random_walk<double>(random, 4, 1.5);
         for (std::size_t i = 1; i < q.size(); ++i)
             if (quat::dot(q[i - 1], q[i]) < 0) q[i] = -q[i];
         const quaternion<double> a1 = quat::squad_control(q[0], q[1], q[2]);
@@ -239,7 +224,7 @@ TEMPLATE_TEST_CASE("squad takes t of another precision than its quaternions", "[
     // quaternions' scalar, as slerp's does.
     quat::test::random_rotations random;
     for (int n = 0; n < 100; ++n) {
-        const std::vector<quaternion<T>> q = random_walk<T>(random, 4, 1.5);
+        const std::vector<quaternion<T>> q = quat::test::random_walk<T>(random, 4, 1.5);
         const quaternion<T> a1 = quat::squad_control(q[0], q[1], q[2]);
         const quaternion<T> a2 = quat::squad_control(q[1], q[2], q[3]);
         const double t = random.uniform<double>(0.0, 1.0);

@@ -86,22 +86,32 @@ template <class Targets, class Sources, class Weights,
     return solution.result;
 }
 
+namespace detail {
+
+/// The alignment of count pairs, or std::nullopt where it is NaN or its rssd overflows.
+template <class T, class Weight>
+[[nodiscard]] constexpr std::optional<alignment<T>> checked_alignment(const vec3<T>* targets,
+                                                                      const vec3<T>* sources,
+                                                                      std::size_t count,
+                                                                      Weight weight) noexcept {
+    const alignment<T> result = solve_wahba<T>(targets, sources, count, weight).result;
+    if (!is_finite(result.rotation.w) || !is_finite(result.rssd)) return std::nullopt;
+    return result;
+}
+
+}  // namespace detail
+
 /// align_vectors(targets, sources), or std::nullopt for input it does not align: no pairs,
 /// containers of different sizes, a NaN or infinite component, or an rssd beyond max() (vectors
-/// near max() that stay apart). A set that fits other rotations as well is not bad input: it gives an alignment with unique = false, as align_vectors does.
-/// Never asserts.
+/// near max() that stay apart). A set that fits other rotations as well is not bad input: it gives
+/// an alignment with unique = false, as align_vectors does. Never asserts.
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
     const Targets& targets, const Sources& sources) noexcept {
     const std::size_t count = detail::size_of(sources);
     if (count == 0 || detail::size_of(targets) != count) return std::nullopt;
-    const alignment<T> result =
-        detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources), count,
-                               [](std::size_t) { return T(1); })
-            .result;
-    if (!detail::is_finite(result.rotation.w) || !detail::is_finite(result.rssd))
-        return std::nullopt;
-    return result;
+    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
+                                        [](std::size_t) { return T(1); });
 }
 
 /// align_vectors(targets, sources, weights), or std::nullopt as try_align_vectors(targets, sources)
@@ -122,13 +132,8 @@ template <class Targets, class Sources, class Weights,
         positive = positive || wi > T(0);
     }
     if (!positive) return std::nullopt;
-    const alignment<T> result =
-        detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources), count,
-                               [w](std::size_t i) { return static_cast<T>(w[i]); })
-            .result;
-    if (!detail::is_finite(result.rotation.w) || !detail::is_finite(result.rssd))
-        return std::nullopt;
-    return result;
+    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
+                                        [w](std::size_t i) { return static_cast<T>(w[i]); });
 }
 
 /// align_vectors(targets, sources, weights) and scipy's sensitivity matrix: mean(weights) / zeta

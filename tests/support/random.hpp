@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include <quat/quat.hpp>
 
@@ -61,6 +63,21 @@ private:
     std::mt19937_64 engine_;
     std::normal_distribution<double> gauss_;
 };
+
+/// Keyframes q_(i+1) = q_i exp(step_i), |step_i| <= max_angle, with random signs.
+template <class T>
+std::vector<quaternion<T>> random_walk(random_rotations& random, std::size_t count,
+                                       double max_angle) {
+    std::vector<quaternion<T>> keyframes{random.unit_quaternion<T>()};
+    while (keyframes.size() < count) {
+        const vec3<T> axis = random.unit_vector<T>();  // one statement each: a fixed order
+        const vec3<T> step = axis * random.uniform<T>(0.0, max_angle);
+        keyframes.push_back(normalize(keyframes.back() * from_rotation_vector(step)));
+    }
+    for (quaternion<T>& q : keyframes)
+        if (random.uniform<double>(0.0, 1.0) < 0.5) q = -q;
+    return keyframes;
+}
 
 /// Largest absolute element difference of two 3x3 matrices.
 template <class T>
