@@ -7,8 +7,8 @@
 #include <limits>
 #include <vector>
 
-// g++ 12 at -O3 reports a false -Warray-bounds inside Eigen::umeyama, whose packet loads of its
-// 3-vector means it cannot see are guarded; the reference is Eigen's code, not quat's.
+// g++ 12 at -O3 reports a false -Warray-bounds (and, with AVX-512, -Wmaybe-uninitialized) inside
+// Eigen::umeyama's packet loads of its 3-vector means; the reference is Eigen's code, not quat's.
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"

@@ -1,6 +1,5 @@
 // Specification of conversions.hpp: quaternion <-> matrix <-> axis-angle <-> rotation vector.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -9,6 +8,7 @@
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
+#include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
 using quat::axis_angle;
@@ -269,9 +269,7 @@ TEMPLATE_TEST_CASE("to_mrp and from_mrp are inverse on rotations", "[conversions
 TEMPLATE_TEST_CASE("angle(q) and axis(q) are to_axis_angle(q).angle and .axis, bit for bit",
                    "[conversions][first-use]", float, double) {
     using T = TestType;
-    const auto same_bits = [](const auto& a, const auto& b) {
-        return std::memcmp(&a, &b, sizeof a) == 0;
-    };
+    using quat::test::same_bits;
     quat::test::random_rotations random;
     for (int n = 0; n < 5000; ++n) {
         // Any scale and either sign: the range is [0, pi], q and -q alike.

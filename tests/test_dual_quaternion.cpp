@@ -1,7 +1,6 @@
 // Specification of dual_quaternion.hpp: dual quaternions as rigid motions x -> R x + t, checked
 // against 4x4 matrices in long double (tests/support/rigid_reference.hpp) and GLM's tdualquat.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -15,6 +14,7 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/rigid_reference.hpp"
+#include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
 using quat::dual_quaternion;
@@ -35,11 +35,7 @@ vec3<long double> reference_transform(const dual_quaternion<T>& dq, const vec3<T
             m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3]};
 }
 
-/// True when a and b hold the same bits: the same operations, not merely equal values.
-template <class V>
-bool same_bits(const V& a, const V& b) {
-    return std::memcmp(&a, &b, sizeof(V)) == 0;
-}
+using quat::test::same_bits;
 
 template <class T>
 long double difference(const vec3<T>& a, const vec3<long double>& b) {

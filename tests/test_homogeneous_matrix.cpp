@@ -1,7 +1,6 @@
 // Specification of homogeneous_matrix.hpp: 4x4 rigid motions on column vectors (x, y, z, 1), their
 // products, and conversions to and from dual quaternions, against long double matrices and GLM.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -14,6 +13,7 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/rigid_reference.hpp"
+#include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
 using quat::dual_quaternion;
@@ -25,11 +25,7 @@ using quat::test::max_difference;
 
 namespace {
 
-/// True when a and b hold the same bits: the same operations, not merely equal values.
-template <class V>
-bool same_bits(const V& a, const V& b) {
-    return std::memcmp(&a, &b, sizeof(V)) == 0;
-}
+using quat::test::same_bits;
 
 }  // namespace
 

@@ -1,6 +1,5 @@
 // Specification of quaternion.hpp: Hamilton's algebra and rotating vectors with it.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -10,6 +9,7 @@
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
+#include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
 using quat::quatd;
@@ -19,11 +19,7 @@ using quat::vec3;
 namespace {
 constexpr quatd one{1, 0, 0, 0}, i{0, 1, 0, 0}, j{0, 0, 1, 0}, k{0, 0, 0, 1};
 
-/// True when a and b hold the same bits: the same operations, not merely equal values.
-template <class V>
-bool same_bits(const V& a, const V& b) {
-    return std::memcmp(&a, &b, sizeof(V)) == 0;
-}
+using quat::test::same_bits;
 }  // namespace
 
 static_assert(std::is_trivially_default_constructible_v<quatd>, "a plain struct");

@@ -1,6 +1,5 @@
 // Specification of rotation_matrix.hpp: 3x3 matrices acting on column vectors.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <type_traits>
@@ -9,6 +8,7 @@
 #include <quat/rotation_matrix.hpp>
 
 #include "support/catch.hpp"
+#include "support/same_bits.hpp"
 
 using matrix = quat::rotation_matrix<double>;
 using quat::vec3;
@@ -66,7 +66,7 @@ TEST_CASE("m * v is rotate(m, v), bit for bit, and Eigen's Matrix3 * Vector3",
             for (int j = 0; j < 3; ++j) e(i, j) = m(i, j) = gauss(engine);
         const vec3<double> v{gauss(engine), gauss(engine), gauss(engine)};
         const vec3<double> product = m * v, long_form = quat::rotate(m, v);
-        CHECK(std::memcmp(&product, &long_form, sizeof product) == 0);
+        CHECK(quat::test::same_bits(product, long_form));
         const Eigen::Vector3d reference = e * Eigen::Vector3d(v.x, v.y, v.z);
         const double bound = 4 * std::numeric_limits<double>::epsilon() * 10;
         CHECK(std::abs(product.x - reference.x()) <= bound);
