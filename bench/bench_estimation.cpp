@@ -56,9 +56,10 @@ void align_vectors(benchmark::State& state, std::size_t n) {
 }
 
 // The rigid motion of n noisy point pairs: quat's align_points, or Eigen::umeyama on the same
-// points held as 3 x n matrices (built once, outside the timing).
+// points held as 3 x n matrices (built once, outside the timing), or only the sums of both point
+// sets (read_input: one read of the input).
 template <class T>
-void align_points(benchmark::State& state, std::size_t n, bool eigen) {
+void align_points(benchmark::State& state, std::size_t n, bool eigen, bool read_only = false) {
     random_source random;
     vector_set<T> set = make_vector_set<T>(random, n);
     for (quat::vec3<T>& target : set.targets) target += quat::vec3<T>{T(1), T(2), T(3)};
@@ -69,7 +70,15 @@ void align_points(benchmark::State& state, std::size_t n, bool eigen) {
         targets.col(c) << set.targets[i].x, set.targets[i].y, set.targets[i].z;
     }
     for (auto _ : state) {
-        if (eigen) {
+        if (read_only) {  // the centroids' sums: what every method reads once
+            quat::vec3<T> target_sum{}, source_sum{};
+            for (std::size_t i = 0; i < n; ++i) {
+                target_sum += set.targets[i];
+                source_sum += set.sources[i];
+            }
+            benchmark::DoNotOptimize(target_sum);
+            benchmark::DoNotOptimize(source_sum);
+        } else if (eigen) {
             const Eigen::Matrix<T, 4, 4> result = Eigen::umeyama(sources, targets, false);
             benchmark::DoNotOptimize(result);
         } else {
@@ -184,6 +193,9 @@ void register_estimation_for() {
         benchmark::RegisterBenchmark(
             name("align_points", "eigen", "vec3", type, size).c_str(),
             [n](benchmark::State& state) { align_points<T>(state, n, true); });
+        benchmark::RegisterBenchmark(
+            name("align_points", "read_input", "vec3", type, size).c_str(),
+            [n](benchmark::State& state) { align_points<T>(state, n, false, true); });
     }
     benchmark::RegisterBenchmark(name("eigen_solve", "quat", "4x4", type).c_str(), eigen_solve<T>);
     benchmark::RegisterBenchmark(name("mean", "quat", "quaternion", type, 1024).c_str(),

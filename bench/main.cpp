@@ -185,6 +185,19 @@ void print_targets(const std::vector<measurement>& all) {
     target("slerp_fast corrected_nlerp (<= 1e-3 rad): glm slerp / quat",
            ratio(glm_slerp, find(all, "slerp_fast/quat/corrected_nlerp/float")), 5.0, true);
 
+    // Point-set registration (issue 26): Eigen's umeyama on the same points, and one read of them.
+    for (const char* n : {"4", "64", "4096"}) {
+        const std::string size = n;
+        target("align_points " + size + ": eigen umeyama / quat",
+               ratio(find(all, "align_points/eigen/vec3/float/" + size),
+                     find(all, "align_points/quat/vec3/float/" + size)),
+               1.0, true);
+    }
+    target("align_points 4096: quat / read_input",
+           ratio(find(all, "align_points/quat/vec3/float/4096"),
+                 find(all, "align_points/read_input/vec3/float/4096")),
+           2.0, false);
+
     // Rigid motions. The memcpy floor is rotate_batch's: it copies the same 24 bytes per point.
     const double copy = find(all, "rotate_batch/memcpy/bytes/float/4194304");
     const double copy_small = find(all, "rotate_batch/memcpy/bytes/float/1024");

@@ -345,6 +345,26 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     check_same(blend(bones, std::vector<R>{r(0.3), r(0.7)}).dual,
                blend(bones_d, std::vector<double>{0.3, 0.7}).dual);
     check_same(compose(bones).dual, compose(bones_d).dual);
+    // Registration and hand-eye calibration (issue 26).
+    const std::vector<vec3<R>> cloud{from, to, cross(from, to), vec3<R>{r(0.2), r(0.4), r(-1)}};
+    const std::vector<vec3<double>> cloud_d{from_d, to_d, cross(from_d, to_d), {0.2, 0.4, -1}};
+    std::vector<vec3<R>> moved;
+    std::vector<vec3<double>> moved_d;
+    for (const vec3<R>& p : cloud) moved.push_back(transform(da, p) + p * r(0.01));
+    for (const vec3<double>& p : cloud_d) moved_d.push_back(transform(dad, p) + p * 0.01);
+    check_same(align_points(moved, cloud).motion.dual, align_points(moved_d, cloud_d).motion.dual);
+    CHECK(same(align_points_with_scale(moved, cloud, std::vector<R>{r(1), r(2), r(1), r(3)}).scale,
+               align_points_with_scale(moved_d, cloud_d, std::vector<double>{1, 2, 1, 3}).scale));
+    const std::vector<dual_quaternion<R>> hand{da, db, da * db};
+    const std::vector<dual_quaterniond> hand_d{dad, dbd, dad * dbd};
+    const dual_quaternion<R> mount = normalize(sclerp(da, db, r(0.4)));
+    const dual_quaterniond mount_d = normalize(sclerp(dad, dbd, 0.4));
+    std::vector<dual_quaternion<R>> eye;
+    std::vector<dual_quaterniond> eye_d;
+    for (const dual_quaternion<R>& h : hand) eye.push_back(inverse(mount) * h * mount);
+    for (const dual_quaterniond& h : hand_d) eye_d.push_back(inverse(mount_d) * h * mount_d);
+    check_same(hand_eye(hand, eye).mount.dual, hand_eye(hand_d, eye_d).mount.dual);
+    check_same(try_hand_eye(hand, eye)->mount.real, try_hand_eye(hand_d, eye_d)->mount.real);
     transform(da, points, rotated);
     CHECK(same(rotated[1].x, transform(dad, vd).x));
 }

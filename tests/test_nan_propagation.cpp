@@ -14,6 +14,7 @@
 namespace {
 
 using quat::axis_angle;
+using quat::dual_quaternion;
 using quat::quaternion;
 using quat::rotation_matrix;
 using quat::sequence;
@@ -231,6 +232,26 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
                 .rssd));
         CHECK(bad(quat::align_vectors_with_sensitivity(targets, sources, std::vector<T>{T(1), T(1)})
                       .rotation));
+
+        // align_points.hpp
+        const std::vector<vec3<T>> cloud{in.good_vector, vec3<T>{T(1), T(0), T(0)},
+                                         vec3<T>{T(0), T(0), T(2)}};
+        const std::vector<vec3<T>> bad_cloud{v, vec3<T>{T(0), T(1), T(0)},
+                                             vec3<T>{T(0), T(0), T(1)}};
+        const auto registered = quat::align_points(bad_cloud, cloud);
+        CHECK((bad(registered.motion.real) && bad(registered.motion.dual) &&
+               bad(registered.rms) && !registered.unique));
+        CHECK(bad(quat::align_points_with_scale(cloud, bad_cloud).scale));
+        CHECK_FALSE(quat::try_align_points(cloud, bad_cloud).has_value());
+
+        // hand_eye.hpp
+        const dual_quaternion<T> hand_motion = quat::to_dual_quaternion(other, in.good_vector);
+        const std::vector<dual_quaternion<T>> hands{hand_motion, hand_motion * hand_motion};
+        const std::vector<dual_quaternion<T>> eyes{quat::to_dual_quaternion(other, v), hand_motion};
+        const auto calibrated = quat::hand_eye(hands, eyes);
+        CHECK((bad(calibrated.mount.real) && bad(calibrated.mount.dual) &&
+               bad(calibrated.rotation_rms) && !calibrated.unique));
+        CHECK_FALSE(quat::try_hand_eye(hands, eyes).has_value());
 
         // mean.hpp
         const std::vector<quaternion<T>> cluster{unit, other, q};

@@ -69,6 +69,85 @@ template <class T, class Point, class Weight>
     return mean + correction;
 }
 
+/// The registration in three passes, for data whose sizes lie where Wahba's plain path needs them
+/// (as align_vectors' solver tests them): the weighted sums; then B of the points less that first
+/// mean, with the remainders that correct the mean (B = sum w a b^T - dt ds^T / W for the
+/// remainders' sums dt, ds, exactly the B of the corrected centroids); then the residuals. The
+/// scale is trace(R^T B) / sum w |b|^2. Empty where the data need the careful path (a NaN,
+/// infinite, negative or all-zero weight, non-finite values, sizes out of range).
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr std::optional<similarity_alignment<T>> plain_registration(
+    Target target, Source source, std::size_t count, Weight weight, bool scaled) noexcept {
+    T total(0), lowest(0), heaviest(0), check(0);
+    vec3<T> target_sum{T(0), T(0), T(0)}, source_sum{T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = weight(i);
+        const vec3<T> a = target(i), b = source(i);
+        total += w;
+        target_sum += a * w;
+        source_sum += b * w;
+        // 0 while every value is finite; NaN (or an overflow's infinity) otherwise.
+        check += (a.x + a.y + a.z + b.x + b.y + b.z + w) * T(0);
+        lowest = lowest < w ? lowest : w;
+        heaviest = heaviest > w ? heaviest : w;
+    }
+    if (!(check == T(0)) || !(lowest >= T(0)) || !(total > T(0)) || !is_finite(total) ||
+        scale_of(heaviest) != T(1))
+        return std::nullopt;
+    const vec3<T> mean_target = target_sum / total, mean_source = source_sum / total;
+    T b[3][3] = {};
+    vec3<T> target_rest{T(0), T(0), T(0)}, source_rest{T(0), T(0), T(0)};
+    T spread(0), target_size(0), source_size(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = weight(i);
+        const vec3<T> a = target(i) - mean_target, b_i = source(i) - mean_source;
+        const vec3<T> wa = a * w;
+        const T wa_r[3] = {wa.x, wa.y, wa.z}, b_c[3] = {b_i.x, b_i.y, b_i.z};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) b[r][c] += wa_r[r] * b_c[c];
+        target_rest += wa;
+        source_rest += b_i * w;
+        spread += w * dot(b_i, b_i);
+        target_size = max(target_size, largest_magnitude(a));
+        source_size = max(source_size, largest_magnitude(b_i));
+    }
+    const T rest_t[3] = {target_rest.x, target_rest.y, target_rest.z};
+    const T rest_s[3] = {source_rest.x, source_rest.y, source_rest.z};
+    bool finite = is_finite(spread);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            b[r][c] -= rest_t[r] * rest_s[c] / total;
+            finite = finite && is_finite(b[r][c]);
+        }
+    if (!finite || scale_of(target_size) != T(1) || scale_of(source_size) != T(1))
+        return std::nullopt;
+    spread -= dot(source_rest, source_rest) / total;
+    const vec3<T> ct = mean_target + target_rest / total, cs = mean_source + source_rest / total;
+    const auto centred_target = [&](std::size_t i) { return target(i) - ct; };
+    const auto centred_source = [&](std::size_t i) { return source(i) - cs; };
+    const alignment<T> fit = rotation_of_profile(b, count, centred_target, centred_source, weight);
+    const rotation_matrix<T> m = to_matrix(fit.rotation);
+    T scale(1);
+    bool determined = true;
+    if (scaled) {
+        T along(0);  // trace(R^T B)
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) along += m(r, c) * b[r][c];
+        determined = along > T(0) && spread > T(0);
+        scale = determined ? along / spread : T(1);
+    }
+    T squares(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const vec3<T> residual = centred_target(i) - rotate(m, centred_source(i)) * scale;
+        squares += weight(i) * dot(residual, residual);
+    }
+    if (!is_finite(squares)) return std::nullopt;
+    const vec3<T> translation = ct - rotate(m, cs) * scale;
+    return similarity_alignment<T>{{to_dual_quaternion(fit.rotation, translation),
+                                    sqrt(squares / total), fit.unique && determined},
+                                   scale};
+}
+
 /// The registration of point sets: the centroids, the rotation of the centred points (Wahba's
 /// problem), then the scale (Umeyama's trace(R^T B) / sum w |s_i - cs|^2, or 1) and the residual.
 template <class T, class Target, class Source, class Weight>
@@ -76,6 +155,8 @@ template <class T, class Target, class Source, class Weight>
                                                                    std::size_t count,
                                                                    Weight raw_weight,
                                                                    bool scaled) noexcept {
+    if (const auto plain = plain_registration<T>(target, source, count, raw_weight, scaled))
+        return *plain;
     T largest(0);
     bool finite = true;
     for (std::size_t i = 0; i < count; ++i) {

@@ -34,6 +34,7 @@
 #include "dual_quaternion.hpp"
 #include "elementwise.hpp"
 #include "euler.hpp"
+#include "hand_eye.hpp"
 #include "homogeneous_matrix.hpp"
 #include "interpolation.hpp"
 #include "keyframe_slerp.hpp"

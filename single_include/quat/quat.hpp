@@ -2156,9 +2156,9 @@ using if_arrays_of = std::enable_if_t<
 #include <optional>
 
 // ---- begin quat/detail/symmetric_eigen.hpp ----
-// Eigenvalues and eigenvectors of a symmetric 4x4 matrix: the one solver behind nearest_rotation,
-// align_vectors and mean, whose answers are eigenvectors of such a matrix read as quaternions; and
-// the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
+// Eigenvalues and eigenvectors of a symmetric N x N matrix: the one solver behind nearest_rotation,
+// align_vectors and mean, whose answers are eigenvectors of a 4x4 read as quaternions, and
+// hand_eye's 8x8; and the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
 #ifndef QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 #define QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 
@@ -2199,60 +2199,59 @@ namespace detail {
 inline constexpr std::size_t summation_block = 256;
 
 // Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
-// sweeps), each with its unit eigenvector; components w, x, y, z are rows 0 to 3 of the matrix.
-template <class T>
-struct symmetric_eigen4 {
-    T values[4];
-    quaternion<T> vectors[4];
+// sweeps), each with its unit eigenvector: vectors[n] belongs to values[n].
+template <std::size_t N, class T>
+struct symmetric_eigen_n {
+    T values[N];
+    T vectors[N][N];
 };
 
 // Cyclic Jacobi rotations (Golub & Van Loan, Matrix Computations, 8.5): unconditionally
-// convergent, quadratically at the end, a handful of sweeps for a 4x4; each eigenvalue comes out
-// within a few eps of the matrix's norm. Expects finite elements of moderate size (callers scale
-// so the largest is about 1: the sums of squares below would overflow near sqrt(max)); a
+// convergent, quadratically at the end, a handful of sweeps for N up to 8; each eigenvalue comes
+// out within a few eps of the matrix's norm. Expects finite elements of moderate size (callers
+// scale so the largest is about 1: the sums of squares below would overflow near sqrt(max)); a
 // non-finite element gives NaN values and vectors.
-template <class T>
-[[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
-    const T nan = detail::quiet_nan<T>();
-    T k[4][4] = {};
-    for (int p = 0; p < 4; ++p)
-        for (int q = 0; q < 4; ++q) {
-            if (!detail::is_finite(matrix[p][q]))
-                return {{nan, nan, nan, nan},
-                        {{nan, nan, nan, nan},
-                         {nan, nan, nan, nan},
-                         {nan, nan, nan, nan},
-                         {nan, nan, nan, nan}}};
+template <std::size_t N, class T>
+[[nodiscard]] constexpr symmetric_eigen_n<N, T> jacobi_eigen(const T (&matrix)[N][N]) noexcept {
+    symmetric_eigen_n<N, T> result{};
+    T k[N][N] = {}, v[N][N] = {};
+    for (std::size_t p = 0; p < N; ++p)
+        for (std::size_t q = 0; q < N; ++q) {
+            if (!detail::is_finite(matrix[p][q])) {
+                const T nan = detail::quiet_nan<T>();
+                for (std::size_t i = 0; i < N; ++i) {
+                    result.values[i] = nan;
+                    for (std::size_t j = 0; j < N; ++j) result.vectors[i][j] = nan;
+                }
+                return result;
+            }
             k[p][q] = matrix[p][q];
+            v[p][q] = p == q ? T(1) : T(0);
         }
-    T v[4][4] = {{T(1), T(0), T(0), T(0)},
-                 {T(0), T(1), T(0), T(0)},
-                 {T(0), T(0), T(1), T(0)},
-                 {T(0), T(0), T(0), T(1)}};
-    for (int sweep = 0; sweep < 32; ++sweep) {
+    for (std::size_t sweep = 0; sweep < 32; ++sweep) {
         T off = T(0), total = T(0);
-        for (int p = 0; p < 4; ++p)
-            for (int q = 0; q < 4; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
+        for (std::size_t p = 0; p < N; ++p)
+            for (std::size_t q = 0; q < N; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
         if (!(off > detail::epsilon<T>() * detail::epsilon<T>() * total)) break;
-        for (int p = 0; p < 3; ++p)
-            for (int q = p + 1; q < 4; ++q) {
+        for (std::size_t p = 0; p < N - 1; ++p)
+            for (std::size_t q = p + 1; q < N; ++q) {
                 if (k[p][q] == T(0)) continue;
                 // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
                 const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
                 const T t = (theta < T(0) ? T(-1) : T(1)) /
                             (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
                 const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
-                for (int r = 0; r < 4; ++r) {  // k <- k J
+                for (std::size_t r = 0; r < N; ++r) {  // k <- k J
                     const T kp = k[r][p], kq = k[r][q];
                     k[r][p] = c * kp - s * kq;
                     k[r][q] = s * kp + c * kq;
                 }
-                for (int r = 0; r < 4; ++r) {  // k <- J^T k
+                for (std::size_t r = 0; r < N; ++r) {  // k <- J^T k
                     const T kp = k[p][r], kq = k[q][r];
                     k[p][r] = c * kp - s * kq;
                     k[q][r] = s * kp + c * kq;
                 }
-                for (int r = 0; r < 4; ++r) {  // v <- v J: columns are the eigenvectors
+                for (std::size_t r = 0; r < N; ++r) {  // v <- v J: columns are the eigenvectors
                     const T vp = v[r][p], vq = v[r][q];
                     v[r][p] = c * vp - s * vq;
                     v[r][q] = s * vp + c * vq;
@@ -2260,18 +2259,39 @@ template <class T>
             }
     }
     // Insertion sort, descending; a strict comparison keeps equal eigenvalues in diagonal order.
-    int order[4] = {0, 1, 2, 3};
-    for (int i = 1; i < 4; ++i)
-        for (int j = i; j > 0 && k[order[j]][order[j]] > k[order[j - 1]][order[j - 1]]; --j) {
-            const int swapped = order[j];
+    std::size_t order[N] = {};
+    for (std::size_t i = 0; i < N; ++i) order[i] = i;
+    for (std::size_t i = 1; i < N; ++i)
+        for (std::size_t j = i; j > 0 && k[order[j]][order[j]] > k[order[j - 1]][order[j - 1]];
+             --j) {
+            const std::size_t swapped = order[j];
             order[j] = order[j - 1];
             order[j - 1] = swapped;
         }
-    symmetric_eigen4<T> result{};
-    for (int n = 0; n < 4; ++n) {
-        const int column = order[n];
+    for (std::size_t n = 0; n < N; ++n) {
+        const std::size_t column = order[n];
         result.values[n] = k[column][column];
-        result.vectors[n] = {v[0][column], v[1][column], v[2][column], v[3][column]};
+        for (std::size_t r = 0; r < N; ++r) result.vectors[n][r] = v[r][column];
+    }
+    return result;
+}
+
+// Eigenvalues in descending order, each with its unit eigenvector read as a quaternion
+// (components w, x, y, z are rows 0 to 3 of the matrix).
+template <class T>
+struct symmetric_eigen4 {
+    T values[4];
+    quaternion<T> vectors[4];
+};
+
+// jacobi_eigen of a 4x4, the eigenvectors as quaternions.
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
+    const symmetric_eigen_n<4, T> e = jacobi_eigen<4>(matrix);
+    symmetric_eigen4<T> result{};
+    for (std::size_t n = 0; n < 4; ++n) {
+        result.values[n] = e.values[n];
+        result.vectors[n] = {e.vectors[n][0], e.vectors[n][1], e.vectors[n][2], e.vectors[n][3]};
     }
     return result;
 }
@@ -3371,6 +3391,85 @@ template <class T, class Point, class Weight>
     return mean + correction;
 }
 
+/// The registration in three passes, for data whose sizes lie where Wahba's plain path needs them
+/// (as align_vectors' solver tests them): the weighted sums; then B of the points less that first
+/// mean, with the remainders that correct the mean (B = sum w a b^T - dt ds^T / W for the
+/// remainders' sums dt, ds, exactly the B of the corrected centroids); then the residuals. The
+/// scale is trace(R^T B) / sum w |b|^2. Empty where the data need the careful path (a NaN,
+/// infinite, negative or all-zero weight, non-finite values, sizes out of range).
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr std::optional<similarity_alignment<T>> plain_registration(
+    Target target, Source source, std::size_t count, Weight weight, bool scaled) noexcept {
+    T total(0), lowest(0), heaviest(0), check(0);
+    vec3<T> target_sum{T(0), T(0), T(0)}, source_sum{T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = weight(i);
+        const vec3<T> a = target(i), b = source(i);
+        total += w;
+        target_sum += a * w;
+        source_sum += b * w;
+        // 0 while every value is finite; NaN (or an overflow's infinity) otherwise.
+        check += (a.x + a.y + a.z + b.x + b.y + b.z + w) * T(0);
+        lowest = lowest < w ? lowest : w;
+        heaviest = heaviest > w ? heaviest : w;
+    }
+    if (!(check == T(0)) || !(lowest >= T(0)) || !(total > T(0)) || !is_finite(total) ||
+        scale_of(heaviest) != T(1))
+        return std::nullopt;
+    const vec3<T> mean_target = target_sum / total, mean_source = source_sum / total;
+    T b[3][3] = {};
+    vec3<T> target_rest{T(0), T(0), T(0)}, source_rest{T(0), T(0), T(0)};
+    T spread(0), target_size(0), source_size(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = weight(i);
+        const vec3<T> a = target(i) - mean_target, b_i = source(i) - mean_source;
+        const vec3<T> wa = a * w;
+        const T wa_r[3] = {wa.x, wa.y, wa.z}, b_c[3] = {b_i.x, b_i.y, b_i.z};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) b[r][c] += wa_r[r] * b_c[c];
+        target_rest += wa;
+        source_rest += b_i * w;
+        spread += w * dot(b_i, b_i);
+        target_size = max(target_size, largest_magnitude(a));
+        source_size = max(source_size, largest_magnitude(b_i));
+    }
+    const T rest_t[3] = {target_rest.x, target_rest.y, target_rest.z};
+    const T rest_s[3] = {source_rest.x, source_rest.y, source_rest.z};
+    bool finite = is_finite(spread);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            b[r][c] -= rest_t[r] * rest_s[c] / total;
+            finite = finite && is_finite(b[r][c]);
+        }
+    if (!finite || scale_of(target_size) != T(1) || scale_of(source_size) != T(1))
+        return std::nullopt;
+    spread -= dot(source_rest, source_rest) / total;
+    const vec3<T> ct = mean_target + target_rest / total, cs = mean_source + source_rest / total;
+    const auto centred_target = [&](std::size_t i) { return target(i) - ct; };
+    const auto centred_source = [&](std::size_t i) { return source(i) - cs; };
+    const alignment<T> fit = rotation_of_profile(b, count, centred_target, centred_source, weight);
+    const rotation_matrix<T> m = to_matrix(fit.rotation);
+    T scale(1);
+    bool determined = true;
+    if (scaled) {
+        T along(0);  // trace(R^T B)
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) along += m(r, c) * b[r][c];
+        determined = along > T(0) && spread > T(0);
+        scale = determined ? along / spread : T(1);
+    }
+    T squares(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const vec3<T> residual = centred_target(i) - rotate(m, centred_source(i)) * scale;
+        squares += weight(i) * dot(residual, residual);
+    }
+    if (!is_finite(squares)) return std::nullopt;
+    const vec3<T> translation = ct - rotate(m, cs) * scale;
+    return similarity_alignment<T>{{to_dual_quaternion(fit.rotation, translation),
+                                    sqrt(squares / total), fit.unique && determined},
+                                   scale};
+}
+
 /// The registration of point sets: the centroids, the rotation of the centred points (Wahba's
 /// problem), then the scale (Umeyama's trace(R^T B) / sum w |s_i - cs|^2, or 1) and the residual.
 template <class T, class Target, class Source, class Weight>
@@ -3378,6 +3477,8 @@ template <class T, class Target, class Source, class Weight>
                                                                    std::size_t count,
                                                                    Weight raw_weight,
                                                                    bool scaled) noexcept {
+    if (const auto plain = plain_registration<T>(target, source, count, raw_weight, scaled))
+        return *plain;
     T largest(0);
     bool finite = true;
     for (std::size_t i = 0; i < count; ++i) {
@@ -5888,6 +5989,268 @@ void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
 
 #endif  // QUAT_ELEMENTWISE_HPP_INCLUDED
 // ---- end quat/elementwise.hpp ----
+// ---- begin quat/hand_eye.hpp ----
+// Hand-eye calibration: the fixed rigid motion X between a robot's hand (gripper, rig) and a sensor
+// mounted on it (the eye: camera, IMU) from motions measured by both, A_i X = X B_i, by
+// Daniilidis's dual-quaternion method ("Hand-eye calibration using dual quaternions", The
+// International Journal of Robotics Research 18(3), 1999): rotation and translation together, from
+// the null space of one stacked matrix.
+#ifndef QUAT_HAND_EYE_HPP_INCLUDED
+#define QUAT_HAND_EYE_HPP_INCLUDED
+
+#include <cstddef>
+#include <optional>
+
+
+namespace quat {
+
+/// The mount X found by hand_eye, and how well the motions agree with it.
+template <class T>
+struct hand_eye_calibration {
+    /// Unit dual quaternion of X: the sensor's frame in the hand's, x_hand = X x_sensor.
+    dual_quaternion<T> mount;
+    /// sqrt(mean angle(A_i X, X B_i)^2): the rotations' disagreement, radians.
+    T rotation_rms;
+    /// sqrt(mean |translation(A_i X) - translation(X B_i)|^2): the translations' disagreement, in
+    /// the motions' unit of length.
+    T translation_rms;
+    /// False when the motions do not determine X: fewer than two turn (angle above 64 epsilon), or
+    /// all turn about parallel axes (within 64 epsilon radians). X's rotation about that axis is
+    /// then free, and so is its translation along it.
+    bool unique;
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// The rows of Daniilidis's equation for one motion pair, a q = q b with equal scalar parts:
+/// (a - b) q0 + [a + b]x q_vec = 0 for the vector parts a, b; row r of the 3 x 4 block.
+template <class T>
+constexpr void daniilidis_block(const quaternion<T>& a, const quaternion<T>& b,
+                                T (&m)[3][4]) noexcept {
+    const vec3<T> d{a.x - b.x, a.y - b.y, a.z - b.z}, s{a.x + b.x, a.y + b.y, a.z + b.z};
+    const T rows[3][4] = {{d.x, T(0), -s.z, s.y}, {d.y, s.z, T(0), -s.x}, {d.z, -s.y, s.x, T(0)}};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m[r][c] = rows[r][c];
+}
+
+/// True when every component of dq is finite and its real part is a unit quaternion to within
+/// 1/4096 (the library's debug check).
+template <class T>
+[[nodiscard]] constexpr bool is_valid_motion(const dual_quaternion<T>& dq) noexcept {
+    return is_finite(dq.real) && is_finite(dq.dual) && is_near_unit(dq.real);
+}
+
+template <class T, class A, class B>
+[[nodiscard]] constexpr hand_eye_calibration<T> solve_hand_eye(const A* a_motions,
+                                                               const B* b_motions,
+                                                               std::size_t count) noexcept {
+    const T nan = quiet_nan<T>();
+    const quaternion<T> nan_q{nan, nan, nan, nan};
+    if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false};
+    // The translations are divided by the power of two of the longest, so that the dual rows
+    // weigh like the rotation rows (Daniilidis's matrix mixes both) and nothing overflows.
+    T longest(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
+        if (!is_finite(a.real) || !is_finite(a.dual) || !is_finite(b.real) || !is_finite(b.dual))
+            return {{nan_q, nan_q}, nan, nan, false};
+        longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
+    }
+    const T p = longest > T(0) ? binade_of(longest) : T(1);
+
+    // M = sum T_i^T T_i for the 6 x 8 T_i = [[R_i, 0], [D_i, R_i]] acting on (q, q'), where R_i and
+    // D_i are daniilidis_block of the real and the (scaled) dual parts.
+    T m[8][8] = {};
+    std::size_t turning = 0;
+    vec3<T> first_axis{T(0), T(0), T(0)};
+    T first_size(0);
+    bool parallel = true;
+    for (std::size_t i = 0; i < count; ++i) {
+        const dual_quaternion<T> a(a_motions[i]);
+        dual_quaternion<T> b(b_motions[i]);
+        const quaternion<T> ad = a.dual / p;
+        quaternion<T> bd = b.dual / p;
+        // The sign of b that makes the screw parameters equal: a.real.w = b.real.w (the angle)
+        // and a.dual.w = b.dual.w (the slide), which Daniilidis's equations assume.
+        const T same = abs(a.real.w - b.real.w) + abs(ad.w - bd.w);
+        const T flipped = abs(a.real.w + b.real.w) + abs(ad.w + bd.w);
+        if (flipped < same) {
+            b = -b;
+            bd = -bd;
+        }
+        T r[3][4] = {}, d[3][4] = {};
+        daniilidis_block(a.real, b.real, r);
+        daniilidis_block(ad, bd, d);
+        T rows[6][8] = {};
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 4; ++c) {
+                rows[k][c] = r[k][c];
+                rows[3 + k][c] = d[k][c];
+                rows[3 + k][4 + c] = r[k][c];
+            }
+        for (int x = 0; x < 8; ++x)
+            for (int y = x; y < 8; ++y) {
+                T sum(0);
+                for (int k = 0; k < 6; ++k) sum += rows[k][x] * rows[k][y];
+                m[x][y] += sum;
+            }
+        // Which motions turn, and about which axes.
+        const vec3<T> axis{a.real.x, a.real.y, a.real.z};
+        const T size = norm(axis);
+        if (size > T(64) * epsilon<T>()) {
+            ++turning;
+            if (size > first_size) {
+                if (first_size > T(0) &&
+                    norm(cross(axis / size, first_axis)) > T(64) * epsilon<T>())
+                    parallel = false;
+                first_axis = axis / size;
+                first_size = size;
+            } else if (norm(cross(axis / size, first_axis)) > T(64) * epsilon<T>()) {
+                parallel = false;
+            }
+        }
+    }
+    T largest(0);
+    for (int x = 0; x < 8; ++x)
+        for (int y = x; y < 8; ++y) {
+            m[y][x] = m[x][y];
+            largest = max(largest, abs(m[x][y]));
+        }
+    if (largest > T(0))
+        for (int x = 0; x < 8; ++x)
+            for (int y = 0; y < 8; ++y) m[x][y] = m[x][y] / largest;
+    const symmetric_eigen_n<8, T> eigen = jacobi_eigen<8>(m);
+
+    // X = l1 v7 + l2 v8 over the two smallest eigenvectors, v = (u, w) with u the real and w the
+    // dual half, under X's constraints |q| = 1 and q . q' = 0. With (l1, l2) = (cos f, sin f) the
+    // second reads A cos 2f + B sin 2f + C = 0, A = (u1.w1 - u2.w2) / 2, B = (u1.w2 + u2.w1) / 2,
+    // C = (u1.w1 + u2.w2) / 2: two solutions; the one with the larger |q| is X, scaled to |q| = 1.
+    const T(&v7)[8] = eigen.vectors[6];
+    const T(&v8)[8] = eigen.vectors[7];
+    const quaternion<T> u1{v7[0], v7[1], v7[2], v7[3]}, w1{v7[4], v7[5], v7[6], v7[7]};
+    const quaternion<T> u2{v8[0], v8[1], v8[2], v8[3]}, w2{v8[4], v8[5], v8[6], v8[7]};
+    const T ca = (dot(u1, w1) - dot(u2, w2)) / T(2), cb = (dot(u1, w2) + dot(u2, w1)) / T(2),
+            cc = (dot(u1, w1) + dot(u2, w2)) / T(2);
+    const T amplitude = sqrt(ca * ca + cb * cb);
+    const T phase = atan2(cb, ca);
+    // Noise can push |C| / amplitude past 1: the nearest point, where the constraint is met best.
+    T ratio = amplitude > T(0) ? -cc / amplitude : T(1);
+    ratio = ratio > T(1) ? T(1) : (ratio < T(-1) ? T(-1) : ratio);
+    const T spread = atan2(sqrt((T(1) - ratio) * (T(1) + ratio)), ratio);
+    dual_quaternion<T> best{{T(0), T(0), T(0), T(0)}, {T(0), T(0), T(0), T(0)}};
+    T best_size(-1);
+    for (int sign = -1; sign <= 1; sign += 2) {
+        const T f = (phase + T(sign) * spread) / T(2);
+        const T c = cos(f), s = sin(f);
+        const quaternion<T> q = u1 * c + u2 * s;
+        const T size = norm(q);
+        if (size > best_size) {
+            best_size = size;
+            best = {q / size, (w1 * c + w2 * s) / size};
+        }
+    }
+    // The constraint q . q' = 0, met to rounding: remove what noise left along q.
+    best.dual = (best.dual - best.real * dot(best.real, best.dual)) * p;
+    if (best.real.w < T(0)) best = -best;
+
+    T angles(0), offsets(0), n(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        n += T(1);
+        const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
+        const dual_quaternion<T> left = a * best, right = best * b;
+        const T angle = angle_between(left.real, right.real);
+        // Divided by p before squaring, so that huge translations cannot overflow the sum.
+        const vec3<T> offset = (translation_of(left) - translation_of(right)) / p;
+        angles += angle * angle;
+        offsets += dot(offset, offset);
+    }
+    return {best, sqrt(angles / n), sqrt(offsets / n) * p, turning >= 2 && !parallel};
+}
+
+}  // namespace detail
+
+/// The mount X with A_i X = X B_i for every i, in the least-squares sense of Daniilidis's method:
+/// eye-in-hand calibration. motions_a holds the hand's motions and motions_b the sensor's, as unit
+/// dual quaternions (containers of dual_quaternion<T> with data() and size(), equally long, or C
+/// arrays). From absolute poses, the hand's H_j (hand in the robot's base) and the sensor's S_j
+/// (a fixed target in the sensor's frame), pair j -> k gives A = H_k^-1 H_j and B = S_k S_j^-1;
+/// X then maps sensor coordinates into hand coordinates. The sign of each B is chosen to match its
+/// A's screw (equal scalar parts), so either sign may be given. The robot-world form AX = YB is not
+/// solved here. unique is false when fewer than two motions turn or all turn about parallel axes
+/// (then X's rotation about that axis and its translation along it are undetermined, and one of the
+/// solutions is returned). No motions: the identity, residuals 0, not unique. A NaN or infinite
+/// component gives NaN in every component; try_hand_eye checks instead. Precondition: unit real
+/// parts (QUAT_ASSERT).
+template <class MotionsA, class MotionsB,
+          class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
+[[nodiscard]] constexpr hand_eye_calibration<T> hand_eye(const MotionsA& motions_a,
+                                                         const MotionsB& motions_b) noexcept {
+    QUAT_ASSERT(detail::size_of(motions_a) == detail::size_of(motions_b),
+                "quat::hand_eye: the two lists of motions differ in size");
+    const auto* a = detail::data_of(motions_a);
+    const auto* b = detail::data_of(motions_b);
+    const std::size_t count = detail::size_of(motions_a) < detail::size_of(motions_b)
+                                  ? detail::size_of(motions_a)
+                                  : detail::size_of(motions_b);
+    for (std::size_t i = 0; i < count; ++i)  // an empty loop where QUAT_ASSERT compiles to nothing
+        QUAT_ASSERT(detail::is_near_unit(dual_quaternion<T>(a[i]).real) &&
+                        detail::is_near_unit(dual_quaternion<T>(b[i]).real),
+                    "quat::hand_eye: a motion's real part is not a unit quaternion");
+    return detail::solve_hand_eye<T>(a, b, count);
+}
+
+/// hand_eye(motions_a, motions_b), or std::nullopt for motions it cannot calibrate from: lists of
+/// different sizes, fewer than two motions, a NaN or infinite component, or a real part that is not
+/// a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined are not bad
+/// input: they give unique = false. Never asserts.
+template <class MotionsA, class MotionsB,
+          class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
+[[nodiscard]] constexpr std::optional<hand_eye_calibration<T>> try_hand_eye(
+    const MotionsA& motions_a, const MotionsB& motions_b) noexcept {
+    const std::size_t count = detail::size_of(motions_a);
+    if (count < 2 || detail::size_of(motions_b) != count) return std::nullopt;
+    const auto* a = detail::data_of(motions_a);
+    const auto* b = detail::data_of(motions_b);
+    for (std::size_t i = 0; i < count; ++i)
+        if (!detail::is_valid_motion(dual_quaternion<T>(a[i])) ||
+            !detail::is_valid_motion(dual_quaternion<T>(b[i])))
+            return std::nullopt;
+    const hand_eye_calibration<T> result = detail::solve_hand_eye<T>(a, b, count);
+    if (!detail::is_finite(result.mount.real) || !detail::is_finite(result.mount.dual) ||
+        !detail::is_finite(result.rotation_rms) || !detail::is_finite(result.translation_rms))
+        return std::nullopt;
+    return result;
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_HAND_EYE_HPP_INCLUDED
+// ---- end quat/hand_eye.hpp ----
 // ---- begin quat/homogeneous_matrix.hpp ----
 // 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
 // conversions to and from dual quaternions.

@@ -38,6 +38,9 @@ int valid() {
     sink = sink + e[2];
     std::vector<vec3<double>> points(300, v), out(300);
     const std::vector<double> weights(300, 0.5);
+    const std::vector<quat::dual_quaterniond> motions{
+        quat::to_dual_quaternion(unit, v), quat::to_dual_quaternion(quat::rotation_x(1.0), v)};
+    sink = sink + quat::hand_eye(motions, motions).rotation_rms;
     sink = sink + quat::align_points(points, points, weights).rms +
            quat::align_points_with_scale(points, points).scale +
            quat::align_vectors(points, points, weights).rssd;
@@ -152,6 +155,14 @@ int run(const char* name) {
         sink = quat::align_vectors(pair, std::vector<vec3<double>>{v}).rssd;
     if (std::strcmp(name, "align_vectors_negative_weight") == 0)
         sink = quat::align_vectors(pair, pair, std::vector<double>{1, -1}).rssd;
+    if (std::strcmp(name, "hand_eye_size") == 0)
+        sink = quat::hand_eye(std::vector<quat::dual_quaterniond>(2),
+                              std::vector<quat::dual_quaterniond>(3))
+                   .rotation_rms;
+    if (std::strcmp(name, "hand_eye_not_unit") == 0) {
+        const std::vector<quat::dual_quaterniond> twice{{quatd{2, 0, 0, 0}, quatd{0, 0, 0, 0}}};
+        sink = quat::hand_eye(twice, twice).rotation_rms;
+    }
     if (std::strcmp(name, "align_points_size") == 0)
         sink = quat::align_points(pair, std::vector<vec3<double>>{v}).rms;
     if (std::strcmp(name, "align_points_negative_weight") == 0)

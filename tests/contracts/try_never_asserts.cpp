@@ -76,6 +76,10 @@ bool finite(const quat::alignment<T>& a) {
 }
 
 template <class T>
+bool finite(const quat::hand_eye_calibration<T>& c) {
+    return finite(c.mount) && finite(c.rotation_rms) && finite(c.translation_rms);
+}
+template <class T>
 bool finite(const quat::point_alignment<T>& a) {
     return finite(a.motion) && finite(a.rms);
 }
@@ -91,6 +95,11 @@ bool unit(const quat::alignment<T>& a) {
 template <class T>
 bool unit(const quaternion<T>& q) {
     return std::fabs(quat::squared_norm(q) - T(1)) <= T(1e-3);
+}
+template <class T>
+bool unit(const quat::hand_eye_calibration<T>& c) {
+    return unit(c.mount.real) &&
+           std::fabs(quat::dot(c.mount.real, c.mount.dual)) <= T(1e-3) * quat::norm(c.mount.dual);
 }
 template <class T>
 bool unit(const quat::point_alignment<T>& a) {
@@ -403,6 +412,29 @@ void dual_quaternion_cases() {
 }
 
 template <class T>
+void hand_eye_cases() {
+    current = "try_hand_eye";
+    const quaternion<T> real = quat::normalize(quaternion<T>{T(0.9), T(0.1), T(-0.3), T(0.2)});
+    const quaternion<T> other = quat::normalize(quaternion<T>{T(0.2), T(0.7), T(0.1), T(-0.4)});
+    const dual_quaternion<T> a0 = quat::to_dual_quaternion(real, vec3<T>{T(1), T(2), T(3)});
+    const dual_quaternion<T> a1 = quat::to_dual_quaternion(other, vec3<T>{T(-1), T(0), T(2)});
+    const std::vector<dual_quaternion<T>> good{a0, a1, a0 * a1};
+    const quaternion<T> dual{T(0.1), T(0.2), T(-0.3), T(0.05)};
+    for (const quaternion<T>& p : quaternions<T>()) {
+        std::vector<dual_quaternion<T>> real_bad = good, dual_bad = good;
+        real_bad[1] = dual_quaternion<T>{p, dual};
+        dual_bad[1] = dual_quaternion<T>{real, p};
+        CHECK_TRY(quat::try_hand_eye(good, real_bad), "try_hand_eye(b[1].real " + str(p) + ")");
+        CHECK_TRY(quat::try_hand_eye(dual_bad, good), "try_hand_eye(a[1].dual " + str(p) + ")");
+    }
+    const std::vector<dual_quaternion<T>> none, one{a0};
+    CHECK_TRY(quat::try_hand_eye(none, none), "try_hand_eye(no motions)");
+    CHECK_TRY(quat::try_hand_eye(one, one), "try_hand_eye(one motion)");
+    CHECK_TRY(quat::try_hand_eye(good, one), "try_hand_eye(3 and 1 motions)");
+    CHECK_TRY(quat::try_hand_eye(good, good), "try_hand_eye(a = b)");
+}
+
+template <class T>
 void swing_twist_cases() {
     current = "try_swing_twist";
     const std::vector<vec3<T>> v = vectors<T>();
@@ -529,6 +561,8 @@ const named_case cases[] = {
     {"align_double", [] { align_cases<double>(); }},
     {"nearest_rotation_float", [] { nearest_rotation_cases<float>(); }},
     {"nearest_rotation_double", [] { nearest_rotation_cases<double>(); }},
+    {"hand_eye_float", [] { hand_eye_cases<float>(); }},
+    {"hand_eye_double", [] { hand_eye_cases<double>(); }},
     {"dual_quaternion_float", [] { dual_quaternion_cases<float>(); }},
     {"dual_quaternion_double", [] { dual_quaternion_cases<double>(); }},
     {"rotation_spline_float", [] { rotation_spline_cases<float>(); }},

@@ -1,5 +1,6 @@
 // Instantiates align_vectors.hpp, align_points.hpp and mean.hpp (align_vectors, try_align_vectors,
-// align_vectors_with_sensitivity, align_points[_with_scale] and their try_ forms, mean, try_mean) for float, double and long double under the strict warning flags, with weights
+// align_vectors_with_sensitivity, align_points[_with_scale] and their try_ forms, hand_eye,
+// try_hand_eye, mean, try_mean) for float, double and long double under the strict warning flags, with weights
 // of another scalar type beside them (a double weight converts to T). Compiled, not run, by the
 // strict_warnings CTest test.
 #include <array>
@@ -7,6 +8,7 @@
 
 #include <quat/align_points.hpp>
 #include <quat/align_vectors.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/mean.hpp>
 
 namespace {
@@ -36,6 +38,12 @@ T estimation() {
            try_align_points(targets, sources, weights).value_or(points).rms +
            try_align_points_with_scale(targets, sources).value_or(similar).scale +
            try_align_points_with_scale(targets, sources, double_weights).value_or(similar).scale;
+    const std::vector<dual_quaternion<T>> hand{to_dual_quaternion(rotation, sources[0]),
+                                               to_dual_quaternion(rotation_x(T(1)), sources[1])};
+    const std::array<dual_quaternion<T>, 2> eye{hand[1], hand[0]};
+    const hand_eye_calibration<T> mount = hand_eye(hand, eye);
+    sum += mount.rotation_rms + mount.mount.real.w +
+           try_hand_eye(hand, eye).value_or(mount).translation_rms;
     const std::vector<quaternion<T>> rotations{quaternion<T>::identity(), rotation, -rotation};
     sum += mean(rotations).w + mean(rotations, weights).x;
     sum += try_mean(rotations).value_or(quaternion<T>::identity()).y;
