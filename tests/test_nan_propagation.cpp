@@ -239,8 +239,8 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         const std::vector<vec3<T>> bad_cloud{v, vec3<T>{T(0), T(1), T(0)},
                                              vec3<T>{T(0), T(0), T(1)}};
         const auto registered = quat::align_points(bad_cloud, cloud);
-        CHECK((bad(registered.motion.real) && bad(registered.motion.dual) &&
-               bad(registered.rms) && !registered.unique));
+        CHECK((bad(registered.motion.real) && bad(registered.motion.dual) && bad(registered.rms) &&
+               !registered.unique));
         CHECK(bad(quat::align_points_with_scale(cloud, bad_cloud).scale));
         CHECK_FALSE(quat::try_align_points(cloud, bad_cloud).has_value());
 
