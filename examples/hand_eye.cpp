@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
 #include "check.hpp"

@@ -13,6 +13,8 @@
 #include <limits>
 #include <vector>
 
+#include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
 #include "support/catch.hpp"

@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
 #include "support/catch.hpp"

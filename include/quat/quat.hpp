@@ -22,7 +22,6 @@
 #define QUAT_QUAT_HPP_INCLUDED
 
 #include "align.hpp"
-#include "align_points.hpp"
 #include "align_vectors.hpp"
 #include "axis_angle.hpp"
 #include "batch.hpp"
@@ -34,7 +33,6 @@
 #include "dual_quaternion.hpp"
 #include "elementwise.hpp"
 #include "euler.hpp"
-#include "hand_eye.hpp"
 #include "homogeneous_matrix.hpp"
 #include "interpolation.hpp"
 #include "keyframe_slerp.hpp"

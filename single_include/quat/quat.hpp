@@ -2037,18 +2037,6 @@ template <class T>
 
 #endif  // QUAT_ALIGN_HPP_INCLUDED
 // ---- end quat/align.hpp ----
-// ---- begin quat/align_points.hpp ----
-// Point-set registration: the rigid motion (align_points) or the similarity (align_points_with_scale)
-// that best maps one set of corresponding points onto another in the least-squares sense, after
-// Kabsch (1976) and Umeyama ("Least-squares estimation of transformation parameters between two
-// point patterns", IEEE PAMI 13(4), 1991), with the rotation from align_vectors' q-method instead of
-// an SVD: the centred points are a Wahba problem, so there is never a reflection.
-#ifndef QUAT_ALIGN_POINTS_HPP_INCLUDED
-#define QUAT_ALIGN_POINTS_HPP_INCLUDED
-
-#include <cstddef>
-#include <optional>
-
 // ---- begin quat/align_vectors.hpp ----
 // Wahba's problem: the rotation that best aligns one set of vectors with another, as scipy's
 // Rotation.align_vectors finds it, with the residual and scipy's sensitivity matrix.
@@ -3078,631 +3066,6 @@ template <class Targets, class Sources, class Weights,
 
 #endif  // QUAT_ALIGN_VECTORS_HPP_INCLUDED
 // ---- end quat/align_vectors.hpp ----
-// ---- begin quat/dual_quaternion.hpp ----
-// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
-#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
-#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
-
-#include <optional>
-
-
-namespace quat {
-
-/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
-/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
-/// dq and -dq are the same motion. Members are public, as for quaternion.
-template <class T>
-struct dual_quaternion {
-    quaternion<T> real;  ///< The rotation.
-    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
-
-    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
-    dual_quaternion() = default;
-    /// The dual quaternion real_part + eps dual_part.
-    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
-                                                     const quaternion<T>& dual_part) noexcept
-        : real(real_part), dual(dual_part) {}
-    /// Conversion from another precision, component by component.
-    template <class U>
-    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
-        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
-
-    /// The motion that moves nothing: real 1, dual 0.
-    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
-        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
-    }
-    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
-    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
-        const vec3<T>& t) noexcept {
-        return to_dual_quaternion(quaternion<T>::identity(), t);
-    }
-};
-
-using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
-using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
-/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
-                                                              const vec3<T>& translation) noexcept {
-    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
-                             translation.z * T(0.5)};
-    return {rotation, half * rotation};
-}
-
-/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
-/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
-    const quaternion<T>& rotation) noexcept {
-    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
-}
-
-/// The rotation of the unit dual quaternion dq (its real part).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
-    return dq.real;
-}
-
-/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
-/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
-template <class T>
-[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
-    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
-    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
-    const quaternion<T>& r = dq.real;
-    const quaternion<T>& d = dq.dual;
-    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
-                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
-                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
-    return half + half;
-}
-
-/// Negation: the same rigid motion.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
-    return {-dq.real, -dq.dual};
-}
-
-/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
-/// 48 multiplications and 40 additions.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
-                                                     const dual_quaternion<T>& b) noexcept {
-    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
-}
-
-/// a = a * b: as rigid motions, b is applied first, then the old a.
-template <class T>
-constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
-                                         const dual_quaternion<T>& b) noexcept {
-    return a = a * b;
-}
-
-/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
-/// rigid motion unless s is +-1: normalize or blend weights use it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
-                                                     detail::type_identity_t<T> s) noexcept {
-    return {dq.real * s, dq.dual * s};
-}
-/// Product with a scalar, all eight components; s converts to T.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
-                                                     const dual_quaternion<T>& dq) noexcept {
-    return dq * s;
-}
-/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
-                                                     detail::type_identity_t<T> s) noexcept {
-    return {dq.real / s, dq.dual / s};
-}
-/// dq = dq * s.
-template <class T>
-constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
-                                         detail::type_identity_t<T> s) noexcept {
-    return dq = dq * s;
-}
-/// dq = dq / s.
-template <class T>
-constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
-                                         detail::type_identity_t<T> s) noexcept {
-    return dq = dq / s;
-}
-
-/// Exact component-wise equality; dq == -dq is false although both are one motion.
-template <class T>
-[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return a.real == b.real && a.dual == b.dual;
-}
-/// Negation of ==.
-template <class T>
-[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return !(a == b);
-}
-
-/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
-/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
-/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
-/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
-/// parts; a NaN or infinite dual component, NaN in the dual part.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = inverse(dq.real);
-    return {real, -(real * dq.dual * real)};
-}
-
-/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
-/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
-/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
-/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = normalize(dq.real);
-    const quaternion<T> dual = dq.dual / norm(dq.real);
-    return {real, dual - real * dot(real, dual)};
-}
-
-/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
-/// normalized dual part overflows.
-template <class T>
-[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
-    const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T>& d = dq.dual;
-    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
-    const dual_quaternion<T> result = normalize(dq);
-    // A dual part huge beside a tiny real part can overflow once divided by |real|.
-    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
-    return result;
-}
-
-/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
-/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform: the real part is not a unit quaternion");
-    return rotate(dq.real, p) + translation_of(dq);
-}
-
-/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
-/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
-/// transform_vector for a direction).
-template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    return transform(dq, p);
-}
-
-/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
-/// Precondition: |real| = 1 (checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
-                                                 const vec3<T>& v) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform_vector: the real part is not a unit quaternion");
-    return detail::rotate_unchecked(dq.real, v);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
-// ---- end quat/dual_quaternion.hpp ----
-
-namespace quat {
-
-/// The rigid motion that best maps sources onto targets, and how well it does (align_points).
-template <class T>
-struct point_alignment {
-    /// Unit dual quaternion of x -> R x + t minimizing sum w_i |targets_i - (R sources_i + t)|^2;
-    /// to_homogeneous(motion) is its 4x4 matrix.
-    dual_quaternion<T> motion;
-    /// The weighted root-mean-square residual sqrt(sum w_i |targets_i - motion(sources_i)|^2 /
-    /// sum w_i), summed from the residuals.
-    T rms;
-    /// False when other motions fit as well: the points (of positive weight) lie on one line or
-    /// coincide, fewer than three distinct among them (see align_points for the threshold).
-    bool unique;
-};
-
-/// The similarity that best maps sources onto targets (align_points_with_scale): a point_alignment
-/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map.
-template <class T>
-struct similarity_alignment : point_alignment<T> {
-    /// The uniform scale, > 0.
-    T scale;
-};
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// True when every weight is finite and >= 0: the weighted registrations' precondition.
-template <class T, class Weight>
-[[nodiscard]] constexpr bool valid_weights(const Weight* weights, std::size_t count) noexcept {
-    for (std::size_t i = 0; i < count; ++i) {
-        const T w = static_cast<T>(weights[i]);
-        if (!(w >= T(0)) || !detail::is_finite(w)) return false;
-    }
-    return true;
-}
-
-/// The weighted mean of point(i), i < count, with weights weight(i) / total (total their sum):
-/// every term is at most its point's size, so nothing overflows, and a second pass adds the mean of
-/// the remainders, which recovers the digits the first pass rounded away (points far from the
-/// origin with a small spread keep their spread).
-template <class T, class Point, class Weight>
-[[nodiscard]] constexpr vec3<T> weighted_centroid(std::size_t count, Point point, Weight weight,
-                                                  T total) noexcept {
-    vec3<T> mean{T(0), T(0), T(0)};
-    for (std::size_t i = 0; i < count; ++i) mean += point(i) * (weight(i) / total);
-    vec3<T> correction{T(0), T(0), T(0)};
-    for (std::size_t i = 0; i < count; ++i) correction += (point(i) - mean) * (weight(i) / total);
-    return mean + correction;
-}
-
-/// The registration in three passes, for data whose sizes lie where Wahba's plain path needs them
-/// (as align_vectors' solver tests them): the weighted sums; then B of the points less that first
-/// mean, with the remainders that correct the mean (B = sum w a b^T - dt ds^T / W for the
-/// remainders' sums dt, ds, exactly the B of the corrected centroids); then the residuals. The
-/// scale is trace(R^T B) / sum w |b|^2. Empty where the data need the careful path (a NaN,
-/// infinite, negative or all-zero weight, non-finite values, sizes out of range).
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr std::optional<similarity_alignment<T>> plain_registration(
-    Target target, Source source, std::size_t count, Weight weight, bool scaled) noexcept {
-    T total(0), lowest(0), heaviest(0), check(0);
-    vec3<T> target_sum{T(0), T(0), T(0)}, source_sum{T(0), T(0), T(0)};
-    for (std::size_t i = 0; i < count; ++i) {
-        const T w = weight(i);
-        const vec3<T> a = target(i), b = source(i);
-        total += w;
-        target_sum += a * w;
-        source_sum += b * w;
-        // 0 while every value is finite; NaN (or an overflow's infinity) otherwise.
-        check += (a.x + a.y + a.z + b.x + b.y + b.z + w) * T(0);
-        lowest = lowest < w ? lowest : w;
-        heaviest = heaviest > w ? heaviest : w;
-    }
-    if (!(check == T(0)) || !(lowest >= T(0)) || !(total > T(0)) || !is_finite(total) ||
-        scale_of(heaviest) != T(1))
-        return std::nullopt;
-    const vec3<T> mean_target = target_sum / total, mean_source = source_sum / total;
-    T b[3][3] = {};
-    vec3<T> target_rest{T(0), T(0), T(0)}, source_rest{T(0), T(0), T(0)};
-    T spread(0), target_size(0), source_size(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const T w = weight(i);
-        const vec3<T> a = target(i) - mean_target, b_i = source(i) - mean_source;
-        const vec3<T> wa = a * w;
-        const T wa_r[3] = {wa.x, wa.y, wa.z}, b_c[3] = {b_i.x, b_i.y, b_i.z};
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) b[r][c] += wa_r[r] * b_c[c];
-        target_rest += wa;
-        source_rest += b_i * w;
-        spread += w * dot(b_i, b_i);
-        target_size = max(target_size, largest_magnitude(a));
-        source_size = max(source_size, largest_magnitude(b_i));
-    }
-    const T rest_t[3] = {target_rest.x, target_rest.y, target_rest.z};
-    const T rest_s[3] = {source_rest.x, source_rest.y, source_rest.z};
-    bool finite = is_finite(spread);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) {
-            b[r][c] -= rest_t[r] * rest_s[c] / total;
-            finite = finite && is_finite(b[r][c]);
-        }
-    if (!finite || scale_of(target_size) != T(1) || scale_of(source_size) != T(1))
-        return std::nullopt;
-    spread -= dot(source_rest, source_rest) / total;
-    const vec3<T> ct = mean_target + target_rest / total, cs = mean_source + source_rest / total;
-    const auto centred_target = [&](std::size_t i) { return target(i) - ct; };
-    const auto centred_source = [&](std::size_t i) { return source(i) - cs; };
-    const alignment<T> fit = rotation_of_profile(b, count, centred_target, centred_source, weight);
-    const rotation_matrix<T> m = to_matrix(fit.rotation);
-    T scale(1);
-    bool determined = true;
-    if (scaled) {
-        T along(0);  // trace(R^T B)
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) along += m(r, c) * b[r][c];
-        determined = along > T(0) && spread > T(0);
-        scale = determined ? along / spread : T(1);
-    }
-    T squares(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const vec3<T> residual = centred_target(i) - rotate(m, centred_source(i)) * scale;
-        squares += weight(i) * dot(residual, residual);
-    }
-    if (!is_finite(squares)) return std::nullopt;
-    const vec3<T> translation = ct - rotate(m, cs) * scale;
-    return similarity_alignment<T>{{to_dual_quaternion(fit.rotation, translation),
-                                    sqrt(squares / total), fit.unique && determined},
-                                   scale};
-}
-
-/// The registration of point sets: the centroids, the rotation of the centred points (Wahba's
-/// problem), then the scale (Umeyama's trace(R^T B) / sum w |s_i - cs|^2, or 1) and the residual.
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr similarity_alignment<T> solve_registration(Target target, Source source,
-                                                                   std::size_t count,
-                                                                   Weight raw_weight,
-                                                                   bool scaled) noexcept {
-    if (const auto plain = plain_registration<T>(target, source, count, raw_weight, scaled))
-        return *plain;
-    T largest(0);
-    bool finite = true;
-    for (std::size_t i = 0; i < count; ++i) {
-        const T w = raw_weight(i);
-        const vec3<T> a = target(i), b = source(i);
-        finite = finite && w >= T(0) && detail::is_finite(w) && detail::is_finite(a) &&
-                 detail::is_finite(b);
-        largest = detail::max(largest, w);
-    }
-    const T nan = detail::quiet_nan<T>();
-    if (!finite) {
-        const quaternion<T> q{nan, nan, nan, nan};
-        return {{{q, q}, nan, false}, nan};
-    }
-    if (!(largest > T(0))) return {{dual_quaternion<T>::identity(), T(0), false}, T(1)};
-    // Weights divided by the power of two of the largest: their sum neither overflows nor
-    // underflows, and only their ratios count.
-    const T pw = binade_of(largest);
-    const auto weight = [&](std::size_t i) { return raw_weight(i) / pw; };
-    T total(0);
-    for (std::size_t i = 0; i < count; ++i) total += weight(i);
-    const vec3<T> ct = weighted_centroid(count, target, weight, total);
-    const vec3<T> cs = weighted_centroid(count, source, weight, total);
-    const auto centred_target = [&](std::size_t i) { return target(i) - ct; };
-    const auto centred_source = [&](std::size_t i) { return source(i) - cs; };
-    const alignment<T> fit = solve_wahba<T>(centred_target, centred_source, count, weight).result;
-
-    // The centred points divided by the powers of two of their largest components, so that
-    // neither products of sizes nor sums of squares overflow or underflow.
-    T target_size(0), source_size(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        target_size = detail::max(target_size, largest_magnitude(centred_target(i)));
-        source_size = detail::max(source_size, largest_magnitude(centred_source(i)));
-    }
-    const T pt = target_size > T(0) ? binade_of(target_size) : T(1);
-    const T ps = source_size > T(0) ? binade_of(source_size) : T(1);
-    const rotation_matrix<T> m = to_matrix(fit.rotation);
-    const auto turned_source = [&](std::size_t i) { return rotate(m, centred_source(i) / ps); };
-    T scale(1);
-    bool determined = true;
-    if (scaled) {
-        T along(0), spread(0);
-        for (std::size_t i = 0; i < count; ++i) {
-            const vec3<T> s = turned_source(i);
-            along += weight(i) * dot(centred_target(i) / pt, s);
-            spread += weight(i) * dot(s, s);
-        }
-        // along >= 0 at the optimal rotation; 0 (targets or sources all equal) or no spread
-        // leaves the scale undetermined.
-        determined = along > T(0) && spread > T(0);
-        scale = determined ? along / spread * (pt / ps) : T(1);
-    }
-    // The residuals in units of the larger side's power of two, so their squares stay in range.
-    const T p = binade_of(detail::max(pt, scale * ps));
-    const T factor = scale * (ps / p);
-    T squares(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const vec3<T> residual = centred_target(i) / p - turned_source(i) * factor;
-        squares += weight(i) * dot(residual, residual);
-    }
-    const vec3<T> translation = ct - rotate(m, cs) * scale;
-    return {{to_dual_quaternion(fit.rotation, translation), sqrt(squares / total) * p,
-             fit.unique && determined},
-            scale};
-}
-
-/// solve_registration over arrays of points (of any precision) and a container of weights.
-template <class T, class Targets, class Sources, class Weight>
-[[nodiscard]] constexpr similarity_alignment<T> register_arrays(const Targets& targets,
-                                                                const Sources& sources,
-                                                                Weight weight,
-                                                                bool scaled) noexcept {
-    const auto* t = detail::data_of(targets);
-    const auto* s = detail::data_of(sources);
-    return solve_registration<T>([t](std::size_t i) { return vec3<T>(t[i]); },
-                                 [s](std::size_t i) { return vec3<T>(s[i]); },
-                                 detail::size_of(sources), weight, scaled);
-}
-
-/// The checked registration: empty for no points, mismatched sizes, non-finite values, a negative,
-/// NaN or infinite weight, no positive weight, or a residual beyond max().
-template <class T, class Targets, class Sources, class Weights>
-[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_register(
-    const Targets& targets, const Sources& sources, const Weights* weights,
-    std::size_t weight_count, bool scaled) noexcept {
-    const std::size_t count = detail::size_of(sources);
-    if (count == 0 || detail::size_of(targets) != count || weight_count != count)
-        return std::nullopt;
-    bool positive = weights == nullptr;
-    if (weights != nullptr) {
-        if (!valid_weights<T>(weights, count)) return std::nullopt;
-        for (std::size_t i = 0; i < count; ++i) positive = positive || weights[i] > 0;
-    }
-    if (!positive) return std::nullopt;
-    const similarity_alignment<T> result =
-        weights == nullptr
-            ? register_arrays<T>(
-                  targets, sources, [](std::size_t) { return T(1); }, scaled)
-            : register_arrays<T>(
-                  targets, sources, [weights](std::size_t i) { return static_cast<T>(weights[i]); },
-                  scaled);
-    if (!detail::is_finite(result.motion.real.w) || !detail::is_finite(result.rms) ||
-        !detail::is_finite(largest_magnitude(result.motion.dual)) ||
-        !detail::is_finite(result.scale))
-        return std::nullopt;
-    return result;
-}
-
-}  // namespace detail
-
-/// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
-/// unit dual quaternion: never a reflection. targets and sources are equally long (QUAT_ASSERT)
-/// containers of vec3<T> with data() and size(), or C arrays, of corresponding points. The centroids
-/// are taken in two passes, so points far from the origin keep their spread. unique is false when
-/// the targets, or the sources, less their centroid, all lie within 64 epsilon radians of one line
-/// (collinear points, fewer than three distinct): then the rotation is the one align_vectors
-/// chooses for the centred points. No points: the identity, rms 0, not unique. A NaN or infinite
-/// component gives NaN in every component, rms NaN, unique false; try_align_points checks instead.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
-                                                        const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
-                "quat::align_points: targets and sources differ in size");
-    return detail::register_arrays<T>(
-        targets, sources, [](std::size_t) { return T(1); }, false);
-}
-
-/// align_points with weights (a container of scalars convertible to T, as long as the points):
-/// the motion minimizing sum weights[i] |targets[i] - (R sources[i] + t)|^2, with rms weighted
-/// alike. A zero weight drops its pair; only the weights' ratios count. Precondition: weights >= 0
-/// and finite (QUAT_ASSERT); unchecked, a negative, NaN or infinite weight gives the NaN result.
-/// No positive weight: the identity, rms 0, not unique.
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
-                                                        const Sources& sources,
-                                                        const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
-                "quat::align_points: targets, sources and weights differ in size");
-    const auto* w = detail::data_of(weights);
-    QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
-                "quat::align_points: a weight is negative, NaN or infinite");
-    return detail::register_arrays<T>(
-        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, false);
-}
-
-/// The similarity x -> scale R x + t minimizing sum |targets[i] - (scale R sources[i] + t)|^2
-/// (Umeyama 1991): motion holds R and t, scale > 0 is trace(R^T B) / sum |sources[i] - cs|^2 with
-/// B the centred points' sum targets_c sources_c^T, rms the residual of the similarity. As
-/// align_points otherwise; unique is also false (and scale 1) where the targets or the sources all
-/// coincide, which leaves the scale undetermined.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
-    const Targets& targets, const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
-                "quat::align_points_with_scale: targets and sources differ in size");
-    return detail::register_arrays<T>(
-        targets, sources, [](std::size_t) { return T(1); }, true);
-}
-
-/// align_points_with_scale with weights, as align_points(targets, sources, weights).
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
-    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
-                "quat::align_points_with_scale: targets, sources and weights differ in size");
-    const auto* w = detail::data_of(weights);
-    QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
-                "quat::align_points_with_scale: a weight is negative, NaN or infinite");
-    return detail::register_arrays<T>(
-        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, true);
-}
-
-/// align_points(targets, sources), or std::nullopt for input it does not register: no points,
-/// different sizes, a NaN or infinite component, or a residual beyond max(). Collinear points are
-/// not bad input: they give unique = false. Never asserts.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<point_alignment<T>> try_align_points(
-    const Targets& targets, const Sources& sources) noexcept {
-    const auto result = detail::try_register<T>(targets, sources, static_cast<const T*>(nullptr),
-                                                detail::size_of(sources), false);
-    if (!result) return std::nullopt;
-    return point_alignment<T>(*result);
-}
-
-/// align_points(targets, sources, weights), or std::nullopt as try_align_points(targets, sources)
-/// and also for weights of another size, a negative, NaN or infinite weight, or none positive.
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<point_alignment<T>> try_align_points(
-    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    const auto result = detail::try_register<T>(targets, sources, detail::data_of(weights),
-                                                detail::size_of(weights), false);
-    if (!result) return std::nullopt;
-    return point_alignment<T>(*result);
-}
-
-/// align_points_with_scale(targets, sources), or std::nullopt as try_align_points.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_align_points_with_scale(
-    const Targets& targets, const Sources& sources) noexcept {
-    return detail::try_register<T>(targets, sources, static_cast<const T*>(nullptr),
-                                   detail::size_of(sources), true);
-}
-
-/// align_points_with_scale(targets, sources, weights), or std::nullopt as try_align_points with
-/// weights.
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<similarity_alignment<T>> try_align_points_with_scale(
-    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    return detail::try_register<T>(targets, sources, detail::data_of(weights),
-                                   detail::size_of(weights), true);
-}
-
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_ALIGN_POINTS_HPP_INCLUDED
-// ---- end quat/align_points.hpp ----
 // ---- begin quat/batch.hpp ----
 // Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
 // many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
@@ -5041,6 +4404,244 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
 
 #include <cstddef>
 
+// ---- begin quat/dual_quaternion.hpp ----
+// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
+#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
+#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
+
+#include <optional>
+
+
+namespace quat {
+
+/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
+/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
+/// dq and -dq are the same motion. Members are public, as for quaternion.
+template <class T>
+struct dual_quaternion {
+    quaternion<T> real;  ///< The rotation.
+    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
+
+    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
+    dual_quaternion() = default;
+    /// The dual quaternion real_part + eps dual_part.
+    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
+                                                     const quaternion<T>& dual_part) noexcept
+        : real(real_part), dual(dual_part) {}
+    /// Conversion from another precision, component by component.
+    template <class U>
+    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
+
+    /// The motion that moves nothing: real 1, dual 0.
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
+        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
+    }
+    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
+        const vec3<T>& t) noexcept {
+        return to_dual_quaternion(quaternion<T>::identity(), t);
+    }
+};
+
+using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
+using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
+/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
+                                                              const vec3<T>& translation) noexcept {
+    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
+                             translation.z * T(0.5)};
+    return {rotation, half * rotation};
+}
+
+/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
+/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const quaternion<T>& rotation) noexcept {
+    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
+}
+
+/// The rotation of the unit dual quaternion dq (its real part).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
+    return dq.real;
+}
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
+    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    const quaternion<T>& r = dq.real;
+    const quaternion<T>& d = dq.dual;
+    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
+                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
+                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
+    return half + half;
+}
+
+/// Negation: the same rigid motion.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
+    return {-dq.real, -dq.dual};
+}
+
+/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
+/// 48 multiplications and 40 additions.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
+                                                     const dual_quaternion<T>& b) noexcept {
+    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
+}
+
+/// a = a * b: as rigid motions, b is applied first, then the old a.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
+                                         const dual_quaternion<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
+/// rigid motion unless s is +-1: normalize or blend weights use it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real * s, dq.dual * s};
+}
+/// Product with a scalar, all eight components; s converts to T.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
+                                                     const dual_quaternion<T>& dq) noexcept {
+    return dq * s;
+}
+/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real / s, dq.dual / s};
+}
+/// dq = dq * s.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq * s;
+}
+/// dq = dq / s.
+template <class T>
+constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq / s;
+}
+
+/// Exact component-wise equality; dq == -dq is false although both are one motion.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return a.real == b.real && a.dual == b.dual;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
+/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
+/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
+/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
+/// parts; a NaN or infinite dual component, NaN in the dual part.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = inverse(dq.real);
+    return {real, -(real * dq.dual * real)};
+}
+
+/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
+/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
+/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
+/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = normalize(dq.real);
+    const quaternion<T> dual = dq.dual / norm(dq.real);
+    return {real, dual - real * dot(real, dual)};
+}
+
+/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
+/// normalized dual part overflows.
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
+    const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T>& d = dq.dual;
+    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
+    const dual_quaternion<T> result = normalize(dq);
+    // A dual part huge beside a tiny real part can overflow once divided by |real|.
+    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
+    return result;
+}
+
+/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
+/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform: the real part is not a unit quaternion");
+    return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
+/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
+/// transform_vector for a direction).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    return transform(dq, p);
+}
+
+/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
+/// Precondition: |real| = 1 (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
+                                                 const vec3<T>& v) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform_vector: the real part is not a unit quaternion");
+    return detail::rotate_unchecked(dq.real, v);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
+// ---- end quat/dual_quaternion.hpp ----
 
 namespace quat {
 
@@ -5989,268 +5590,6 @@ void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
 
 #endif  // QUAT_ELEMENTWISE_HPP_INCLUDED
 // ---- end quat/elementwise.hpp ----
-// ---- begin quat/hand_eye.hpp ----
-// Hand-eye calibration: the fixed rigid motion X between a robot's hand (gripper, rig) and a sensor
-// mounted on it (the eye: camera, IMU) from motions measured by both, A_i X = X B_i, by
-// Daniilidis's dual-quaternion method ("Hand-eye calibration using dual quaternions", The
-// International Journal of Robotics Research 18(3), 1999): rotation and translation together, from
-// the null space of one stacked matrix.
-#ifndef QUAT_HAND_EYE_HPP_INCLUDED
-#define QUAT_HAND_EYE_HPP_INCLUDED
-
-#include <cstddef>
-#include <optional>
-
-
-namespace quat {
-
-/// The mount X found by hand_eye, and how well the motions agree with it.
-template <class T>
-struct hand_eye_calibration {
-    /// Unit dual quaternion of X: the sensor's frame in the hand's, x_hand = X x_sensor.
-    dual_quaternion<T> mount;
-    /// sqrt(mean angle(A_i X, X B_i)^2): the rotations' disagreement, radians.
-    T rotation_rms;
-    /// sqrt(mean |translation(A_i X) - translation(X B_i)|^2): the translations' disagreement, in
-    /// the motions' unit of length.
-    T translation_rms;
-    /// False when the motions do not determine X: fewer than two turn (angle above 64 epsilon), or
-    /// all turn about parallel axes (within 64 epsilon radians). X's rotation about that axis is
-    /// then free, and so is its translation along it.
-    bool unique;
-};
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// The rows of Daniilidis's equation for one motion pair, a q = q b with equal scalar parts:
-/// (a - b) q0 + [a + b]x q_vec = 0 for the vector parts a, b; row r of the 3 x 4 block.
-template <class T>
-constexpr void daniilidis_block(const quaternion<T>& a, const quaternion<T>& b,
-                                T (&m)[3][4]) noexcept {
-    const vec3<T> d{a.x - b.x, a.y - b.y, a.z - b.z}, s{a.x + b.x, a.y + b.y, a.z + b.z};
-    const T rows[3][4] = {{d.x, T(0), -s.z, s.y}, {d.y, s.z, T(0), -s.x}, {d.z, -s.y, s.x, T(0)}};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) m[r][c] = rows[r][c];
-}
-
-/// True when every component of dq is finite and its real part is a unit quaternion to within
-/// 1/4096 (the library's debug check).
-template <class T>
-[[nodiscard]] constexpr bool is_valid_motion(const dual_quaternion<T>& dq) noexcept {
-    return is_finite(dq.real) && is_finite(dq.dual) && is_near_unit(dq.real);
-}
-
-template <class T, class A, class B>
-[[nodiscard]] constexpr hand_eye_calibration<T> solve_hand_eye(const A* a_motions,
-                                                               const B* b_motions,
-                                                               std::size_t count) noexcept {
-    const T nan = quiet_nan<T>();
-    const quaternion<T> nan_q{nan, nan, nan, nan};
-    if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false};
-    // The translations are divided by the power of two of the longest, so that the dual rows
-    // weigh like the rotation rows (Daniilidis's matrix mixes both) and nothing overflows.
-    T longest(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
-        if (!is_finite(a.real) || !is_finite(a.dual) || !is_finite(b.real) || !is_finite(b.dual))
-            return {{nan_q, nan_q}, nan, nan, false};
-        longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
-    }
-    const T p = longest > T(0) ? binade_of(longest) : T(1);
-
-    // M = sum T_i^T T_i for the 6 x 8 T_i = [[R_i, 0], [D_i, R_i]] acting on (q, q'), where R_i and
-    // D_i are daniilidis_block of the real and the (scaled) dual parts.
-    T m[8][8] = {};
-    std::size_t turning = 0;
-    vec3<T> first_axis{T(0), T(0), T(0)};
-    T first_size(0);
-    bool parallel = true;
-    for (std::size_t i = 0; i < count; ++i) {
-        const dual_quaternion<T> a(a_motions[i]);
-        dual_quaternion<T> b(b_motions[i]);
-        const quaternion<T> ad = a.dual / p;
-        quaternion<T> bd = b.dual / p;
-        // The sign of b that makes the screw parameters equal: a.real.w = b.real.w (the angle)
-        // and a.dual.w = b.dual.w (the slide), which Daniilidis's equations assume.
-        const T same = abs(a.real.w - b.real.w) + abs(ad.w - bd.w);
-        const T flipped = abs(a.real.w + b.real.w) + abs(ad.w + bd.w);
-        if (flipped < same) {
-            b = -b;
-            bd = -bd;
-        }
-        T r[3][4] = {}, d[3][4] = {};
-        daniilidis_block(a.real, b.real, r);
-        daniilidis_block(ad, bd, d);
-        T rows[6][8] = {};
-        for (int k = 0; k < 3; ++k)
-            for (int c = 0; c < 4; ++c) {
-                rows[k][c] = r[k][c];
-                rows[3 + k][c] = d[k][c];
-                rows[3 + k][4 + c] = r[k][c];
-            }
-        for (int x = 0; x < 8; ++x)
-            for (int y = x; y < 8; ++y) {
-                T sum(0);
-                for (int k = 0; k < 6; ++k) sum += rows[k][x] * rows[k][y];
-                m[x][y] += sum;
-            }
-        // Which motions turn, and about which axes.
-        const vec3<T> axis{a.real.x, a.real.y, a.real.z};
-        const T size = norm(axis);
-        if (size > T(64) * epsilon<T>()) {
-            ++turning;
-            if (size > first_size) {
-                if (first_size > T(0) &&
-                    norm(cross(axis / size, first_axis)) > T(64) * epsilon<T>())
-                    parallel = false;
-                first_axis = axis / size;
-                first_size = size;
-            } else if (norm(cross(axis / size, first_axis)) > T(64) * epsilon<T>()) {
-                parallel = false;
-            }
-        }
-    }
-    T largest(0);
-    for (int x = 0; x < 8; ++x)
-        for (int y = x; y < 8; ++y) {
-            m[y][x] = m[x][y];
-            largest = max(largest, abs(m[x][y]));
-        }
-    if (largest > T(0))
-        for (int x = 0; x < 8; ++x)
-            for (int y = 0; y < 8; ++y) m[x][y] = m[x][y] / largest;
-    const symmetric_eigen_n<8, T> eigen = jacobi_eigen<8>(m);
-
-    // X = l1 v7 + l2 v8 over the two smallest eigenvectors, v = (u, w) with u the real and w the
-    // dual half, under X's constraints |q| = 1 and q . q' = 0. With (l1, l2) = (cos f, sin f) the
-    // second reads A cos 2f + B sin 2f + C = 0, A = (u1.w1 - u2.w2) / 2, B = (u1.w2 + u2.w1) / 2,
-    // C = (u1.w1 + u2.w2) / 2: two solutions; the one with the larger |q| is X, scaled to |q| = 1.
-    const T(&v7)[8] = eigen.vectors[6];
-    const T(&v8)[8] = eigen.vectors[7];
-    const quaternion<T> u1{v7[0], v7[1], v7[2], v7[3]}, w1{v7[4], v7[5], v7[6], v7[7]};
-    const quaternion<T> u2{v8[0], v8[1], v8[2], v8[3]}, w2{v8[4], v8[5], v8[6], v8[7]};
-    const T ca = (dot(u1, w1) - dot(u2, w2)) / T(2), cb = (dot(u1, w2) + dot(u2, w1)) / T(2),
-            cc = (dot(u1, w1) + dot(u2, w2)) / T(2);
-    const T amplitude = sqrt(ca * ca + cb * cb);
-    const T phase = atan2(cb, ca);
-    // Noise can push |C| / amplitude past 1: the nearest point, where the constraint is met best.
-    T ratio = amplitude > T(0) ? -cc / amplitude : T(1);
-    ratio = ratio > T(1) ? T(1) : (ratio < T(-1) ? T(-1) : ratio);
-    const T spread = atan2(sqrt((T(1) - ratio) * (T(1) + ratio)), ratio);
-    dual_quaternion<T> best{{T(0), T(0), T(0), T(0)}, {T(0), T(0), T(0), T(0)}};
-    T best_size(-1);
-    for (int sign = -1; sign <= 1; sign += 2) {
-        const T f = (phase + T(sign) * spread) / T(2);
-        const T c = cos(f), s = sin(f);
-        const quaternion<T> q = u1 * c + u2 * s;
-        const T size = norm(q);
-        if (size > best_size) {
-            best_size = size;
-            best = {q / size, (w1 * c + w2 * s) / size};
-        }
-    }
-    // The constraint q . q' = 0, met to rounding: remove what noise left along q.
-    best.dual = (best.dual - best.real * dot(best.real, best.dual)) * p;
-    if (best.real.w < T(0)) best = -best;
-
-    T angles(0), offsets(0), n(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        n += T(1);
-        const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
-        const dual_quaternion<T> left = a * best, right = best * b;
-        const T angle = angle_between(left.real, right.real);
-        // Divided by p before squaring, so that huge translations cannot overflow the sum.
-        const vec3<T> offset = (translation_of(left) - translation_of(right)) / p;
-        angles += angle * angle;
-        offsets += dot(offset, offset);
-    }
-    return {best, sqrt(angles / n), sqrt(offsets / n) * p, turning >= 2 && !parallel};
-}
-
-}  // namespace detail
-
-/// The mount X with A_i X = X B_i for every i, in the least-squares sense of Daniilidis's method:
-/// eye-in-hand calibration. motions_a holds the hand's motions and motions_b the sensor's, as unit
-/// dual quaternions (containers of dual_quaternion<T> with data() and size(), equally long, or C
-/// arrays). From absolute poses, the hand's H_j (hand in the robot's base) and the sensor's S_j
-/// (a fixed target in the sensor's frame), pair j -> k gives A = H_k^-1 H_j and B = S_k S_j^-1;
-/// X then maps sensor coordinates into hand coordinates. The sign of each B is chosen to match its
-/// A's screw (equal scalar parts), so either sign may be given. The robot-world form AX = YB is not
-/// solved here. unique is false when fewer than two motions turn or all turn about parallel axes
-/// (then X's rotation about that axis and its translation along it are undetermined, and one of the
-/// solutions is returned). No motions: the identity, residuals 0, not unique. A NaN or infinite
-/// component gives NaN in every component; try_hand_eye checks instead. Precondition: unit real
-/// parts (QUAT_ASSERT).
-template <class MotionsA, class MotionsB,
-          class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
-[[nodiscard]] constexpr hand_eye_calibration<T> hand_eye(const MotionsA& motions_a,
-                                                         const MotionsB& motions_b) noexcept {
-    QUAT_ASSERT(detail::size_of(motions_a) == detail::size_of(motions_b),
-                "quat::hand_eye: the two lists of motions differ in size");
-    const auto* a = detail::data_of(motions_a);
-    const auto* b = detail::data_of(motions_b);
-    const std::size_t count = detail::size_of(motions_a) < detail::size_of(motions_b)
-                                  ? detail::size_of(motions_a)
-                                  : detail::size_of(motions_b);
-    for (std::size_t i = 0; i < count; ++i)  // an empty loop where QUAT_ASSERT compiles to nothing
-        QUAT_ASSERT(detail::is_near_unit(dual_quaternion<T>(a[i]).real) &&
-                        detail::is_near_unit(dual_quaternion<T>(b[i]).real),
-                    "quat::hand_eye: a motion's real part is not a unit quaternion");
-    return detail::solve_hand_eye<T>(a, b, count);
-}
-
-/// hand_eye(motions_a, motions_b), or std::nullopt for motions it cannot calibrate from: lists of
-/// different sizes, fewer than two motions, a NaN or infinite component, or a real part that is not
-/// a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined are not bad
-/// input: they give unique = false. Never asserts.
-template <class MotionsA, class MotionsB,
-          class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
-[[nodiscard]] constexpr std::optional<hand_eye_calibration<T>> try_hand_eye(
-    const MotionsA& motions_a, const MotionsB& motions_b) noexcept {
-    const std::size_t count = detail::size_of(motions_a);
-    if (count < 2 || detail::size_of(motions_b) != count) return std::nullopt;
-    const auto* a = detail::data_of(motions_a);
-    const auto* b = detail::data_of(motions_b);
-    for (std::size_t i = 0; i < count; ++i)
-        if (!detail::is_valid_motion(dual_quaternion<T>(a[i])) ||
-            !detail::is_valid_motion(dual_quaternion<T>(b[i])))
-            return std::nullopt;
-    const hand_eye_calibration<T> result = detail::solve_hand_eye<T>(a, b, count);
-    if (!detail::is_finite(result.mount.real) || !detail::is_finite(result.mount.dual) ||
-        !detail::is_finite(result.rotation_rms) || !detail::is_finite(result.translation_rms))
-        return std::nullopt;
-    return result;
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_HAND_EYE_HPP_INCLUDED
-// ---- end quat/hand_eye.hpp ----
 // ---- begin quat/homogeneous_matrix.hpp ----
 // 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
 // conversions to and from dual quaternions.

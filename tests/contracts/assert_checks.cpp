@@ -14,6 +14,8 @@
     ((condition) ? void(0)              \
                  : (std::fprintf(stderr, "%s\n", message), std::fflush(stderr), std::_Exit(3)))
 
+#include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
 namespace {

@@ -28,6 +28,7 @@ static const char* quat_try_last_call = "";
             std::fflush(stdout), std::abort()))
 
 #include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
 namespace {
