@@ -64,9 +64,14 @@ struct calibration_error {
     double rotation_degrees, translation_mm;
 };
 
-/// Calibrates from `motions` arm motions at one noise level; the error of the mount found.
-calibration_error calibrate(generator& g, const dual_quaternion<double>& mount, int motions,
-                            double angle, double offset) {
+/// Calibrates from `motions` arm motions at one noise level, by both methods on the same
+/// measurements; the errors of the mounts found.
+struct calibration_errors {
+    calibration_error joint, rotation_first;
+};
+
+calibration_errors calibrate(generator& g, const dual_quaternion<double>& mount, int motions,
+                             double angle, double offset) {
     const dual_quaternion<double> target =
         to_dual_quaternion(rotation_z(0.3), vec3<double>{0.8, 0.1, 0.0});
     std::vector<dual_quaternion<double>> hands, cameras;
@@ -85,9 +90,11 @@ calibration_error calibrate(generator& g, const dual_quaternion<double>& mount, 
         a.push_back(normalize(inverse(hands[j + 1]) * hands[j]));
         b.push_back(normalize(cameras[j + 1] * inverse(cameras[j])));
     }
-    const hand_eye_calibration<double> x = hand_eye(a, b);
-    return {angle_between(x.mount.real, mount.real) / degree,
-            norm(translation_of(x.mount) - translation_of(mount)) * 1000};
+    const auto error = [&mount](const hand_eye_calibration<double>& x) {
+        return calibration_error{angle_between(x.mount.real, mount.real) / degree,
+                                 norm(translation_of(x.mount) - translation_of(mount)) * 1000};
+    };
+    return {error(hand_eye(a, b)), error(hand_eye(a, b, hand_eye_method::rotation_first))};
 }
 
 }  // namespace
@@ -102,11 +109,13 @@ int main(int argc, char** argv) {
         rotation_x(15 * degree) * rotation_z(90 * degree), vec3<double>{0.02, 0.0, 0.06});
     generator g(2026);
 
-    const calibration_error exact = calibrate(g, mount, 8, 0.0, 0.0);
-    std::printf("  without noise, 8 motions: %.2g deg, %.2g mm\n", exact.rotation_degrees,
-                exact.translation_mm);
-    expect(exact.rotation_degrees < 1e-10 && exact.translation_mm < 1e-9,
-           "exact measurements give the mount to rounding");
+    const calibration_errors exact = calibrate(g, mount, 8, 0.0, 0.0);
+    for (const calibration_error& e : {exact.joint, exact.rotation_first}) {
+        std::printf("  without noise, 8 motions: %.2g deg, %.2g mm\n", e.rotation_degrees,
+                    e.translation_mm);
+        expect(e.rotation_degrees < 1e-10 && e.translation_mm < 1e-9,
+               "exact measurements give the mount to rounding");
+    }
 
     // Noise of the camera's pose measurement: (degrees, mm).
     const double levels[3][2] = {{0.1, 1}, {0.3, 3}, {1, 10}};
@@ -114,43 +123,65 @@ int main(int argc, char** argv) {
     constexpr int trials = 40;
     std::vector<plot::series> rotation_curves, translation_curves;
     const char* colours[3] = {"#1f77b4", "#ff7f0e", "#d62728"};
-    std::printf("  RMS error of the mount over %d calibrations (rotation deg / translation mm):\n",
-                trials);
-    std::printf("  %-16s", "noise \\ motions");
-    for (const int n : counts) std::printf(" %14d", n);
-    std::printf("\n");
+    // Per noise level, per method (0: Daniilidis's joint solution, 1: rotation_first), per count.
+    double rotation_rms[3][2][8] = {}, translation_rms[3][2][8] = {};
     for (int level = 0; level < 3; ++level) {
         const double angle = levels[level][0] * degree, offset = levels[level][1] / 1000;
-        char label[64];
-        std::snprintf(label, sizeof label, "%g deg, %g mm", levels[level][0], levels[level][1]);
-        plot::series rotation{label, {}, {}, {colours[level], 1.8}};
-        plot::series translation{label, {}, {}, {colours[level], 1.8}};
-        std::printf("  %-16s", label);
-        for (const int n : counts) {
-            double rotation_squares = 0, translation_squares = 0;
+        for (int c = 0; c < 8; ++c) {
+            double squares[2][2] = {};
             for (int t = 0; t < trials; ++t) {
-                const calibration_error e = calibrate(g, mount, n, angle, offset);
-                rotation_squares += e.rotation_degrees * e.rotation_degrees;
-                translation_squares += e.translation_mm * e.translation_mm;
+                const calibration_errors e = calibrate(g, mount, counts[c], angle, offset);
+                for (int m = 0; m < 2; ++m) {
+                    const calibration_error& one = m == 0 ? e.joint : e.rotation_first;
+                    squares[m][0] += one.rotation_degrees * one.rotation_degrees;
+                    squares[m][1] += one.translation_mm * one.translation_mm;
+                }
             }
-            const double r = std::sqrt(rotation_squares / trials);
-            const double d = std::sqrt(translation_squares / trials);
-            std::printf(" %6.3f / %5.2f", r, d);
-            rotation.x.push_back(n);
-            rotation.y.push_back(r);
-            translation.x.push_back(n);
-            translation.y.push_back(d);
+            for (int m = 0; m < 2; ++m) {
+                rotation_rms[level][m][c] = std::sqrt(squares[m][0] / trials);
+                translation_rms[level][m][c] = std::sqrt(squares[m][1] / trials);
+            }
         }
-        std::printf("\n");
-        expect(
-            rotation.y.back() < rotation.y.front() && translation.y.back() < translation.y.front(),
-            "more motions, smaller errors");
-        expect(rotation.y.back() < rotation.y.front() / 3 &&
-                   translation.y.back() < translation.y.front() / 3,
-               "50 motions: errors below a third of those from 5");
-        rotation_curves.push_back(rotation);
-        translation_curves.push_back(translation);
     }
+    const char* method_names[2] = {"Daniilidis (joint)", "rotation_first"};
+    for (int m = 0; m < 2; ++m) {
+        std::printf(
+            "  %s: RMS error of the mount over %d calibrations (rotation deg / "
+            "translation mm):\n",
+            method_names[m], trials);
+        std::printf("  %-16s", "noise \\ motions");
+        for (const int n : counts) std::printf(" %14d", n);
+        std::printf("\n");
+        for (int level = 0; level < 3; ++level) {
+            char label[64], legend[80];
+            std::snprintf(label, sizeof label, "%g deg, %g mm", levels[level][0], levels[level][1]);
+            std::snprintf(legend, sizeof legend, "%s%s", label, m == 0 ? "" : ", rotation first");
+            plot::series rotation{legend, {}, {}, {colours[level], 1.8}};
+            plot::series translation{legend, {}, {}, {colours[level], 1.8}};
+            if (m == 1) rotation.look.dash = translation.look.dash = "6 4";
+            std::printf("  %-16s", label);
+            for (int c = 0; c < 8; ++c) {
+                std::printf(" %6.3f / %5.2f", rotation_rms[level][m][c],
+                            translation_rms[level][m][c]);
+                rotation.x.push_back(counts[c]);
+                rotation.y.push_back(rotation_rms[level][m][c]);
+                translation.x.push_back(counts[c]);
+                translation.y.push_back(translation_rms[level][m][c]);
+            }
+            std::printf("\n");
+            expect(rotation.y.back() < rotation.y.front() &&
+                       translation.y.back() < translation.y.front(),
+                   "more motions, smaller errors");
+            expect(rotation.y.back() < rotation.y.front() / 3 &&
+                       translation.y.back() < translation.y.front() / 3,
+                   "50 motions: errors below a third of those from 5");
+            rotation_curves.push_back(rotation);
+            translation_curves.push_back(translation);
+        }
+    }
+    for (int level = 0; level < 3; ++level)
+        expect(rotation_rms[level][1][7] * 1.5 < rotation_rms[level][0][7],
+               "rotation_first: the rotation at 50 motions 1.5x more accurate than the joint one");
 
     svg::document doc(960, 420);
     doc.text({480, 26}, "Hand-eye calibration (A X = X B): RMS error of the mount found", 17,
@@ -163,7 +194,7 @@ int main(int argc, char** argv) {
     plot::draw(doc, right, translation_curves);
     doc.text({480, 408},
              "camera pose noise per measurement (legend); 40 calibrations per point; "
-             "hand_eye(motions_a, motions_b), Daniilidis 1999",
+             "hand_eye(a, b): Daniilidis 1999 (solid), hand_eye_method::rotation_first (dashed)",
              12, "middle", "#444");
     expect(doc.save(out), "hand_eye.svg written");
     std::printf("  wrote %s\n", out.c_str());

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/io.hpp>
 
 #include "support/catch.hpp"
@@ -90,6 +92,17 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
           "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
     const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
     CHECK(text_of(motion) == "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
+    const quat::similarity_alignment<T> similar{{motion, T(0.25), true}, T(2)};
+    CHECK(text_of(quat::point_alignment<T>(similar)) ==
+          "point_alignment{dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}, "
+          "0.25, true}");
+    CHECK(text_of(similar) ==
+          "similarity_alignment{point_alignment{dual_quaternion{quaternion{0, 0, 0, 1}, "
+          "quaternion{-0.5, 0, 0, 0}}, 0.25, true}, 2}");
+    const quat::hand_eye_calibration<T> mount{motion, T(0.125), T(0.5), false};
+    CHECK(text_of(mount) ==
+          "hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, "
+          "0}}, 0.125, 0.5, false}");
     CHECK(text_of(quat::to_homogeneous(motion)) ==
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};

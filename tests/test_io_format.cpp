@@ -2,6 +2,8 @@
 // std::format("{}", component) does, the shortest text that reads back exactly, and a format spec
 // applies to each component. Compiled where the standard library has <format> (__cpp_lib_format):
 // not g++ 12's libstdc++, so CTest runs these under clang++-19 with libc++ (tests/io/libcxx).
+#include <quat/align_points.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/io.hpp>
 
 #if defined(__cpp_lib_format)
@@ -58,6 +60,13 @@ TEMPLATE_TEST_CASE("std::format prints the documented format", "[io][format]", f
     CHECK(std::format("{}", parts) ==
           "swing_twist_parts{quaternion{0.5, 0.5, 0.5, 0.5}, quaternion{1, 0, 0, 0}}");
     const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
+    const quat::similarity_alignment<T> similar{{motion, T(0.25), true}, T(2)};
+    CHECK(std::format("{}", similar) ==
+          "similarity_alignment{point_alignment{dual_quaternion{quaternion{0, 0, 0, 1}, "
+          "quaternion{-0.5, 0, 0, 0}}, 0.25, true}, 2}");
+    CHECK(std::format("{:.1f}", quat::hand_eye_calibration<T>{motion, T(0.125), T(0.5), false}) ==
+          "hand_eye_calibration{dual_quaternion{quaternion{0.0, 0.0, 0.0, 1.0}, "
+          "quaternion{-0.5, 0.0, 0.0, 0.0}}, 0.1, 0.5, false}");
     CHECK(std::format("{}", motion) ==
           "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
     CHECK(std::format("{}", quat::to_homogeneous(motion)) ==

@@ -14,6 +14,11 @@
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
 //   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
+//   point_alignment{dual_quaternion{...}, 0.25, true}          motion, rms, unique
+//   similarity_alignment{point_alignment{...}, 2}              scale
+//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true} mount, rotation_rms, translation_rms,
+//                                                             unique
+// (the last three where align_points.hpp or hand_eye.hpp is included too)
 //   zyx   intrinsic                                           sequence and frame: their names
 //
 // operator<< works like std::complex's: the stream's flags, precision and locale apply to every
@@ -163,6 +168,30 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
+/// Prints point_alignment{dual_quaternion{...}, rms, unique} (align_points.hpp); stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const point_alignment<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints similarity_alignment{point_alignment{...}, scale} (align_points.hpp); stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const similarity_alignment<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}
+/// (hand_eye.hpp); stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const hand_eye_calibration<T>& c) {
+    return detail::print_to_stream(os, c);
+}
+
 /// Prints swing_twist_parts{quaternion{...}, quaternion{...}}, swing then twist; stream settings as
 /// for vec3.
 template <class T, class CharT, class Traits>
@@ -246,6 +275,22 @@ template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
     : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
                                       std::formatter<T, CharT>> {};
+
+/// Formats point_alignment{dual_quaternion{...}, rms, unique}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::point_alignment<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
+
+/// Formats similarity_alignment{point_alignment{...}, scale}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::similarity_alignment<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
+
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::hand_eye_calibration<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>

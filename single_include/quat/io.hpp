@@ -41,6 +41,11 @@
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
 //   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
+//   point_alignment{dual_quaternion{...}, 0.25, true}          motion, rms, unique
+//   similarity_alignment{point_alignment{...}, 2}              scale
+//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true} mount, rotation_rms, translation_rms,
+//                                                             unique
+// (the last three where align_points.hpp or hand_eye.hpp is included too)
 //   zyx   intrinsic                                           sequence and frame: their names
 //
 // operator<< works like std::complex's: the stream's flags, precision and locale apply to every
@@ -84,6 +89,16 @@
 
 
 namespace quat {
+
+// The opt-in headers' results, printed where those headers are included: align_points.hpp,
+// hand_eye.hpp.
+template <class T>
+struct point_alignment;
+template <class T>
+struct similarity_alignment;
+template <class T>
+struct hand_eye_calibration;
+
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
 // `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
@@ -213,6 +228,35 @@ void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
     p.text(", ");
     write_layout(p, a.sensitivity);
     p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const point_alignment<T>& a) {
+    p.text("point_alignment{");
+    write_layout(p, a.motion);
+    p.text(", ");
+    p.value(a.rms);
+    p.text(a.unique ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const similarity_alignment<T>& a) {
+    p.text("similarity_alignment{");
+    write_layout(p, static_cast<const point_alignment<T>&>(a));
+    p.text(", ");
+    p.value(a.scale);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
+    p.text("hand_eye_calibration{");
+    write_layout(p, c.mount);
+    p.text(", ");
+    p.value(c.rotation_rms);
+    p.text(", ");
+    p.value(c.translation_rms);
+    p.text(c.unique ? ", true}" : ", false}");
 }
 
 template <class Printer, class T>
@@ -452,6 +496,30 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
+/// Prints point_alignment{dual_quaternion{...}, rms, unique} (align_points.hpp); stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const point_alignment<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints similarity_alignment{point_alignment{...}, scale} (align_points.hpp); stream settings as
+/// for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const similarity_alignment<T>& a) {
+    return detail::print_to_stream(os, a);
+}
+
+/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}
+/// (hand_eye.hpp); stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const hand_eye_calibration<T>& c) {
+    return detail::print_to_stream(os, c);
+}
+
 /// Prints swing_twist_parts{quaternion{...}, quaternion{...}}, swing then twist; stream settings as
 /// for vec3.
 template <class T, class CharT, class Traits>
@@ -535,6 +603,22 @@ template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
     : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
                                       std::formatter<T, CharT>> {};
+
+/// Formats point_alignment{dual_quaternion{...}, rms, unique}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::point_alignment<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
+
+/// Formats similarity_alignment{point_alignment{...}, scale}; the spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::similarity_alignment<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
+
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// spec applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::hand_eye_calibration<T>, CharT>
+    : ::quat::detail::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>

@@ -21,6 +21,16 @@
 #include "../vec3.hpp"
 
 namespace quat {
+
+// The opt-in headers' results, printed where those headers are included: align_points.hpp,
+// hand_eye.hpp.
+template <class T>
+struct point_alignment;
+template <class T>
+struct similarity_alignment;
+template <class T>
+struct hand_eye_calibration;
+
 #include "isa_namespace.inc"
 namespace detail {
 
@@ -127,6 +137,35 @@ void write_layout(Printer& p, const alignment_with_sensitivity<T>& a) {
     p.text(", ");
     write_layout(p, a.sensitivity);
     p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const point_alignment<T>& a) {
+    p.text("point_alignment{");
+    write_layout(p, a.motion);
+    p.text(", ");
+    p.value(a.rms);
+    p.text(a.unique ? ", true}" : ", false}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const similarity_alignment<T>& a) {
+    p.text("similarity_alignment{");
+    write_layout(p, static_cast<const point_alignment<T>&>(a));
+    p.text(", ");
+    p.value(a.scale);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
+    p.text("hand_eye_calibration{");
+    write_layout(p, c.mount);
+    p.text(", ");
+    p.value(c.rotation_rms);
+    p.text(", ");
+    p.value(c.translation_rms);
+    p.text(c.unique ? ", true}" : ", false}");
 }
 
 template <class Printer, class T>

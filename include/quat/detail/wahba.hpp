@@ -245,7 +245,10 @@ template <class T, class Target, class Source, class Weight>
 [[nodiscard]] constexpr alignment<T> rotation_of_profile(const T (&b)[3][3], std::size_t count,
                                                          Target target, Source source,
                                                          Weight weight) noexcept {
-    const symmetric_eigen4<T> eigen = detail::horn_eigen(rotation_matrix<T>{b});
+    const rotation_matrix<T> scaled = unit_scaled(rotation_matrix<T>{b});
+    const horn_solution<T> separated = detail::foam(scaled);
+    if (separated.eigenvalue_gap >= separated_gap<T>()) return {separated.rotation, T(0), true};
+    const symmetric_eigen4<T> eigen = detail::horn_eigen(scaled);
     const T gap = eigen.values[0] - eigen.values[1];
     const T tie = detail::sqrt(detail::epsilon<T>());
     bool unique = gap > tie;
@@ -293,7 +296,7 @@ template <class T, class Target, class Source, class Weight>
         // The eigenvector is good to about eps / gap: polish it where that is coarse. Below
         // 64 eps, Newton's H is too coarse to converge (each step would cut the error by less
         // than 32); best_turn's answer is then already good to eps.
-        if (gap < T(1) / T(4) && gap > T(64) * detail::epsilon<T>())
+        if (gap < separated_gap<T>() && gap > T(64) * detail::epsilon<T>())
             q = newton_refine(q, count, target, source, weight);
     } else if (count == 1 && eigen.values[0] > T(0)) {
         q = rotation_between(source(0), target(0));

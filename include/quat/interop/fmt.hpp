@@ -64,6 +64,22 @@ struct formatter<::quat::alignment_with_sensitivity<T>, Char>
     : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
                                       fmt::formatter<T, Char>> {};
 
+/// Formats point_alignment{dual_quaternion{...}, rms, unique}; the spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::point_alignment<T>, Char>
+    : ::quat::detail::value_formatter<::quat::point_alignment<T>, fmt::formatter<T, Char>> {};
+
+/// Formats similarity_alignment{point_alignment{...}, scale}; the spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::similarity_alignment<T>, Char>
+    : ::quat::detail::value_formatter<::quat::similarity_alignment<T>, fmt::formatter<T, Char>> {};
+
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// spec applies to each number.
+template <class T, class Char>
+struct formatter<::quat::hand_eye_calibration<T>, Char>
+    : ::quat::detail::value_formatter<::quat::hand_eye_calibration<T>, fmt::formatter<T, Char>> {};
+
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class Char>
 struct formatter<::quat::swing_twist_parts<T>, Char>
