@@ -367,6 +367,8 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     for (const dual_quaterniond& h : hand_d) eye_d.push_back(inverse(mount_d) * h * mount_d);
     check_same(hand_eye(hand, eye).mount.dual, hand_eye(hand_d, eye_d).mount.dual);
     check_same(try_hand_eye(hand, eye)->mount.real, try_hand_eye(hand_d, eye_d)->mount.real);
+    check_same(hand_eye(hand, eye, hand_eye_method::rotation_first).mount.dual,
+               hand_eye(hand_d, eye_d, hand_eye_method::rotation_first).mount.dual);
     transform(da, points, rotated);
     CHECK(same(rotated[1].x, transform(dad, vd).x));
 }

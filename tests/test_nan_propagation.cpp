@@ -254,6 +254,8 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK((bad(calibrated.mount.real) && bad(calibrated.mount.dual) &&
                bad(calibrated.rotation_rms) && !calibrated.unique));
         CHECK_FALSE(quat::try_hand_eye(hands, eyes).has_value());
+        const auto first = quat::hand_eye(hands, eyes, quat::hand_eye_method::rotation_first);
+        CHECK((bad(first.mount.real) && bad(first.mount.dual) && !first.unique));
 
         // mean.hpp
         const std::vector<quaternion<T>> cluster{unit, other, q};

@@ -229,8 +229,8 @@ template <class T, class A, class B>
     vec3<T> t{T(0), T(0), T(0)};
     if (largest > T(0)) {
         for (int x = 0; x < 3; ++x) {
-            rhs[x] /= largest;
-            for (int y = 0; y < 3; ++y) normal[x][y] /= largest;
+            rhs[x] = rhs[x] / largest;
+            for (int y = 0; y < 3; ++y) normal[x][y] = normal[x][y] / largest;
         }
         const symmetric_eigen_n<3, T> e = jacobi_eigen<3>(normal);
         for (std::size_t k = 0; k < 3; ++k) {

@@ -43,7 +43,8 @@ T estimation() {
     const std::array<dual_quaternion<T>, 2> eye{hand[1], hand[0]};
     const hand_eye_calibration<T> mount = hand_eye(hand, eye);
     sum += mount.rotation_rms + mount.mount.real.w +
-           try_hand_eye(hand, eye).value_or(mount).translation_rms;
+           try_hand_eye(hand, eye).value_or(mount).translation_rms +
+           hand_eye(hand, eye, hand_eye_method::rotation_first).rotation_rms;
     const std::vector<quaternion<T>> rotations{quaternion<T>::identity(), rotation, -rotation};
     sum += mean(rotations).w + mean(rotations, weights).x;
     sum += try_mean(rotations).value_or(quaternion<T>::identity()).y;
