@@ -150,18 +150,13 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_rotation_vector(
     const vec3<T>& rotation_vector) noexcept {
-    const T angle = norm(rotation_vector);
-    const T angle2 = angle * angle;
-    T w{}, scale{};  // scale = sin(angle / 2) / angle
-    if (angle2 * angle2 < detail::epsilon<T>()) {
-        // Taylor series; the first omitted terms are below epsilon^1.5.
-        w = T(1) - angle2 / T(8) + angle2 * angle2 / T(384);
-        scale = T(0.5) - angle2 / T(48) + angle2 * angle2 / T(3840);
-    } else {
-        w = detail::cos(angle / T(2));
-        scale = detail::sin(angle / T(2)) / angle;
-    }
-    return {w, rotation_vector.x * scale, rotation_vector.y * scale, rotation_vector.z * scale};
+    // The half angle's square from the squared norm, not from norm, so that a dual-number scalar
+    // gets finite derivatives at the zero vector (norm's square root is only read past the series).
+    const detail::cos_and_sinc<T> half =
+        detail::cos_sinc(squared_norm(rotation_vector) * T(0.25), norm(rotation_vector) * T(0.5));
+    const T scale = half.sinc * T(0.5);  // sin(angle / 2) / angle
+    return {half.cos, rotation_vector.x * scale, rotation_vector.y * scale,
+            rotation_vector.z * scale};
 }
 
 /// Logarithm map: the rotation vector angle * axis of q, with angle in [0, pi] (q and -q agree).
@@ -171,14 +166,14 @@ template <class T>
     const quaternion<T> r = detail::rescaled(q);
     const quaternion<T> p = r.w < T(0) ? -r : r;
     const vec3<T> u{p.x, p.y, p.z};
-    const T s = norm(u);
-    const T ratio = s / p.w;  // tan(angle / 2) when p.w > 0
-    if (p.w > T(0) && ratio * ratio * ratio * ratio < detail::epsilon<T>()) {
-        // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
-        const T r2 = ratio * ratio;
-        return (u / p.w) * (T(2) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
-    }
+    // Small angles: r^2 = tan^2(angle / 2) from |u|^2, without norm's square root (whose
+    // derivative at the identity is 0/0 for a dual-number scalar); 2 atan(r) / |u| =
+    // (2 / w) atan(r) / r.
+    const T s2 = squared_norm(u);
+    if (detail::atan_series_suffices(s2, p.w))
+        return (u / p.w) * (T(2) * detail::atan_ratio_series(s2 / (p.w * p.w)));
     // Dividing u first keeps 1/s from overflowing for a subnormal-scaled q.
+    const T s = norm(u);
     return (u / s) * (T(2) * detail::atan2(s, p.w));
 }
 

@@ -15,11 +15,36 @@
 namespace quat {
 
 #include "detail/isa_namespace.inc"
+namespace detail {
+
+/// The principal power p^t of a unit p with p.w >= 0 (or any w for p off the identity): turns by
+/// t times p's angle about p's axis. Near the identity half the new angle is k |u| with k = t
+/// atan(r) / (r w), r = |u| / w, from series in |u|^2, so that no square root of zero sits on the
+/// path a dual-number scalar differentiates; elsewhere the closed form.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> power_of_unit(const quaternion<T>& p, T t) noexcept {
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s2 = squared_norm(u);
+    if (atan_series_suffices(s2, p.w)) {
+        const T k = t * atan_ratio_series(s2 / (p.w * p.w)) / p.w;  // half the new angle over |u|
+        const cos_and_sinc<T> half = cos_sinc(k * k * s2, k * norm(u));
+        const vec3<T> v = u * (k * half.sinc);
+        return {half.cos, v.x, v.y, v.z};
+    }
+    const T s = norm(u);
+    const T half = t * atan2(s, p.w);
+    const vec3<T> v = u / s * sin(half);
+    return {cos(half), v.x, v.y, v.z};
+}
+
+}  // namespace detail
+
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
 /// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
-/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
-/// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b
-/// (checked in debug builds). A NaN or infinite a, b or t gives a non-finite result.
+/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar, which may carry
+/// derivatives, to rounding). The angle comes from the chord |a - b|, accurate for nearly equal
+/// and nearly opposite inputs. Precondition: unit a and b (checked in debug builds). A NaN or
+/// infinite a, b or t gives a non-finite result.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             detail::type_identity_t<T> t) noexcept {
@@ -27,19 +52,22 @@ template <class T>
                 "quat::slerp: a or b is not a unit quaternion");
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a NaN or infinite other end
-    // visible instead of returning a clean-looking value.
-    if (t == T(0)) return a + (near - near);
-    if (t == T(1)) return near + (a - a);
+    // visible instead of returning a clean-looking value. Not for a user scalar, whose t may carry
+    // a derivative that a constant would drop: the formulas below give the ends to rounding.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(0)) return a + (near - near);
+        if (t == T(1)) return near + (a - a);
+    }
     if (t < T(0) || t > T(1)) {
         // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
         // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
         const quaternion<T> relative = conjugate(a) * near;
-        const vec3<T> u{relative.x, relative.y, relative.z};
-        const T s = norm(u);
-        if (s == T(0)) return detail::is_finite(t) ? a : a * t;  // no motion; a bad t stays visible
-        const T half_turn = t * detail::atan2(s, relative.w);
-        const vec3<T> v = u / s * detail::sin(half_turn);
-        return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
+        if constexpr (std::is_floating_point_v<T>) {
+            // No motion; a bad t stays visible.
+            if (relative.x == T(0) && relative.y == T(0) && relative.z == T(0))
+                return detail::is_finite(t) ? a : a * t;
+        }
+        return a * detail::power_of_unit(relative, t);
     }
     // With h half the angle between a and near (h <= pi/4 since dot(a, near) >= 0), the slerp
     // path is cos(u) e + sin(u) f, u = (2t - 1) h, where e and f are the orthonormal directions
@@ -49,9 +77,23 @@ template <class T>
     // accurate for nearly equal inputs, unlike acos of the dot product.
     const quaternion<T> sum = a + near;
     const quaternion<T> difference = near - a;
-    const T chord = detail::sqrt(squared_norm(difference));
-    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on below).
-    if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
+    const T chord2 = squared_norm(difference);
+    const T chord = detail::sqrt(chord2);  // read only past the series below
+    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on
+    // below). A user scalar takes the series below, which keeps the derivatives in b and t.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
+    }
+    const T sine2 = chord2 * T(0.25);  // sin^2 h
+    if (detail::series_suffices(sine2)) {
+        // u = (2t - 1) h = ratio sin h, and sin(u) / chord = sinc(u) ratio / 2, from series in
+        // sin^2 h: no square root of zero on the path a dual-number scalar differentiates.
+        const T ratio = (t + t - T(1)) * detail::asin_ratio_series(sine2);
+        const detail::cos_and_sinc<T> cs =
+            detail::cos_sinc(ratio * ratio * sine2, ratio * chord * T(0.5));
+        return sum * (cs.cos / detail::sqrt(squared_norm(sum))) +
+               difference * (cs.sinc * ratio * T(0.5));
+    }
     const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
     return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
            difference * (detail::sin(u) / chord);
@@ -68,52 +110,48 @@ template <class T>
 
 /// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
 /// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
-/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly.
-/// The half angle comes from atan2(|v|, w), accurate near the identity and near a half turn.
-/// Precondition: unit q (checked in debug builds). A NaN or infinite q or t gives a non-finite
-/// result. glm::pow differs for w < 0: it keeps q's sign and so takes the longer arc.
+/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly (a
+/// user scalar, which may carry derivatives, to rounding). The half angle comes from
+/// atan2(|v|, w), accurate near the identity and near a half turn. Precondition: unit q (checked
+/// in debug builds). A NaN or infinite q or t gives a non-finite result. glm::pow differs for
+/// w < 0: it keeps q's sign and so takes the longer arc.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
                                           detail::type_identity_t<T> t) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
     const quaternion<T> p = q.w < T(0) ? -q : q;
-    if (t == T(1)) return p;
-    const quaternion<T> identity = quaternion<T>::identity();
-    // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
-    if (t == T(0)) return identity + (p - p);
-    const vec3<T> u{p.x, p.y, p.z};
-    const T s = norm(u);
-    if (s == T(0) && p.w > T(0)) return detail::is_finite(t) ? identity + (p - p) : identity * t;
-    const T half = t * detail::atan2(s, p.w);
-    const vec3<T> v = u / s * detail::sin(half);
+    // Exact shortcuts; not for a user scalar, whose q and t may carry derivatives that a constant
+    // would drop (power_of_unit gives the same values to rounding).
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(1)) return p;
+        const quaternion<T> identity = quaternion<T>::identity();
+        // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
+        if (t == T(0)) return identity + (p - p);
+        // (The identity needs no shortcut: power_of_unit's series gives it exactly.)
+    }
     // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
-    return quaternion<T>{detail::cos(half), v.x, v.y, v.z} + (p - p);
+    return detail::power_of_unit(p, t) + (p - p);
 }
 
 /// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
 /// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
 /// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
-/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept) to huge or subnormal |v| (measured as
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
 /// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
 /// ignores w and returns the identity for |v| < epsilon.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
     const vec3<T> v{q.x, q.y, q.z};
     const T e = detail::scalar_exp(q.w);
-    const T angle = norm(v);
-    if (angle == T(0)) return {e, q.x, q.y, q.z};
-    const T angle2 = angle * angle;
-    T c{}, sinc{};  // cos|v| and sin|v| / |v|
-    if (angle2 * angle2 < detail::epsilon<T>()) {
-        // Taylor series; the first omitted terms are below epsilon^1.5.
-        c = T(1) - angle2 / T(2) + angle2 * angle2 / T(24);
-        sinc = T(1) - angle2 / T(6) + angle2 * angle2 / T(120);
-    } else {
-        c = detail::cos(angle);
-        sinc = detail::sin(angle) / angle;
+    if constexpr (std::is_floating_point_v<T>) {
+        // Exactly real: v itself, signed zeros kept and no 0 * Inf where e^w overflows. (A user
+        // scalar's v may carry derivatives, which e^w scales: it takes the series below.)
+        if (q.x == T(0) && q.y == T(0) && q.z == T(0)) return {e, q.x, q.y, q.z};
     }
-    const vec3<T> u = v * (sinc * e);
-    return {c * e, u.x, u.y, u.z};
+    // cos|v| and sin|v| / |v|, by series in |v|^2 for small |v| (no square root of zero there).
+    const detail::cos_and_sinc<T> cs = detail::cos_sinc(squared_norm(v), norm(v));
+    const vec3<T> u = v * (cs.sinc * e);
+    return {cs.cos * e, u.x, u.y, u.z};
 }
 
 /// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
@@ -140,6 +178,13 @@ template <class T>
         log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
     }
     const vec3<T> v{q.x, q.y, q.z};
+    // Near the real axis v / |v| atan2(|v|, w) = (v / w) atan(r) / r with r = |v| / w, from
+    // series in r^2: no square root of zero on the path a dual-number scalar differentiates.
+    const T v2 = squared_norm(v);
+    if (detail::atan_series_suffices(v2, q.w)) {
+        const vec3<T> u = v / q.w * detail::atan_ratio_series(v2 / (q.w * q.w));
+        return {log_norm, u.x, u.y, u.z};
+    }
     const T length = norm(v);
     if (length == T(0)) {
         if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};

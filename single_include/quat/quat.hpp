@@ -516,6 +516,53 @@ template <class T>
     return a < b ? b : a;
 }
 
+// Small angles. Near zero the closed forms below divide a zero by a zero, and a dual-number scalar
+// (forward-mode differentiation) takes the derivative of x = sqrt(x^2) at 0 as 0/0 = NaN even where
+// the function is smooth. So below x^4 < epsilon each is a series in x^2, which a dual number
+// differentiates exactly, and x itself is not read there; two terms leave the first omitted one
+// below epsilon^1.5 relative, and its derivative below epsilon relative to the function's.
+
+/// cos x and sin(x) / x.
+template <class T>
+struct cos_and_sinc {
+    T cos, sinc;
+};
+
+/// True where the two-term series below are exact to rounding: x2^2 < epsilon.
+template <class T>
+[[nodiscard]] constexpr bool series_suffices(T x2) noexcept {
+    return x2 * x2 < epsilon<T>();
+}
+
+/// cos x and sin(x) / x for x = sqrt(x2) >= 0, given both x2 and x; x is read only where
+/// series_suffices(x2) is false (a NaN or infinite x2 gives NaN, through cos and sin).
+template <class T>
+[[nodiscard]] constexpr cos_and_sinc<T> cos_sinc(T x2, T x) noexcept {
+    if (series_suffices(x2))
+        return {T(1) - x2 / T(2) + x2 * x2 / T(24), T(1) - x2 / T(6) + x2 * x2 / T(120)};
+    return {cos(x), sin(x) / x};
+}
+
+/// True where w > 0 and r = sqrt(s2) / w has r^4 < epsilon, so that atan_ratio_series(s2 / w^2)
+/// is exact to rounding: series_suffices(s2 / w^2) without the division where it is false.
+template <class T>
+[[nodiscard]] constexpr bool atan_series_suffices(T s2, T w) noexcept {
+    const T w2 = w * w;
+    return w > T(0) && s2 * s2 < epsilon<T>() * (w2 * w2);
+}
+
+/// atan(r) / r = 1 - r^2/3 + r^4/5 - ..., given r2 = r^2 with series_suffices(r2).
+template <class T>
+[[nodiscard]] constexpr T atan_ratio_series(T r2) noexcept {
+    return T(1) - r2 / T(3) + r2 * r2 / T(5);
+}
+
+/// asin(x) / x = 1 + x^2/6 + 3 x^4/40 + ..., given x2 = x^2 with series_suffices(x2).
+template <class T>
+[[nodiscard]] constexpr T asin_ratio_series(T x2) noexcept {
+    return T(1) + x2 / T(6) + x2 * x2 * T(3) / T(40);
+}
+
 namespace compile_time {
 
 /// a b as high + low exactly (Dekker's product with Veltkamp's split, no fma), usable in constant
@@ -1614,18 +1661,13 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_rotation_vector(
     const vec3<T>& rotation_vector) noexcept {
-    const T angle = norm(rotation_vector);
-    const T angle2 = angle * angle;
-    T w{}, scale{};  // scale = sin(angle / 2) / angle
-    if (angle2 * angle2 < detail::epsilon<T>()) {
-        // Taylor series; the first omitted terms are below epsilon^1.5.
-        w = T(1) - angle2 / T(8) + angle2 * angle2 / T(384);
-        scale = T(0.5) - angle2 / T(48) + angle2 * angle2 / T(3840);
-    } else {
-        w = detail::cos(angle / T(2));
-        scale = detail::sin(angle / T(2)) / angle;
-    }
-    return {w, rotation_vector.x * scale, rotation_vector.y * scale, rotation_vector.z * scale};
+    // The half angle's square from the squared norm, not from norm, so that a dual-number scalar
+    // gets finite derivatives at the zero vector (norm's square root is only read past the series).
+    const detail::cos_and_sinc<T> half =
+        detail::cos_sinc(squared_norm(rotation_vector) * T(0.25), norm(rotation_vector) * T(0.5));
+    const T scale = half.sinc * T(0.5);  // sin(angle / 2) / angle
+    return {half.cos, rotation_vector.x * scale, rotation_vector.y * scale,
+            rotation_vector.z * scale};
 }
 
 /// Logarithm map: the rotation vector angle * axis of q, with angle in [0, pi] (q and -q agree).
@@ -1635,14 +1677,14 @@ template <class T>
     const quaternion<T> r = detail::rescaled(q);
     const quaternion<T> p = r.w < T(0) ? -r : r;
     const vec3<T> u{p.x, p.y, p.z};
-    const T s = norm(u);
-    const T ratio = s / p.w;  // tan(angle / 2) when p.w > 0
-    if (p.w > T(0) && ratio * ratio * ratio * ratio < detail::epsilon<T>()) {
-        // 2 atan(r) / s = (2 / w) (1 - r^2/3 + r^4/5 - ...)
-        const T r2 = ratio * ratio;
-        return (u / p.w) * (T(2) * (T(1) - r2 / T(3) + r2 * r2 / T(5)));
-    }
+    // Small angles: r^2 = tan^2(angle / 2) from |u|^2, without norm's square root (whose
+    // derivative at the identity is 0/0 for a dual-number scalar); 2 atan(r) / |u| =
+    // (2 / w) atan(r) / r.
+    const T s2 = squared_norm(u);
+    if (detail::atan_series_suffices(s2, p.w))
+        return (u / p.w) * (T(2) * detail::atan_ratio_series(s2 / (p.w * p.w)));
     // Dividing u first keeps 1/s from overflowing for a subnormal-scaled q.
+    const T s = norm(u);
     return (u / s) * (T(2) * detail::atan2(s, p.w));
 }
 
@@ -4090,11 +4132,36 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// The principal power p^t of a unit p with p.w >= 0 (or any w for p off the identity): turns by
+/// t times p's angle about p's axis. Near the identity half the new angle is k |u| with k = t
+/// atan(r) / (r w), r = |u| / w, from series in |u|^2, so that no square root of zero sits on the
+/// path a dual-number scalar differentiates; elsewhere the closed form.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> power_of_unit(const quaternion<T>& p, T t) noexcept {
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s2 = squared_norm(u);
+    if (atan_series_suffices(s2, p.w)) {
+        const T k = t * atan_ratio_series(s2 / (p.w * p.w)) / p.w;  // half the new angle over |u|
+        const cos_and_sinc<T> half = cos_sinc(k * k * s2, k * norm(u));
+        const vec3<T> v = u * (k * half.sinc);
+        return {half.cos, v.x, v.y, v.z};
+    }
+    const T s = norm(u);
+    const T half = t * atan2(s, p.w);
+    const vec3<T> v = u / s * sin(half);
+    return {cos(half), v.x, v.y, v.z};
+}
+
+}  // namespace detail
+
 /// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
 /// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
-/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. The angle comes from the chord
-/// |a - b|, accurate for nearly equal and nearly opposite inputs. Precondition: unit a and b
-/// (checked in debug builds). A NaN or infinite a, b or t gives a non-finite result.
+/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar, which may carry
+/// derivatives, to rounding). The angle comes from the chord |a - b|, accurate for nearly equal
+/// and nearly opposite inputs. Precondition: unit a and b (checked in debug builds). A NaN or
+/// infinite a, b or t gives a non-finite result.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
                                             detail::type_identity_t<T> t) noexcept {
@@ -4102,19 +4169,22 @@ template <class T>
                 "quat::slerp: a or b is not a unit quaternion");
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
     // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a NaN or infinite other end
-    // visible instead of returning a clean-looking value.
-    if (t == T(0)) return a + (near - near);
-    if (t == T(1)) return near + (a - a);
+    // visible instead of returning a clean-looking value. Not for a user scalar, whose t may carry
+    // a derivative that a constant would drop: the formulas below give the ends to rounding.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(0)) return a + (near - near);
+        if (t == T(1)) return near + (a - a);
+    }
     if (t < T(0) || t > T(1)) {
         // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
         // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
         const quaternion<T> relative = conjugate(a) * near;
-        const vec3<T> u{relative.x, relative.y, relative.z};
-        const T s = norm(u);
-        if (s == T(0)) return detail::is_finite(t) ? a : a * t;  // no motion; a bad t stays visible
-        const T half_turn = t * detail::atan2(s, relative.w);
-        const vec3<T> v = u / s * detail::sin(half_turn);
-        return a * quaternion<T>{detail::cos(half_turn), v.x, v.y, v.z};
+        if constexpr (std::is_floating_point_v<T>) {
+            // No motion; a bad t stays visible.
+            if (relative.x == T(0) && relative.y == T(0) && relative.z == T(0))
+                return detail::is_finite(t) ? a : a * t;
+        }
+        return a * detail::power_of_unit(relative, t);
     }
     // With h half the angle between a and near (h <= pi/4 since dot(a, near) >= 0), the slerp
     // path is cos(u) e + sin(u) f, u = (2t - 1) h, where e and f are the orthonormal directions
@@ -4124,9 +4194,23 @@ template <class T>
     // accurate for nearly equal inputs, unlike acos of the dot product.
     const quaternion<T> sum = a + near;
     const quaternion<T> difference = near - a;
-    const T chord = detail::sqrt(squared_norm(difference));
-    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on below).
-    if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
+    const T chord2 = squared_norm(difference);
+    const T chord = detail::sqrt(chord2);  // read only past the series below
+    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on
+    // below). A user scalar takes the series below, which keeps the derivatives in b and t.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
+    }
+    const T sine2 = chord2 * T(0.25);  // sin^2 h
+    if (detail::series_suffices(sine2)) {
+        // u = (2t - 1) h = ratio sin h, and sin(u) / chord = sinc(u) ratio / 2, from series in
+        // sin^2 h: no square root of zero on the path a dual-number scalar differentiates.
+        const T ratio = (t + t - T(1)) * detail::asin_ratio_series(sine2);
+        const detail::cos_and_sinc<T> cs =
+            detail::cos_sinc(ratio * ratio * sine2, ratio * chord * T(0.5));
+        return sum * (cs.cos / detail::sqrt(squared_norm(sum))) +
+               difference * (cs.sinc * ratio * T(0.5));
+    }
     const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
     return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
            difference * (detail::sin(u) / chord);
@@ -4143,52 +4227,48 @@ template <class T>
 
 /// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
 /// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
-/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly.
-/// The half angle comes from atan2(|v|, w), accurate near the identity and near a half turn.
-/// Precondition: unit q (checked in debug builds). A NaN or infinite q or t gives a non-finite
-/// result. glm::pow differs for w < 0: it keeps q's sign and so takes the longer arc.
+/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly (a
+/// user scalar, which may carry derivatives, to rounding). The half angle comes from
+/// atan2(|v|, w), accurate near the identity and near a half turn. Precondition: unit q (checked
+/// in debug builds). A NaN or infinite q or t gives a non-finite result. glm::pow differs for
+/// w < 0: it keeps q's sign and so takes the longer arc.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
                                           detail::type_identity_t<T> t) noexcept {
     QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
     const quaternion<T> p = q.w < T(0) ? -q : q;
-    if (t == T(1)) return p;
-    const quaternion<T> identity = quaternion<T>::identity();
-    // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
-    if (t == T(0)) return identity + (p - p);
-    const vec3<T> u{p.x, p.y, p.z};
-    const T s = norm(u);
-    if (s == T(0) && p.w > T(0)) return detail::is_finite(t) ? identity + (p - p) : identity * t;
-    const T half = t * detail::atan2(s, p.w);
-    const vec3<T> v = u / s * detail::sin(half);
+    // Exact shortcuts; not for a user scalar, whose q and t may carry derivatives that a constant
+    // would drop (power_of_unit gives the same values to rounding).
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(1)) return p;
+        const quaternion<T> identity = quaternion<T>::identity();
+        // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
+        if (t == T(0)) return identity + (p - p);
+        // (The identity needs no shortcut: power_of_unit's series gives it exactly.)
+    }
     // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
-    return quaternion<T>{detail::cos(half), v.x, v.y, v.z} + (p - p);
+    return detail::power_of_unit(p, t) + (p - p);
 }
 
 /// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
 /// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
 /// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
-/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept) to huge or subnormal |v| (measured as
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
 /// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
 /// ignores w and returns the identity for |v| < epsilon.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
     const vec3<T> v{q.x, q.y, q.z};
     const T e = detail::scalar_exp(q.w);
-    const T angle = norm(v);
-    if (angle == T(0)) return {e, q.x, q.y, q.z};
-    const T angle2 = angle * angle;
-    T c{}, sinc{};  // cos|v| and sin|v| / |v|
-    if (angle2 * angle2 < detail::epsilon<T>()) {
-        // Taylor series; the first omitted terms are below epsilon^1.5.
-        c = T(1) - angle2 / T(2) + angle2 * angle2 / T(24);
-        sinc = T(1) - angle2 / T(6) + angle2 * angle2 / T(120);
-    } else {
-        c = detail::cos(angle);
-        sinc = detail::sin(angle) / angle;
+    if constexpr (std::is_floating_point_v<T>) {
+        // Exactly real: v itself, signed zeros kept and no 0 * Inf where e^w overflows. (A user
+        // scalar's v may carry derivatives, which e^w scales: it takes the series below.)
+        if (q.x == T(0) && q.y == T(0) && q.z == T(0)) return {e, q.x, q.y, q.z};
     }
-    const vec3<T> u = v * (sinc * e);
-    return {c * e, u.x, u.y, u.z};
+    // cos|v| and sin|v| / |v|, by series in |v|^2 for small |v| (no square root of zero there).
+    const detail::cos_and_sinc<T> cs = detail::cos_sinc(squared_norm(v), norm(v));
+    const vec3<T> u = v * (cs.sinc * e);
+    return {cs.cos * e, u.x, u.y, u.z};
 }
 
 /// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
@@ -4215,6 +4295,13 @@ template <class T>
         log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
     }
     const vec3<T> v{q.x, q.y, q.z};
+    // Near the real axis v / |v| atan2(|v|, w) = (v / w) atan(r) / r with r = |v| / w, from
+    // series in r^2: no square root of zero on the path a dual-number scalar differentiates.
+    const T v2 = squared_norm(v);
+    if (detail::atan_series_suffices(v2, q.w)) {
+        const vec3<T> u = v / q.w * detail::atan_ratio_series(v2 / (q.w * q.w));
+        return {log_norm, u.x, u.y, u.z};
+    }
     const T length = norm(v);
     if (length == T(0)) {
         if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};
@@ -7637,6 +7724,7 @@ bool rotation_spline<T>::build() {
 #define QUAT_SCLERP_HPP_INCLUDED
 
 #include <limits>
+#include <type_traits>
 
 
 namespace quat {
@@ -7669,10 +7757,11 @@ inline namespace isa_generic {
 /// constant screw velocity, so the angle about the screw axis and the slide along it grow linearly
 /// in t; equal to the matrix form a exp(t log(a^-1 b)) of the 4x4 transforms. Takes the shorter
 /// path (relative angle in [0, pi], as slerp does); t outside [0, 1] extrapolates along the same
-/// screw. Returns a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly. Stable for equal
-/// and nearly equal rotations (a pure or nearly pure translation) and near half turns: no division
-/// by the sine of a small angle. Precondition: unit a and b (debug-checked real parts); NaN or
-/// infinite input gives a non-finite result.
+/// screw. Returns a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar,
+/// which may carry derivatives, to rounding). Stable for equal and nearly equal rotations (a pure
+/// or nearly pure translation) and near half turns: no division by the sine of a small angle.
+/// Precondition: unit a and b (debug-checked real parts); NaN or infinite input gives a non-finite
+/// result.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> sclerp(const dual_quaternion<T>& a,
                                                   const dual_quaternion<T>& b,
@@ -7681,32 +7770,62 @@ template <class T>
                 "quat::sclerp: a or b is not a unit dual quaternion");
     const dual_quaternion<T> near = dot(a.real, b.real) < T(0) ? -b : b;
     // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a bad other end visible.
-    if (t == T(0)) return {a.real + (near.real - near.real), a.dual + (near.dual - near.dual)};
-    if (t == T(1)) return {near.real + (a.real - a.real), near.dual + (a.dual - a.dual)};
+    // Not for a user scalar, whose t may carry a derivative that a constant would drop.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(0)) return {a.real + (near.real - near.real), a.dual + (near.dual - near.dual)};
+        if (t == T(1)) return {near.real + (a.real - a.real), near.dual + (a.dual - a.dual)};
+    }
 
     // The relative motion a^-1 near: rotation r (w >= 0, formed accurately for nearly equal
     // rotations) and translation u, both in a's frame.
     const quaternion<T> r = detail::relative_rotation<true>(a.real, near.real);
     const vec3<T> u = rotate(conjugate(a.real), translation_of(near) - translation_of(a));
     const vec3<T> v{r.x, r.y, r.z};
-    const T s = norm(v), n = norm(r);
-    const T h = detail::atan2(s, r.w);  // half the relative angle, in [0, pi/2]
-    const T sine = detail::sin(t * h), cosine = detail::cos(t * h);
-    // ratio = sin(t h) / sin(h), with its series where sin(h) is tiny or zero (the next term,
-    // t (1 - t^2)(7 - 3 t^2) h^4 / 360, is below eps there for t in [0, 1]).
-    const T ratio =
-        h * h < detail::epsilon<T>() ? t + t * (T(1) - t * t) * (h * h) / T(6) : sine * n / s;
+    const T s2 = squared_norm(v), s = norm(v);
+    // Everything below is written with v and |v|^2, never the axis v / |v|, and with series
+    // where h, half the relative angle, is small (|v| is read only where it is not): accurate for
+    // tiny h (a pure or nearly pure translation), and a dual-number scalar gets finite derivatives
+    // at h = 0. hs = h / |v|, by atan's series near h = 0 (w = 0, a half turn, is left to atan2,
+    // also in constant evaluation, where 1 / 0 is an error).
+    T hs{}, cosine{}, sine_over_s{};  // h / |v|, cos(t h), sin(t h) / |v|
+    T inverse2{};                     // 1 / |v|^2 where h is not small, else 0
+    if (detail::atan_series_suffices(s2, r.w)) {
+        hs = detail::atan_ratio_series(s2 / (r.w * r.w)) / r.w;
+        const detail::cos_and_sinc<T> turn_t = detail::cos_sinc(t * t * hs * hs * s2, t * hs * s);
+        cosine = turn_t.cos;
+        sine_over_s = t * hs * turn_t.sinc;
+    } else {
+        const T h = detail::atan2(s, r.w), inverse = T(1) / s;
+        hs = h * inverse;
+        cosine = detail::cos(t * h);
+        sine_over_s = detail::sin(t * h) * inverse;
+        inverse2 = inverse * inverse;
+    }
+    const T h2 = hs * hs * s2;
     // The screw moves u to (A I + B [l]x + (t - A) l l^T) u, l the axis, with A + i B =
     // sin(t h) / sin(h) e^{i (t - 1) h}: the ratio (1 - e^{i t 2h}) / (1 - e^{i 2h}) by which
-    // (I - R) scales the plane across the axis, while the slide along l is t times u's. B and
-    // t - A vanish with h, so the axis direction, inaccurate for tiny h, never matters.
-    const T ch = r.w / n, sh = s / n;
-    const T across_cos = ratio * (cosine * ch + sine * sh);  // A
-    const T across_sin = ratio * (sine * ch - cosine * sh);  // B
-    const vec3<T> l = s > T(0) ? v / s : vec3<T>{T(0), T(0), T(0)};
+    // (I - R) scales the plane across the axis, while the slide along l is t times u's. With
+    // l = v / |v|, sin(h) = |v| / |r| and cos(h) = w / |r|: A = (sin(t h) / |v|)(cos(t h) w +
+    // sin(t h) |v|), B l = (B / |v|) v and (t - A) l l^T = ((t - A) / |v|^2) v v^T.
+    const T across_cos = sine_over_s * (cosine * r.w + sine_over_s * s2);    // A
+    const T across_sin_over_s = sine_over_s * (sine_over_s * r.w - cosine);  // B / |v|
+    // (t - A) / |v|^2 = m D |r| hs^3 / 2, m = 2t - 1, D = (sinc(h) - sinc(m h)) / h^2, which
+    // cancels in closed form for small h: its series while the first omitted term,
+    // h^6 (m^8 - 1) / 362880, is below epsilon relative to D (at most g^6 / 15120 of it).
+    const T m = t + t - T(1), m2 = m * m;
+    const T g2 = h2 * detail::max(T(1), m2);
+    T slide{};
+    if (g2 * g2 * g2 < T(15120) * detail::epsilon<T>()) {
+        const T d = (m2 - T(1)) / T(6) - h2 * (m2 * m2 - T(1)) / T(120) +
+                    h2 * h2 * (m2 * m2 * m2 - T(1)) / T(5040);
+        slide = m * d * norm(r) * hs * hs * hs / T(2);
+    } else {
+        // (The division only where h is tiny but |t| beyond about 50.)
+        slide = (t - across_cos) * (inverse2 > T(0) ? inverse2 : T(1) / s2);
+    }
     const vec3<T> moved =
-        u * across_cos + cross(l, u) * across_sin + l * ((t - across_cos) * dot(l, u));
-    const vec3<T> turn = l * sine;
+        u * across_cos + cross(v, u) * across_sin_over_s + v * (dot(v, u) * slide);
+    const vec3<T> turn = v * sine_over_s;
     return a * to_dual_quaternion(quaternion<T>{cosine, turn.x, turn.y, turn.z}, moved);
 }
 }  // inline namespace isa_...

@@ -380,6 +380,53 @@ template <class T>
     return a < b ? b : a;
 }
 
+// Small angles. Near zero the closed forms below divide a zero by a zero, and a dual-number scalar
+// (forward-mode differentiation) takes the derivative of x = sqrt(x^2) at 0 as 0/0 = NaN even where
+// the function is smooth. So below x^4 < epsilon each is a series in x^2, which a dual number
+// differentiates exactly, and x itself is not read there; two terms leave the first omitted one
+// below epsilon^1.5 relative, and its derivative below epsilon relative to the function's.
+
+/// cos x and sin(x) / x.
+template <class T>
+struct cos_and_sinc {
+    T cos, sinc;
+};
+
+/// True where the two-term series below are exact to rounding: x2^2 < epsilon.
+template <class T>
+[[nodiscard]] constexpr bool series_suffices(T x2) noexcept {
+    return x2 * x2 < epsilon<T>();
+}
+
+/// cos x and sin(x) / x for x = sqrt(x2) >= 0, given both x2 and x; x is read only where
+/// series_suffices(x2) is false (a NaN or infinite x2 gives NaN, through cos and sin).
+template <class T>
+[[nodiscard]] constexpr cos_and_sinc<T> cos_sinc(T x2, T x) noexcept {
+    if (series_suffices(x2))
+        return {T(1) - x2 / T(2) + x2 * x2 / T(24), T(1) - x2 / T(6) + x2 * x2 / T(120)};
+    return {cos(x), sin(x) / x};
+}
+
+/// True where w > 0 and r = sqrt(s2) / w has r^4 < epsilon, so that atan_ratio_series(s2 / w^2)
+/// is exact to rounding: series_suffices(s2 / w^2) without the division where it is false.
+template <class T>
+[[nodiscard]] constexpr bool atan_series_suffices(T s2, T w) noexcept {
+    const T w2 = w * w;
+    return w > T(0) && s2 * s2 < epsilon<T>() * (w2 * w2);
+}
+
+/// atan(r) / r = 1 - r^2/3 + r^4/5 - ..., given r2 = r^2 with series_suffices(r2).
+template <class T>
+[[nodiscard]] constexpr T atan_ratio_series(T r2) noexcept {
+    return T(1) - r2 / T(3) + r2 * r2 / T(5);
+}
+
+/// asin(x) / x = 1 + x^2/6 + 3 x^4/40 + ..., given x2 = x^2 with series_suffices(x2).
+template <class T>
+[[nodiscard]] constexpr T asin_ratio_series(T x2) noexcept {
+    return T(1) + x2 / T(6) + x2 * x2 * T(3) / T(40);
+}
+
 namespace compile_time {
 
 /// a b as high + low exactly (Dekker's product with Veltkamp's split, no fma), usable in constant
