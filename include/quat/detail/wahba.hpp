@@ -124,6 +124,29 @@ template <class T, class Target, class Source, class Weight>
     return q.w < T(0) ? -q : q;
 }
 
+// One Newton step of newton_refine's kind from B alone: with N = B R^T = sum w t (R s)^T,
+// g = vee(N - N^T) and H = trace(N) I - (N + N^T) / 2. The eigenvector (or FOAM's closed form) is
+// good to about eps / gap in relative terms, an error the step removes down to B's own rounding,
+// which is where an SVD's answer lies too (measured by quat_accuracy's align_points rows).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> polish_with_profile(const quaternion<T>& q,
+                                                          const T (&b)[3][3]) noexcept {
+    const rotation_matrix<T> r = to_matrix(q);
+    T n[3][3] = {};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) n[i][j] += b[i][k] * r(j, k);
+    const T g[3] = {n[2][1] - n[1][2], n[0][2] - n[2][0], n[1][0] - n[0][1]};
+    const T trace = n[0][0] + n[1][1] + n[2][2];
+    T h[3][3] = {};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n[i][j] + n[j][i]) / T(2);
+    T phi[3] = {};
+    if (!detail::solve_positive_definite3(h, g, phi)) return q;
+    const quaternion<T> p = normalize(from_rotation_vector(vec3<T>{phi[0], phi[1], phi[2]}) * q);
+    return p.w < T(0) ? -p : p;
+}
+
 // The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs
 // with w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x)
 // (1 - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and
@@ -247,7 +270,8 @@ template <class T, class Target, class Source, class Weight>
                                                          Weight weight) noexcept {
     const rotation_matrix<T> scaled = unit_scaled(rotation_matrix<T>{b});
     const horn_solution<T> separated = detail::foam(scaled);
-    if (separated.eigenvalue_gap >= separated_gap<T>()) return {separated.rotation, T(0), true};
+    if (separated.eigenvalue_gap >= separated_gap<T>())
+        return {polish_with_profile(separated.rotation, b), T(0), true};
     const symmetric_eigen4<T> eigen = detail::horn_eigen(scaled);
     const T gap = eigen.values[0] - eigen.values[1];
     const T tie = detail::sqrt(detail::epsilon<T>());
@@ -298,6 +322,7 @@ template <class T, class Target, class Source, class Weight>
         // than 32); best_turn's answer is then already good to eps.
         if (gap < separated_gap<T>() && gap > T(64) * detail::epsilon<T>())
             q = newton_refine(q, count, target, source, weight);
+        else if (gap >= separated_gap<T>()) q = polish_with_profile(q, b);
     } else if (count == 1 && eigen.values[0] > T(0)) {
         q = rotation_between(source(0), target(0));
     } else {
