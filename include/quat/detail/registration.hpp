@@ -33,8 +33,8 @@ struct registration {
 // eighth pair, so the sums vectorize without reassociation by the compiler), over blocks of pairs
 // copied to struct-of-arrays form. Measured on 4096 float pairs (g++ 12, -march=native, AVX-512):
 // align_points takes 9.7 us in blocks of 256 pairs, 12.8 us in blocks of 64, 24.4 us pair by pair
-// as before; clang 19 does not vectorize the copy and stays at 30 us either way. Sets below one
-// block are summed in one lane: the fixed cost of the lanes (clearing and folding them) was most
+// as before; clang 19 does not vectorize the copy and stays at 30 us either way. Sets below 64
+// pairs are summed in one lane: the fixed cost of the lanes (clearing and folding them) was most
 // of the time for 4 pairs.
 inline constexpr std::size_t registration_lanes = 8;
 
@@ -81,12 +81,12 @@ constexpr void load_pairs(pair_block<T, Lanes>& block, std::size_t start, std::s
 // Per lane, the totals of `Count` quantities over all pairs less the offsets: add(block, i, lane,
 // sums) adds pair i's terms to sums[k][lane] (or takes their maximum). Each block's sums start from
 // zero and are added to the totals, so rounding grows with the block length plus the number of
-// blocks; quantities listed in `largest` are maxima, combined as such.
+// blocks; the last `Maxima` quantities of sum_pairs are maxima instead, combined as such.
 template <class T, std::size_t Count, std::size_t Lanes>
 struct lane_totals {
     T value[Count][Lanes];
 
-    // The sum over the lanes of quantity k (or their maximum, for a maximum).
+    // The sum over the lanes of quantity k, and the largest of them (for a maximum).
     [[nodiscard]] constexpr T sum(std::size_t k) const noexcept {
         T total(0);
         for (std::size_t lane = 0; lane < Lanes; ++lane) total += value[k][lane];
@@ -132,7 +132,7 @@ template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, cla
 // mean (B = sum w a b^T - dt ds^T / W for the remainders' sums dt, ds, exactly the B of the
 // corrected centroids); then the residuals. With `scaled` the scale is Umeyama's
 // trace(R^T B) / sum w |b|^2, otherwise it is `unit`. Empty where the data need
-// centred_registration: a NaN or infinite value, a negative or NaN weight, no positive weight,
+// solve_registration's centred path: a NaN or infinite value, a negative or NaN weight, no positive weight,
 // weights or centred sizes outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
 template <class T, std::size_t Lanes, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_lanes(
@@ -237,7 +237,7 @@ template <class T, std::size_t Lanes, class Target, class Source, class Weight>
                            detail::sqrt(squares / total) * p, scale, fit.unique && determined};
 }
 
-// register_in_lanes in vector lanes for sets of a block or more, pair by pair below that.
+// register_in_lanes in vector lanes for sets of 64 pairs or more, pair by pair below that.
 template <class T, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_range(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
