@@ -71,16 +71,16 @@ template <class T>
 // 18,000 noisy point sets); elsewhere zeta's cancellation spoils R. m is unit_scaled.
 template <class T>
 [[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m) noexcept {
-    rotation_matrix<T> cofactor{};
-    T square = T(0), adjugate_square = T(0);
+    // cof(m), row by row: the cross products of the other two rows.
+    const rotation_matrix<T> cofactor = rotation_matrix<T>::from_rows(
+        cross(row(m, 1), row(m, 2)), cross(row(m, 2), row(m, 0)), cross(row(m, 0), row(m, 1)));
+    T square = T(0), adjugate_square = T(0);  // |m|^2 and |adj m|^2
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            cofactor(i, j) = m(i1, j1) * m(i2, j2) - m(i1, j2) * m(i2, j1);
             square += m(i, j) * m(i, j);
             adjugate_square += cofactor(i, j) * cofactor(i, j);
         }
-    const T det = m(0, 0) * cofactor(0, 0) + m(0, 1) * cofactor(0, 1) + m(0, 2) * cofactor(0, 2);
+    const T det = determinant(m);
     T lambda = detail::sqrt(T(3) * square);
     for (int step = 0; step < 32; ++step) {
         const T u = lambda * lambda - square;
@@ -95,13 +95,11 @@ template <class T>
     const T zeta = lambda * kappa - det;
     const T bound = zeta / (T(2) * square);
     if (!(bound >= separated_gap<T>())) return {quaternion<T>::identity(), T(0)};
+    const rotation_matrix<T> cubic = m * transpose(m) * m;
     rotation_matrix<T> r{};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            T cubic = T(0);  // (m m^T m)(i, j)
-            for (int k = 0; k < 3; ++k) cubic += dot(row(m, i), row(m, k)) * m(k, j);
-            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic) / zeta;
-        }
+        for (int j = 0; j < 3; ++j)
+            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic(i, j)) / zeta;
     return {to_quaternion(r), bound};
 }
 

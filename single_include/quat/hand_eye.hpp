@@ -156,14 +156,16 @@ template <class T, class A, class B>
 }
 
 /// m divided by its largest |element| (unchanged when that is 0): what jacobi_eigen expects.
+/// Returns that element.
 template <std::size_t N, class T>
-constexpr void scale_to_unit(T (&m)[N][N]) noexcept {
+constexpr T scale_to_unit(T (&m)[N][N]) noexcept {
     T largest(0);
     for (std::size_t x = 0; x < N; ++x)
         for (std::size_t y = 0; y < N; ++y) largest = max(largest, abs(m[x][y]));
     if (largest > T(0))
         for (std::size_t x = 0; x < N; ++x)
             for (std::size_t y = 0; y < N; ++y) m[x][y] = m[x][y] / largest;
+    return largest;
 }
 
 /// Daniilidis's joint solution, with translations divided by p. M = sum T_i^T T_i for the 6 x 8
@@ -265,15 +267,10 @@ template <class T, class A, class B>
             for (int y = 0; y < 3; ++y) normal[x][y] += dot(column(c, x), column(c, y));
         }
     }
-    T largest(0);
-    for (int x = 0; x < 3; ++x)
-        for (int y = 0; y < 3; ++y) largest = max(largest, abs(normal[x][y]));
+    const T largest = scale_to_unit(normal);
     vec3<T> t{T(0), T(0), T(0)};
     if (largest > T(0)) {
-        for (int x = 0; x < 3; ++x) {
-            rhs[x] = rhs[x] / largest;
-            for (int y = 0; y < 3; ++y) normal[x][y] = normal[x][y] / largest;
-        }
+        for (int x = 0; x < 3; ++x) rhs[x] = rhs[x] / largest;
         const symmetric_eigen_n<3, T> e = jacobi_eigen<3>(normal);
         for (std::size_t k = 0; k < 3; ++k) {
             if (!(e.values[k] > T(64) * epsilon<T>() * e.values[0])) continue;
@@ -303,7 +300,7 @@ template <class T, class A, class B>
         longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
         axes.add(a.real);
     }
-    const T p = longest > T(0) ? binade_of(longest) : T(1);
+    const T p = binade_or_one(longest);
     // Where the motions leave X free, the rotation rows alone would pick any rotation about the
     // common axis, which the translations may not accept: Daniilidis's solution meets both.
     dual_quaternion<T> best = method == hand_eye_method::rotation_first && axes.determine()

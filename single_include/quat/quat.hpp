@@ -1804,6 +1804,13 @@ template <class T>
     return x / p < T(1) ? p / T(2) : p;  // x / p was in [1/2, 2)
 }
 
+/// binade_of(x) for x > 0, and 1 for x = 0: the power of two that scales a size of 0 or more into
+/// [1, 2) (or leaves 0 alone).
+template <class T>
+[[nodiscard]] constexpr T binade_or_one(T x) noexcept {
+    return x > T(0) ? binade_of(x) : T(1);
+}
+
 /// v divided by the power of two that brings its largest |component| into [1, 2): the same
 /// direction exactly, whatever v's length. Precondition: has_direction(v).
 template <class T>
@@ -2468,16 +2475,16 @@ template <class T>
 // 18,000 noisy point sets); elsewhere zeta's cancellation spoils R. m is unit_scaled.
 template <class T>
 [[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m) noexcept {
-    rotation_matrix<T> cofactor{};
-    T square = T(0), adjugate_square = T(0);
+    // cof(m), row by row: the cross products of the other two rows.
+    const rotation_matrix<T> cofactor = rotation_matrix<T>::from_rows(
+        cross(row(m, 1), row(m, 2)), cross(row(m, 2), row(m, 0)), cross(row(m, 0), row(m, 1)));
+    T square = T(0), adjugate_square = T(0);  // |m|^2 and |adj m|^2
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            cofactor(i, j) = m(i1, j1) * m(i2, j2) - m(i1, j2) * m(i2, j1);
             square += m(i, j) * m(i, j);
             adjugate_square += cofactor(i, j) * cofactor(i, j);
         }
-    const T det = m(0, 0) * cofactor(0, 0) + m(0, 1) * cofactor(0, 1) + m(0, 2) * cofactor(0, 2);
+    const T det = determinant(m);
     T lambda = detail::sqrt(T(3) * square);
     for (int step = 0; step < 32; ++step) {
         const T u = lambda * lambda - square;
@@ -2492,13 +2499,11 @@ template <class T>
     const T zeta = lambda * kappa - det;
     const T bound = zeta / (T(2) * square);
     if (!(bound >= separated_gap<T>())) return {quaternion<T>::identity(), T(0)};
+    const rotation_matrix<T> cubic = m * transpose(m) * m;
     rotation_matrix<T> r{};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            T cubic = T(0);  // (m m^T m)(i, j)
-            for (int k = 0; k < 3; ++k) cubic += dot(row(m, i), row(m, k)) * m(k, j);
-            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic) / zeta;
-        }
+        for (int j = 0; j < 3; ++j)
+            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic(i, j)) / zeta;
     return {to_quaternion(r), bound};
 }
 
@@ -2677,16 +2682,12 @@ template <class T, class Target, class Source, class Weight>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> polish_with_profile(const quaternion<T>& q,
                                                           const T (&b)[3][3]) noexcept {
-    const rotation_matrix<T> r = to_matrix(q);
-    T n[3][3] = {};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) n[i][j] += b[i][k] * r(j, k);
-    const T g[3] = {n[2][1] - n[1][2], n[0][2] - n[2][0], n[1][0] - n[0][1]};
-    const T trace = n[0][0] + n[1][1] + n[2][2];
+    const rotation_matrix<T> n = rotation_matrix<T>{b} * transpose(to_matrix(q));
+    const T g[3] = {n(2, 1) - n(1, 2), n(0, 2) - n(2, 0), n(1, 0) - n(0, 1)};
+    const T trace = n(0, 0) + n(1, 1) + n(2, 2);
     T h[3][3] = {};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n[i][j] + n[j][i]) / T(2);
+        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n(i, j) + n(j, i)) / T(2);
     T phi[3] = {};
     if (!detail::solve_positive_definite3(h, g, phi)) return q;
     const quaternion<T> p = normalize(from_rotation_vector(vec3<T>{phi[0], phi[1], phi[2]}) * q);

@@ -54,6 +54,13 @@ template <class T>
     return x / p < T(1) ? p / T(2) : p;  // x / p was in [1/2, 2)
 }
 
+/// binade_of(x) for x > 0, and 1 for x = 0: the power of two that scales a size of 0 or more into
+/// [1, 2) (or leaves 0 alone).
+template <class T>
+[[nodiscard]] constexpr T binade_or_one(T x) noexcept {
+    return x > T(0) ? binade_of(x) : T(1);
+}
+
 /// v divided by the power of two that brings its largest |component| into [1, 2): the same
 /// direction exactly, whatever v's length. Precondition: has_direction(v).
 template <class T>

@@ -215,7 +215,7 @@ template <class T, std::size_t Lanes, class Target, class Source, class Weight>
     // The residuals of the pairs less the corrected centroids, target - scale R source, in units
     // of the power of two p of the larger side, so that their squares stay in range.
     const T side = detail::max(second.largest(16), scale * second.largest(17));
-    const T p = side > T(0) ? binade_of(side) : T(1);
+    const T p = binade_or_one(side);
     rotation_matrix<T> turn{};
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) turn(r, c) = m(r, c) * (scale / p);
@@ -280,7 +280,8 @@ template <class T, class Target, class Source, class Weight>
         largest = detail::max(largest, w);
     }
     const T nan = detail::quiet_nan<T>();
-    if (!finite) return {{nan, nan, nan, nan}, {nan, nan, nan}, nan, nan, false};
+    const registration<T> failed{{nan, nan, nan, nan}, {nan, nan, nan}, nan, nan, false};
+    if (!finite) return failed;
     if (!(largest > T(0)))
         return {quaternion<T>::identity(), {T(0), T(0), T(0)}, T(0), T(1), false};
     const T pw = binade_of(largest);
@@ -294,13 +295,13 @@ template <class T, class Target, class Source, class Weight>
         target_size = detail::max(target_size, largest_magnitude(target(i) - ct));
         source_size = detail::max(source_size, largest_magnitude(source(i) - cs));
     }
-    const T pt = target_size > T(0) ? binade_of(target_size) : T(1);
-    const T ps = source_size > T(0) ? binade_of(source_size) : T(1);
+    const T pt = binade_or_one(target_size);
+    const T ps = binade_or_one(source_size);
     const auto centred = register_in_range<T>([&](std::size_t i) { return (target(i) - ct) / pt; },
                                               [&](std::size_t i) { return (source(i) - cs) / ps; },
                                               count, weight, scaled, ps / pt);
     // Empty only where a centred point overflowed (points at both ends of the range).
-    if (!centred) return {{nan, nan, nan, nan}, {nan, nan, nan}, nan, nan, false};
+    if (!centred) return failed;
     // target = ct + pt t', source = cs + ps s', t' ~ k R s' + c: scale k pt / ps.
     const T scale = centred->scale * (pt / ps);
     const rotation_matrix<T> m = to_matrix(centred->rotation);

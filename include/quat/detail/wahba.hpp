@@ -131,16 +131,12 @@ template <class T, class Target, class Source, class Weight>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> polish_with_profile(const quaternion<T>& q,
                                                           const T (&b)[3][3]) noexcept {
-    const rotation_matrix<T> r = to_matrix(q);
-    T n[3][3] = {};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) n[i][j] += b[i][k] * r(j, k);
-    const T g[3] = {n[2][1] - n[1][2], n[0][2] - n[2][0], n[1][0] - n[0][1]};
-    const T trace = n[0][0] + n[1][1] + n[2][2];
+    const rotation_matrix<T> n = rotation_matrix<T>{b} * transpose(to_matrix(q));
+    const T g[3] = {n(2, 1) - n(1, 2), n(0, 2) - n(2, 0), n(1, 0) - n(0, 1)};
+    const T trace = n(0, 0) + n(1, 1) + n(2, 2);
     T h[3][3] = {};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n[i][j] + n[j][i]) / T(2);
+        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n(i, j) + n(j, i)) / T(2);
     T phi[3] = {};
     if (!detail::solve_positive_definite3(h, g, phi)) return q;
     const quaternion<T> p = normalize(from_rotation_vector(vec3<T>{phi[0], phi[1], phi[2]}) * q);
