@@ -123,3 +123,22 @@ TEST_CASE("to_glm puts element (row, col) into GLM's column-major m[col][row]", 
     CHECK(g[1][0] == 2);
     CHECK(g[2][2] == 9);
 }
+
+TEST_CASE("matrix<T, R, C> converts to and from Eigen by element", "[interop][eigen]") {
+    quat::matrix<double, 6, 3> m{};
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 3; ++j) m(i, j) = 10 * i + j;
+    const Eigen::Matrix<double, 6, 3> e = quat::to_eigen(m);
+    CHECK(e(4, 2) == 42);
+    CHECK(e(0, 1) == 1);
+    CHECK(quat::from_eigen(e) == m);
+    Eigen::Matrix<float, 2, 6, Eigen::RowMajor> row_major;
+    row_major << 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12;
+    const quat::matrix<float, 2, 6> back = quat::from_eigen(row_major);
+    CHECK(back(1, 0) == 7);
+    CHECK(back(0, 5) == 6);
+    // A 3x3 Eigen matrix reads as a rotation_matrix; to_matrix3 makes it a Jacobian.
+    const Eigen::Matrix3d square = Eigen::Matrix3d::Identity() * 2;
+    const quat::matrix3<double> jacobian = quat::to_matrix3(quat::from_eigen(square));
+    CHECK(jacobian == quat::matrix3<double>::identity() * 2.0);
+}

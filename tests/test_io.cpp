@@ -82,10 +82,12 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
     const quat::alignment<T> fit{{T(1), T(0), T(0), T(0)}, T(0.25), true};
     CHECK(text_of(fit) == "alignment{quaternion{1, 0, 0, 0}, 0.25, true}");
     const quat::alignment_with_sensitivity<T> fit_with{{{T(0), T(1), T(0), T(0)}, T(2), false},
-                                                       rotation_matrix<T>::identity()};
+                                                       quat::matrix3<T>::identity()};
     CHECK(text_of(fit_with) ==
           "alignment_with_sensitivity{alignment{quaternion{0, 1, 0, 0}, 2, false}, "
-          "rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
+          "matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
+    const quat::matrix<T, 2, 3> wide{{{T(1), T(2), T(3)}, {T(-4), T(0.5), T(0)}}};
+    CHECK(text_of(wide) == "matrix{{1, 2, 3}, {-4, 0.5, 0}}");
     const quat::swing_twist_parts<T> parts{{T(0.5), T(0.5), T(0.5), T(0.5)},
                                            {T(1), T(0), T(0), T(0)}};
     CHECK(text_of(parts) ==

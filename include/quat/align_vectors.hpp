@@ -9,6 +9,7 @@
 #include "config.hpp"
 #include "detail/containers.hpp"
 #include "detail/wahba.hpp"
+#include "matrix.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
 #include "vec3.hpp"
@@ -33,8 +34,8 @@ template <class T>
 struct alignment_with_sensitivity : alignment<T> {
     /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
     /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
-    /// for return_sensitivity=True. Not a rotation: rotation_matrix only stores it.
-    rotation_matrix<T> sensitivity;
+    /// for return_sensitivity=True.
+    matrix3<T> sensitivity;
 };
 
 #include "detail/isa_namespace.inc"

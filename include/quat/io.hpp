@@ -5,11 +5,12 @@
 //   vec3{1, -2, 0.5}
 //   quaternion{1, 0, 0, 0}                                    w, x, y, z
 //   rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}          rows: m(0, 0), m(0, 1), ...
+//   matrix{{1, 0, 0, 0, 0, 0}, ..., {0, 0, 0, 0, 0, 1}}      matrix<T, R, C>: R rows of C
 //   axis_angle{vec3{0, 0, 1}, 1.5}                            axis, angle
 //   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
 //   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
 //   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
-//   alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}
+//   alignment_with_sensitivity{alignment{...}, matrix{...}}
 //   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
@@ -53,6 +54,7 @@
 #include "dual_quaternion.hpp"
 #include "euler.hpp"
 #include "homogeneous_matrix.hpp"
+#include "matrix.hpp"
 #include "quaternion.hpp"
 #include "rotation_matrix.hpp"
 #include "screw.hpp"
@@ -129,6 +131,14 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, m);
 }
 
+/// Prints matrix{{m00, m01, ...}, ..., {...}}, Rows braces of Cols elements; stream settings as for
+/// vec3.
+template <class T, int R, int C, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const matrix<T, R, C>& m) {
+    return detail::print_to_stream(os, m);
+}
+
 /// Prints axis_angle{vec3{x, y, z}, angle}; stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -160,7 +170,7 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
-/// Prints alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}, the
+/// Prints alignment_with_sensitivity{alignment{...}, matrix{...}}, the
 /// sensitivity matrix by rows; stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -248,6 +258,11 @@ template <class T, class CharT>
 struct formatter<::quat::rotation_matrix<T>, CharT>
     : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
 
+/// Formats matrix{{m00, m01, ...}, ...} by rows; the spec applies to each element.
+template <class T, int R, int C, class CharT>
+struct formatter<::quat::matrix<T, R, C>, CharT>
+    : ::quat::detail::value_formatter<::quat::matrix<T, R, C>, std::formatter<T, CharT>> {};
+
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class CharT>
 struct formatter<::quat::axis_angle<T>, CharT>
@@ -269,7 +284,7 @@ template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
     : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}; the
+/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>

@@ -2184,6 +2184,226 @@ using if_arrays_of = std::enable_if_t<
 
 #include <cstddef>
 
+// ---- begin quat/matrix.hpp ----
+// Small fixed-size matrices for Jacobians and covariances: matrix<T, Rows, Cols>. Not a linear
+// algebra library: products, sums, transposes and blocks, enough to chain the Jacobians of the
+// Lie-group functions (so3.hpp, se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or Ceres.
+#ifndef QUAT_MATRIX_HPP_INCLUDED
+#define QUAT_MATRIX_HPP_INCLUDED
+
+
+namespace quat {
+
+/// A Rows x Cols matrix stored row-major; vectors multiply it as columns, v' = M v. Any scalar the
+/// rest of quat accepts, automatic-differentiation scalars included.
+template <class T, int Rows, int Cols>
+struct matrix {
+    static_assert(Rows > 0 && Cols > 0, "quat::matrix: empty matrices are not supported");
+    /// Row-major: elements[row][col]. matrix<T, R, C>{} is zero; matrix<T, R, C> m; leaves the
+    /// elements uninitialized, as in a plain struct.
+    T elements[Rows][Cols];
+
+    /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
+    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
+        return elements[row][col];
+    }
+    /// Element at (row, col), read-only.
+    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
+        return elements[row][col];
+    }
+
+    /// The matrix of zeros.
+    [[nodiscard]] static constexpr matrix zero() noexcept {
+        matrix m{};
+        for (int i = 0; i < Rows; ++i)
+            for (int j = 0; j < Cols; ++j) m.elements[i][j] = T(0);
+        return m;
+    }
+    /// The identity (ones on the diagonal, zeros elsewhere; square or not).
+    [[nodiscard]] static constexpr matrix identity() noexcept {
+        matrix m = zero();
+        for (int i = 0; i < (Rows < Cols ? Rows : Cols); ++i) m.elements[i][i] = T(1);
+        return m;
+    }
+};
+
+/// 3x3 and 6x6 Jacobians and covariances, the sizes of SO(3)'s and SE(3)'s tangent spaces.
+template <class T>
+using matrix3 = matrix<T, 3, 3>;
+template <class T>
+using matrix6 = matrix<T, 6, 6>;
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> to_matrix3(const rotation_matrix<T>& m) noexcept {
+    matrix3<T> out{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out(i, j) = m(i, j);
+    return out;
+}
+
+/// Element-wise sum.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator+(const matrix<T, R, C>& a,
+                                                  const matrix<T, R, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) + b(i, j);
+    return out;
+}
+
+/// Element-wise difference.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a,
+                                                  const matrix<T, R, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) - b(i, j);
+    return out;
+}
+
+/// Element-wise negation.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = -a(i, j);
+    return out;
+}
+
+/// Every element times s.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, C>& a,
+                                                  detail::type_identity_t<T> s) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) * s;
+    return out;
+}
+
+/// Every element times s.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(detail::type_identity_t<T> s,
+                                                  const matrix<T, R, C>& a) noexcept {
+    return a * s;
+}
+
+/// Matrix product: (a b) v = a (b v).
+template <class T, int R, int K, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, K>& a,
+                                                  const matrix<T, K, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) {
+            T sum = a(i, 0) * b(0, j);
+            for (int k = 1; k < K; ++k) sum = sum + a(i, k) * b(k, j);
+            out(i, j) = sum;
+        }
+    return out;
+}
+
+/// M v for a 3x3 matrix.
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& m, const vec3<T>& v) noexcept {
+    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
+            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
+            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+
+/// a = a + b.
+template <class T, int R, int C>
+constexpr matrix<T, R, C>& operator+=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
+    return a = a + b;
+}
+
+/// a = a - b.
+template <class T, int R, int C>
+constexpr matrix<T, R, C>& operator-=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
+    return a = a - b;
+}
+
+/// Exact element-wise equality.
+template <class T, int R, int C>
+[[nodiscard]] constexpr bool operator==(const matrix<T, R, C>& a,
+                                        const matrix<T, R, C>& b) noexcept {
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+
+/// Negation of ==.
+template <class T, int R, int C>
+[[nodiscard]] constexpr bool operator!=(const matrix<T, R, C>& a,
+                                        const matrix<T, R, C>& b) noexcept {
+    return !(a == b);
+}
+
+/// The transpose: element (i, j) moves to (j, i).
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, C, R> transpose(const matrix<T, R, C>& m) noexcept {
+    matrix<T, C, R> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(j, i) = m(i, j);
+    return out;
+}
+
+/// The BR x BC block of m whose top-left element is m(row, col). Precondition: the block lies
+/// inside m (checked when both are constants, otherwise debug-checked).
+template <int BR, int BC, class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, BR, BC> block(const matrix<T, R, C>& m, int row,
+                                                int col) noexcept {
+    static_assert(BR <= R && BC <= C, "quat::block: the block is larger than the matrix");
+    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
+                "quat::block: the block does not lie inside the matrix");
+    matrix<T, BR, BC> out{};
+    for (int i = 0; i < BR; ++i)
+        for (int j = 0; j < BC; ++j) out(i, j) = m(row + i, col + j);
+    return out;
+}
+
+/// Writes b into m with b's top-left element at m(row, col). Precondition: as for block.
+template <class T, int R, int C, int BR, int BC>
+constexpr void set_block(matrix<T, R, C>& m, int row, int col,
+                         const matrix<T, BR, BC>& b) noexcept {
+    static_assert(BR <= R && BC <= C, "quat::set_block: the block is larger than the matrix");
+    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
+                "quat::set_block: the block does not lie inside the matrix");
+    for (int i = 0; i < BR; ++i)
+        for (int j = 0; j < BC; ++j) m(row + i, col + j) = b(i, j);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_MATRIX_HPP_INCLUDED
+// ---- end quat/matrix.hpp ----
 // ---- begin quat/nearest_rotation.hpp ----
 // The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
 #ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
@@ -2980,8 +3200,8 @@ template <class T, class Target, class Source, class Weight>
 // optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). B is scaled to a largest element of 1
 // first, and the scale put back at the end (sensitivity scales as 1 / |B|).
 template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> wahba_sensitivity(const wahba_solution<T>& solution,
-                                                             std::size_t count) noexcept {
+[[nodiscard]] constexpr matrix3<T> wahba_sensitivity(const wahba_solution<T>& solution,
+                                                     std::size_t count) noexcept {
     T scale = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(solution.profile(i, j)));
@@ -3003,7 +3223,7 @@ template <class T>
     // The weights' scale cancels in mean(w) / |B|; the vectors' scales are divided out one at a
     // time, since their product may overflow where the quotient does not.
     const T nan = detail::quiet_nan<T>();
-    rotation_matrix<T> sensitivity{};
+    matrix3<T> sensitivity{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             sensitivity(i, j) =
@@ -3050,8 +3270,8 @@ template <class T>
 struct alignment_with_sensitivity : alignment<T> {
     /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
     /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
-    /// for return_sensitivity=True. Not a rotation: rotation_matrix only stores it.
-    rotation_matrix<T> sensitivity;
+    /// for return_sensitivity=True.
+    matrix3<T> sensitivity;
 };
 
 // ---- begin quat/detail/isa_namespace.inc ----

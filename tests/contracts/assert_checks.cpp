@@ -15,6 +15,7 @@
                  : (std::fprintf(stderr, "%s\n", message), std::fflush(stderr), std::_Exit(3)))
 
 #include <quat/align_points.hpp>
+#include <quat/geodesic_mean.hpp>
 #include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
@@ -152,6 +153,12 @@ int run(const char* name) {
         sink = quat::mean(cluster, std::vector<double>{1, -1}).w;
     if (std::strcmp(name, "mean_weights_size") == 0)
         sink = quat::mean(cluster, std::vector<double>{1}).w;
+    if (std::strcmp(name, "geodesic_mean") == 0)
+        sink = quat::geodesic_mean(std::vector<quatd>{quatd::identity(), not_unit}).w;
+    if (std::strcmp(name, "geodesic_mean_negative_weight") == 0)
+        sink = quat::geodesic_mean(cluster, std::vector<double>{1, -1}).w;
+    if (std::strcmp(name, "geodesic_mean_weights_size") == 0)
+        sink = quat::geodesic_mean(cluster, std::vector<double>{1}).w;
     const std::vector<vec3<double>> pair{v, {0, 0, 1}};
     if (std::strcmp(name, "align_vectors_size") == 0)
         sink = quat::align_vectors(pair, std::vector<vec3<double>>{v}).rssd;

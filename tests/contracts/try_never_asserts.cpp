@@ -28,6 +28,7 @@ static const char* quat_try_last_call = "";
             std::fflush(stdout), std::abort()))
 
 #include <quat/align_points.hpp>
+#include <quat/geodesic_mean.hpp>
 #include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
 
@@ -485,6 +486,31 @@ void mean_cases() {
 }
 
 template <class T>
+void geodesic_mean_cases() {
+    current = "try_geodesic_mean";
+    for (const auto& r : rotation_sets<T>())
+        CHECK_TRY(quat::try_geodesic_mean(r),
+                  "try_geodesic_mean(" + std::to_string(r.size()) + " rotations)");
+    current = "try_geodesic_mean(weights)";
+    for (const auto& r : rotation_sets<T>())
+        for (const T w : scalars<T>()) {
+            std::vector<T> weights(r.size(), T(1));
+            if (!weights.empty()) weights[weights.size() / 2] = w;
+            CHECK_TRY(quat::try_geodesic_mean(r, weights),
+                      "try_geodesic_mean(" + std::to_string(r.size()) + " rotations, weight " +
+                          str(w) + ")");
+            const std::vector<T> all(r.size(), w);
+            CHECK_TRY(quat::try_geodesic_mean(r, all),
+                      "try_geodesic_mean(all weights " + str(w) + ")");
+        }
+    current = "try_geodesic_mean(weights, mismatched sizes)";
+    for (const auto& r : rotation_sets<T>()) {
+        const std::vector<T> longer(r.size() + 1, T(1));
+        CHECK_TRY(quat::try_geodesic_mean(r, longer), "try_geodesic_mean(one weight more)");
+    }
+}
+
+template <class T>
 void rotation_spline_cases() {
     using spline = quat::rotation_spline<T>;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
@@ -570,6 +596,8 @@ const named_case cases[] = {
     {"rotation_spline_double", [] { rotation_spline_cases<double>(); }},
     {"mean_float", [] { mean_cases<float>(); }},
     {"mean_double", [] { mean_cases<double>(); }},
+    {"geodesic_mean_float", [] { geodesic_mean_cases<float>(); }},
+    {"geodesic_mean_double", [] { geodesic_mean_cases<double>(); }},
     {"swing_twist_float", [] { swing_twist_cases<float>(); }},
     {"swing_twist_double", [] { swing_twist_cases<double>(); }},
 };

@@ -39,10 +39,12 @@ TEMPLATE_TEST_CASE("fmt::format prints the documented format", "[io][fmt]", floa
     const euler_extraction<T, sequence::yzx, frame::extrinsic> locked{{T(1), T(-1.5), T(0)}, true};
     CHECK(fmt::format("{}", locked) == "euler_extraction{euler<yzx, extrinsic>{1, -1.5, 0}, true}");
     const quat::alignment_with_sensitivity<T> fit{{{T(0), T(1), T(0), T(0)}, T(0.25), true},
-                                                  rotation_matrix<T>::identity()};
+                                                  quat::matrix3<T>::identity()};
     CHECK(fmt::format("{}", fit) ==
           "alignment_with_sensitivity{alignment{quaternion{0, 1, 0, 0}, 0.25, true}, "
-          "rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
+          "matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}");
+    const quat::matrix<T, 2, 3> wide{{{T(1), T(2), T(3)}, {T(-4), T(0.5), T(0)}}};
+    CHECK(fmt::format("{}", wide) == "matrix{{1, 2, 3}, {-4, 0.5, 0}}");
     CHECK(fmt::format("{}", quat::alignment<T>{fit.rotation, fit.rssd, false}) ==
           "alignment{quaternion{0, 1, 0, 0}, 0.25, false}");
     const quat::swing_twist_parts<T> parts{{T(0.5), T(0.5), T(0.5), T(0.5)},

@@ -14,6 +14,7 @@
 #include "../dual_quaternion.hpp"
 #include "../euler.hpp"
 #include "../homogeneous_matrix.hpp"
+#include "../matrix.hpp"
 #include "../quaternion.hpp"
 #include "../rotation_matrix.hpp"
 #include "../screw.hpp"
@@ -91,6 +92,20 @@ void write_layout(Printer& p, const rotation_matrix<T>& m) {
     for (int row = 0; row < 3; ++row) {
         if (row > 0) p.text(", ");
         write_braced(p, m(row, 0), m(row, 1), m(row, 2));
+    }
+    p.text("}");
+}
+
+template <class Printer, class T, int R, int C>
+void write_layout(Printer& p, const matrix<T, R, C>& m) {
+    p.text("matrix{");
+    for (int row = 0; row < R; ++row) {
+        p.text(row > 0 ? ", {" : "{");
+        for (int col = 0; col < C; ++col) {
+            if (col > 0) p.text(", ");
+            p.value(m(row, col));
+        }
+        p.text("}");
     }
     p.text("}");
 }

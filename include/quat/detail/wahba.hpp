@@ -9,6 +9,7 @@
 
 #include "../align.hpp"
 #include "../conversions.hpp"
+#include "../matrix.hpp"
 #include "../nearest_rotation.hpp"
 #include "../quaternion.hpp"
 #include "../rotation_matrix.hpp"
@@ -429,8 +430,8 @@ template <class T, class Target, class Source, class Weight>
 // optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). B is scaled to a largest element of 1
 // first, and the scale put back at the end (sensitivity scales as 1 / |B|).
 template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> wahba_sensitivity(const wahba_solution<T>& solution,
-                                                             std::size_t count) noexcept {
+[[nodiscard]] constexpr matrix3<T> wahba_sensitivity(const wahba_solution<T>& solution,
+                                                     std::size_t count) noexcept {
     T scale = T(0);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(solution.profile(i, j)));
@@ -452,7 +453,7 @@ template <class T>
     // The weights' scale cancels in mean(w) / |B|; the vectors' scales are divided out one at a
     // time, since their product may overflow where the quotient does not.
     const T nan = detail::quiet_nan<T>();
-    rotation_matrix<T> sensitivity{};
+    matrix3<T> sensitivity{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             sensitivity(i, j) =

@@ -1,5 +1,6 @@
 // Opt-in conversions between quat and Eigen (not included by quat.hpp; needs Eigen's headers):
-// quaternions, 3x3 and 4x4 matrices (Eigen::Transform in), vectors.
+// quaternions, 3x3 and 4x4 matrices (Eigen::Transform in), vectors, and matrix<T, R, C> (Jacobians,
+// covariances).
 // Eigen::Quaternion is Hamilton with q v q* like quat, so values carry over unchanged; only the
 // layout differs (coeffs() is x, y, z, w; the constructor takes w, x, y, z).
 #ifndef QUAT_INTEROP_EIGEN_HPP_INCLUDED
@@ -9,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "../homogeneous_matrix.hpp"
+#include "../matrix.hpp"
 #include "../quaternion.hpp"
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
@@ -75,6 +77,28 @@ template <class T, int Mode, int Options>
     const auto& m = t.matrix();
     for (int row = 0; row < static_cast<int>(m.rows()); ++row)
         for (int col = 0; col < 4; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same matrix as Eigen::Matrix<T, R, C>: element (row, col) to (row, col).
+template <class T, int R, int C>
+[[nodiscard]] Eigen::Matrix<T, R, C> to_eigen(const matrix<T, R, C>& m) {
+    Eigen::Matrix<T, R, C> out;
+    for (int row = 0; row < R; ++row)
+        for (int col = 0; col < C; ++col) out(row, col) = m(row, col);
+    return out;
+}
+
+/// The same matrix from a fixed-size Eigen matrix (row- or column-major) as matrix<T, R, C>. The
+/// 3x3, 4x4 and 3x1 shapes have their own overloads above and below (rotation_matrix,
+/// homogeneous_matrix, vec3); a 3x3 Jacobian becomes a matrix3 by to_matrix3(from_eigen(m)).
+template <class T, int R, int C, int Options, int MaxRows, int MaxCols>
+[[nodiscard]] matrix<T, R, C> from_eigen(
+    const Eigen::Matrix<T, R, C, Options, MaxRows, MaxCols>& m) {
+    static_assert(R > 0 && C > 0, "quat::from_eigen: a matrix<T, R, C> needs a fixed size");
+    matrix<T, R, C> out{};
+    for (int row = 0; row < R; ++row)
+        for (int col = 0; col < C; ++col) out(row, col) = m(row, col);
     return out;
 }
 

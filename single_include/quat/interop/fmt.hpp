@@ -59,6 +59,11 @@ template <class T, class Char>
 struct formatter<::quat::rotation_matrix<T>, Char>
     : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, fmt::formatter<T, Char>> {};
 
+/// Formats matrix{{m00, m01, ...}, ...} by rows; the spec applies to each element.
+template <class T, int R, int C, class Char>
+struct formatter<::quat::matrix<T, R, C>, Char>
+    : ::quat::detail::value_formatter<::quat::matrix<T, R, C>, fmt::formatter<T, Char>> {};
+
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class Char>
 struct formatter<::quat::axis_angle<T>, Char>
@@ -84,7 +89,7 @@ template <class T, class Char>
 struct formatter<::quat::alignment<T>, Char>
     : ::quat::detail::value_formatter<::quat::alignment<T>, fmt::formatter<T, Char>> {};
 
-/// Formats alignment_with_sensitivity{alignment{...}, rotation_matrix{...}}; the
+/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
 /// spec applies to each number.
 template <class T, class Char>
 struct formatter<::quat::alignment_with_sensitivity<T>, Char>
