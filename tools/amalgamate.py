@@ -4,8 +4,8 @@
 quat.hpp: follows the includes of include/quat/quat.hpp depth-first and inlines every quat header
 once, at its first inclusion, the way #pragma once would; standard headers stay #include lines.
 The opt-in headers that quat.hpp does not include (io.hpp, interop/glm.hpp, interop/eigen.hpp,
-interop/fmt.hpp, and the estimation families align_points.hpp, hand_eye.hpp and geodesic_mean.hpp)
-are generated at the same relative paths, so a user's #include <quat/io.hpp> or
+interop/fmt.hpp, interop/ceres.hpp, and the estimation families align_points.hpp, hand_eye.hpp,
+so3.hpp, se3.hpp and geodesic_mean.hpp) are generated at the same relative paths, so a user's #include <quat/io.hpp> or
 <quat/interop/glm.hpp> works with single_include/ as with include/. Each is its own text with
 every include of a header that quat.hpp holds replaced by one include of the single quat.hpp
 (#include "../quat.hpp" from interop/), every include of a header an earlier opt-in output holds
@@ -34,7 +34,10 @@ OPT_IN = {
     "interop/fmt.hpp": "{fmt} formatters, single-header edition.",
     "align_points.hpp": "point-set registration (Kabsch-Umeyama), single-header edition.",
     "hand_eye.hpp": "hand-eye calibration (Daniilidis), single-header edition.",
+    "so3.hpp": "SO(3) calculus with Jacobians, single-header edition.",
+    "se3.hpp": "SE(3) calculus with Jacobians, single-header edition.",
     "geodesic_mean.hpp": "geodesic (Karcher) means, single-header edition.",
+    "interop/ceres.hpp": "Ceres manifolds and parameter blocks, single-header edition.",
 }
 OUTPUT_DIR = ROOT / "single_include" / "quat"
 

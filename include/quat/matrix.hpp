@@ -4,6 +4,8 @@
 #ifndef QUAT_MATRIX_HPP_INCLUDED
 #define QUAT_MATRIX_HPP_INCLUDED
 
+#include <cstddef>
+
 #include "config.hpp"
 #include "detail/math.hpp"
 #include "rotation_matrix.hpp"
@@ -18,7 +20,7 @@ struct matrix {
     static_assert(Rows > 0 && Cols > 0, "quat::matrix: empty matrices are not supported");
     /// Row-major: elements[row][col]. matrix<T, R, C>{} is zero; matrix<T, R, C> m; leaves the
     /// elements uninitialized, as in a plain struct.
-    T elements[Rows][Cols];
+    T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
 
     /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
     [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
@@ -46,9 +48,10 @@ struct matrix {
     }
 };
 
-/// 3x3 and 6x6 Jacobians and covariances, the sizes of SO(3)'s and SE(3)'s tangent spaces.
+/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
 template <class T>
 using matrix3 = matrix<T, 3, 3>;
+/// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
 template <class T>
 using matrix6 = matrix<T, 6, 6>;
 

@@ -21,7 +21,7 @@ namespace detail {
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
 // J. Guidance 30(4), 2007): |M - R_i|_F^2 = 8 - 8 (q . q_i)^2 for unit quaternions, so the sign of
 // each q_i drops out. K is divided by its trace sum w_i, making the eigenvalues fractions of the
-// total weight. `weight(i)` gives w_i; `valid` is false for no rotations, a weight below zero or a
+// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a weight below zero or a
 // non-positive or non-finite total (a NaN or infinite component gives NaN eigenvalues), and, when
 // `checked` (try_mean), for a rotation that is not a unit quaternion.
 template <class T>
@@ -30,9 +30,9 @@ struct mean_solution {
     bool valid;
 };
 
-template <bool checked, class T, class Weight>
-[[nodiscard]] constexpr mean_solution<T> solve_mean(const quaternion<T>* rotations,
-                                                    std::size_t count, Weight weight) noexcept {
+template <bool checked, class T, class Rotation, class Weight>
+[[nodiscard]] constexpr mean_solution<T> solve_mean_of(Rotation rotation, std::size_t count,
+                                                       Weight weight) noexcept {
     // The weights are divided by the largest first: the sums are ratios of weights, so the mean is
     // the same, and weights near max() no longer overflow the sums nor subnormal ones underflow
     // them. A NaN or infinite weight makes the largest non-finite and the result invalid.
@@ -43,9 +43,9 @@ template <bool checked, class T, class Weight>
         lowest = w < lowest ? w : lowest;
         largest = w > largest || !(w == w) ? w : largest;
         if constexpr (checked) {
-            units = units && detail::is_near_unit(rotations[i]);
+            units = units && detail::is_near_unit(rotation(i));
         } else {
-            QUAT_ASSERT(detail::is_near_unit(rotations[i]),
+            QUAT_ASSERT(detail::is_near_unit(rotation(i)),
                         "quat::mean: a rotation is not a unit quaternion");
         }
     }
@@ -59,7 +59,7 @@ template <bool checked, class T, class Weight>
         T ww = T(0), wx = T(0), wy = T(0), wz = T(0), xx = T(0), xy = T(0), xz = T(0), yy = T(0),
           yz = T(0), zz = T(0);
         for (std::size_t i = start; i < end; ++i) {
-            const quaternion<T>& q = rotations[i];
+            const quaternion<T>& q = rotation(i);
             const T w = weight(i) / scale;
             const T a = w * q.w, b = w * q.x, c = w * q.y;
             ww += a * q.w;
@@ -87,6 +87,14 @@ template <bool checked, class T, class Weight>
                        {wy * s, xy * s, yy * s, yz * s},
                        {wz * s, xz * s, yz * s, zz * s}};
     return {detail::symmetric_eigen(k), valid};
+}
+
+// solve_mean_of over an array of rotations.
+template <bool checked, class T, class Weight>
+[[nodiscard]] constexpr mean_solution<T> solve_mean(const quaternion<T>* rotations,
+                                                    std::size_t count, Weight weight) noexcept {
+    return solve_mean_of<checked, T>(
+        [rotations](std::size_t i) -> const quaternion<T>& { return rotations[i]; }, count, weight);
 }
 
 template <class T>

@@ -25,8 +25,9 @@
 // Opt-in: keep this file at quat/geodesic_mean.hpp beside the single quat.hpp, which it
 // includes.
 
-// The geodesic (Karcher) mean of rotations: the rotation minimizing the sum of squared angles to
-// the inputs, found by iterating on the logarithm map, beside the chordal mean of mean.hpp.
+// Geodesic means on the groups: the Karcher mean of rotations (the rotation minimizing the sum of
+// squared angles to the inputs) beside the chordal mean of mean.hpp, and its counterpart for rigid
+// motions, the bi-invariant mean. Both iterate on the logarithm map.
 #ifndef QUAT_GEODESIC_MEAN_HPP_INCLUDED
 #define QUAT_GEODESIC_MEAN_HPP_INCLUDED
 
@@ -34,6 +35,7 @@
 #include <optional>
 
 #include "quat.hpp"
+#include "se3.hpp"
 
 namespace quat {
 
@@ -182,6 +184,87 @@ template <class Group, class T>
     return outcome.mean;
 }
 
+// The step of the bi-invariant mean of rigid motions, the weighted mean of log(mean^-1 X_i) with
+// its size max(|omega|, |rho| / length) for the criterion: the translation in units of the largest
+// translation, so that the test does not depend on the unit of length.
+template <class T>
+struct rigid_step {
+    se3::twist<T> delta;
+    T angle;
+};
+
+template <class T, class Weight>
+[[nodiscard]] constexpr rigid_step<T> mean_twist(const dual_quaternion<T>& mean,
+                                                 const dual_quaternion<T>* motions,
+                                                 std::size_t count, Weight weight,
+                                                 T length) noexcept {
+    const dual_quaternion<T> back = se3::inverse(mean);
+    const vec3<T> zero{T(0), T(0), T(0)};
+    se3::twist<T> sum{zero, zero};
+    T total = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        se3::twist<T> block{zero, zero};
+        T block_total = T(0);
+        for (std::size_t i = start; i < end; ++i) {
+            const T w = weight(i);
+            block = block + se3::log(back * motions[i]) * w;
+            block_total = block_total + w;
+        }
+        sum = sum + block;
+        total = total + block_total;
+    }
+    const se3::twist<T> delta = sum * (total > T(0) ? T(1) / total : quiet_nan<T>());
+    return {delta, max(norm(delta.angular), norm(delta.linear) / length)};
+}
+
+// The bi-invariant mean from the chordal mean of the rotations and the weighted mean of the
+// translations; the spread is the rotations' about it.
+template <bool checked, class T, class Weight>
+[[nodiscard]] constexpr karcher_outcome<dual_quaternion<T>, T> solve_rigid_geodesic_mean(
+    const dual_quaternion<T>* motions, std::size_t count, Weight weight) noexcept {
+    if constexpr (!checked) {
+        for (std::size_t i = 0; i < count; ++i) {
+            QUAT_ASSERT(is_near_unit(motions[i].real),
+                        "quat::geodesic_mean: a motion is not a unit dual quaternion");
+            QUAT_ASSERT(!(weight(i) < T(0)), "quat::geodesic_mean: a weight is negative");
+        }
+    }
+    const mean_solution<T> chordal = solve_mean_of<true, T>(
+        [motions](std::size_t i) -> const quaternion<T>& { return motions[i].real; }, count,
+        weight);
+    vec3<T> centroid{T(0), T(0), T(0)};
+    T total = T(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        centroid = centroid + translation_of(motions[i]) * weight(i);
+        total = total + weight(i);
+    }
+    centroid = centroid / (total > T(0) ? total : T(1));
+    // The unit for the step's linear part: the largest translation, the scale of its rounding.
+    T length = T(0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (weight(i) > T(0)) length = max(length, norm(translation_of(motions[i])));
+    if (!(length > T(0))) length = T(1);
+    const dual_quaternion<T> start = to_dual_quaternion(mean_of(chordal), centroid);
+    karcher_outcome<dual_quaternion<T>, T> outcome = karcher_iterate<T>(
+        start,
+        [&](const dual_quaternion<T>& mean) {
+            return mean_twist(mean, motions, count, weight, length);
+        },
+        [](const dual_quaternion<T>& mean, const se3::twist<T>& delta) {
+            const dual_quaternion<T> moved = normalize(mean * se3::exp(delta));
+            return moved.real.w < T(0) ? -moved : moved;
+        });
+    outcome.converged = outcome.converged && chordal.valid;
+    T spread = T(0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (weight(i) > T(0))
+            spread = max(spread,
+                         norm(to_rotation_vector(conjugate(outcome.mean.real) * motions[i].real)));
+    outcome.spread = spread;
+    return outcome;
+}
+
 }  // namespace detail
 
 /// The geodesic (Karcher, L2 intrinsic) mean of unit quaternions (a contiguous container with
@@ -239,6 +322,61 @@ template <class Rotations, class Weights, class T = detail::element_scalar_t<qua
     return detail::unique_karcher_mean(
         detail::solve_geodesic_mean<true>(detail::data_of(rotations), detail::size_of(rotations),
                                           [w](std::size_t i) { return static_cast<T>(w[i]); }));
+}
+/// The bi-invariant mean of unit dual quaternions (rigid motions; a contiguous container with
+/// data() and size(), or a C array): the motion M with sum log(M^-1 X_i) = 0 (the exponential
+/// barycenter of SE(3): V. Arsigny, X. Pennec, N. Ayache, "Bi-invariant means in Lie groups",
+/// 2006; Sophus's average). The same for g X_i and X_i g as for X_i; its rotation is the
+/// geodesic_mean of the rotations. Iterates M <- M exp(mean of log(M^-1 X_i)) from the chordal mean
+/// rotation and the mean translation, stopping as the rotations' iteration does, the step measured
+/// as max(|omega|, |rho| / largest |translation|). Unique where the rotations lie within
+/// pi/2 of the mean (try_geodesic_mean checks it); otherwise where the iteration stopped. The
+/// result has real.w >= 0. NaN for an empty container or a NaN or infinite component.
+/// Precondition: unit dual quaternions (QUAT_ASSERT on the real parts).
+template <class Motions, class T = detail::element_scalar_t<dual_quaternion, Motions>>
+[[nodiscard]] constexpr dual_quaternion<T> geodesic_mean(const Motions& motions) noexcept {
+    return detail::solve_rigid_geodesic_mean<false>(
+               detail::data_of(motions), detail::size_of(motions), [](std::size_t) { return T(1); })
+        .mean;
+}
+
+/// The weighted bi-invariant mean: sum weights[i] log(M^-1 X_i) = 0, as geodesic_mean(motions).
+/// weights: scalars convertible to T, as many as motions (QUAT_ASSERT), >= 0 (QUAT_ASSERT); NaN
+/// when no weight is positive or a weight is negative, NaN or infinite.
+template <class Motions, class Weights,
+          class T = detail::element_scalar_t<dual_quaternion, Motions>>
+[[nodiscard]] constexpr dual_quaternion<T> geodesic_mean(const Motions& motions,
+                                                         const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(motions),
+                "quat::geodesic_mean: weights and motions differ in size");
+    const auto* w = detail::data_of(weights);
+    return detail::solve_rigid_geodesic_mean<false>(
+               detail::data_of(motions), detail::size_of(motions),
+               [w](std::size_t i) { return static_cast<T>(w[i]); })
+        .mean;
+}
+
+/// geodesic_mean(motions), or std::nullopt as try_geodesic_mean of rotations: empty, NaN or
+/// infinite, not unit (|real|^2 not within 1/4096 of 1), not converged, or a rotation pi/2 or more
+/// from the mean's. Never asserts.
+template <class Motions, class T = detail::element_scalar_t<dual_quaternion, Motions>>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_geodesic_mean(
+    const Motions& motions) noexcept {
+    return detail::unique_karcher_mean(detail::solve_rigid_geodesic_mean<true>(
+        detail::data_of(motions), detail::size_of(motions), [](std::size_t) { return T(1); }));
+}
+
+/// geodesic_mean(motions, weights), or std::nullopt as try_geodesic_mean(motions) and also when the
+/// sizes differ or a weight is negative, NaN or infinite, or none is positive. Never asserts.
+template <class Motions, class Weights,
+          class T = detail::element_scalar_t<dual_quaternion, Motions>>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_geodesic_mean(
+    const Motions& motions, const Weights& weights) noexcept {
+    if (detail::size_of(weights) != detail::size_of(motions)) return std::nullopt;
+    const auto* w = detail::data_of(weights);
+    return detail::unique_karcher_mean(detail::solve_rigid_geodesic_mean<true>(
+        detail::data_of(motions), detail::size_of(motions),
+        [w](std::size_t i) { return static_cast<T>(w[i]); }));
 }
 }  // inline namespace isa_...
 

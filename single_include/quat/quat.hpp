@@ -2191,6 +2191,8 @@ using if_arrays_of = std::enable_if_t<
 #ifndef QUAT_MATRIX_HPP_INCLUDED
 #define QUAT_MATRIX_HPP_INCLUDED
 
+#include <cstddef>
+
 
 namespace quat {
 
@@ -2201,7 +2203,7 @@ struct matrix {
     static_assert(Rows > 0 && Cols > 0, "quat::matrix: empty matrices are not supported");
     /// Row-major: elements[row][col]. matrix<T, R, C>{} is zero; matrix<T, R, C> m; leaves the
     /// elements uninitialized, as in a plain struct.
-    T elements[Rows][Cols];
+    T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
 
     /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
     [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
@@ -2229,9 +2231,10 @@ struct matrix {
     }
 };
 
-/// 3x3 and 6x6 Jacobians and covariances, the sizes of SO(3)'s and SE(3)'s tangent spaces.
+/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
 template <class T>
 using matrix3 = matrix<T, 3, 3>;
+/// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
 template <class T>
 using matrix6 = matrix<T, 6, 6>;
 
@@ -6854,7 +6857,7 @@ namespace detail {
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
 // J. Guidance 30(4), 2007): |M - R_i|_F^2 = 8 - 8 (q . q_i)^2 for unit quaternions, so the sign of
 // each q_i drops out. K is divided by its trace sum w_i, making the eigenvalues fractions of the
-// total weight. `weight(i)` gives w_i; `valid` is false for no rotations, a weight below zero or a
+// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a weight below zero or a
 // non-positive or non-finite total (a NaN or infinite component gives NaN eigenvalues), and, when
 // `checked` (try_mean), for a rotation that is not a unit quaternion.
 template <class T>
@@ -6863,9 +6866,9 @@ struct mean_solution {
     bool valid;
 };
 
-template <bool checked, class T, class Weight>
-[[nodiscard]] constexpr mean_solution<T> solve_mean(const quaternion<T>* rotations,
-                                                    std::size_t count, Weight weight) noexcept {
+template <bool checked, class T, class Rotation, class Weight>
+[[nodiscard]] constexpr mean_solution<T> solve_mean_of(Rotation rotation, std::size_t count,
+                                                       Weight weight) noexcept {
     // The weights are divided by the largest first: the sums are ratios of weights, so the mean is
     // the same, and weights near max() no longer overflow the sums nor subnormal ones underflow
     // them. A NaN or infinite weight makes the largest non-finite and the result invalid.
@@ -6876,9 +6879,9 @@ template <bool checked, class T, class Weight>
         lowest = w < lowest ? w : lowest;
         largest = w > largest || !(w == w) ? w : largest;
         if constexpr (checked) {
-            units = units && detail::is_near_unit(rotations[i]);
+            units = units && detail::is_near_unit(rotation(i));
         } else {
-            QUAT_ASSERT(detail::is_near_unit(rotations[i]),
+            QUAT_ASSERT(detail::is_near_unit(rotation(i)),
                         "quat::mean: a rotation is not a unit quaternion");
         }
     }
@@ -6892,7 +6895,7 @@ template <bool checked, class T, class Weight>
         T ww = T(0), wx = T(0), wy = T(0), wz = T(0), xx = T(0), xy = T(0), xz = T(0), yy = T(0),
           yz = T(0), zz = T(0);
         for (std::size_t i = start; i < end; ++i) {
-            const quaternion<T>& q = rotations[i];
+            const quaternion<T>& q = rotation(i);
             const T w = weight(i) / scale;
             const T a = w * q.w, b = w * q.x, c = w * q.y;
             ww += a * q.w;
@@ -6920,6 +6923,14 @@ template <bool checked, class T, class Weight>
                        {wy * s, xy * s, yy * s, yz * s},
                        {wz * s, xz * s, yz * s, zz * s}};
     return {detail::symmetric_eigen(k), valid};
+}
+
+// solve_mean_of over an array of rotations.
+template <bool checked, class T, class Weight>
+[[nodiscard]] constexpr mean_solution<T> solve_mean(const quaternion<T>* rotations,
+                                                    std::size_t count, Weight weight) noexcept {
+    return solve_mean_of<checked, T>(
+        [rotations](std::size_t i) -> const quaternion<T>& { return rotations[i]; }, count, weight);
 }
 
 template <class T>
@@ -7410,11 +7421,18 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
 // (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018,
 // eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
 // 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
-// their digits to cancellation, it is summed from its Taylor series.
+// their digits to cancellation, it is summed from its Taylor series. The same coefficients build
+// so3.hpp's and se3.hpp's Jacobians.
+//
+// Every coefficient takes both n2 = n^2 and n, and reads n only in its closed form, away from zero:
+// a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
+// only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
+// f(n) = f(n n, n), are those rotation_spline.hpp calls.
 #ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 #define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
 #include <limits>
+#include <type_traits>
 
 
 namespace quat {
@@ -7446,71 +7464,138 @@ namespace detail {
 
 // sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
 // terms no longer change the sum (at most 40 terms; the series here are used where |ratio| < 1/2).
+// The series are in x = n^2, term_k = c_k x^k. A user scalar (a dual number) carries derivatives,
+// and its comparisons read only the value: near x = 0 the value stops changing after c_0, while
+// d term_1 / dx = c_1 is the whole derivative. So a user scalar always takes term_1 and stops only
+// when a term no longer changes term_1 (then j term_j / x, its derivative, is below epsilon c_1).
 template <class T, class Ratio>
 [[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
-    T sum = first, term = first;
+    T sum = first, term = first, linear = first;
     for (int k = 0; k < 40; ++k) {
         term = term * ratio(k);
         const T next = sum + term;
-        if (next == sum) break;
+        if constexpr (std::is_floating_point_v<T>) {
+            if (next == sum) break;
+        } else if (k == 0) {
+            linear = term;
+        } else if (linear + term == linear) {
+            break;
+        }
         sum = next;
     }
     return sum;
 }
 
-/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2, with no cancellation at any n.
+/// |r|^2 to pass with n = norm(r) to the coefficients below: n n for a floating-point type (so the
+/// results are those of the closed forms written in n, bit for bit), squared_norm(r) for a user
+/// scalar, whose derivative at r = 0 must not pass through n = sqrt(0).
 template <class T>
-[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+[[nodiscard]] constexpr T squared_angle(const vec3<T>& r, T n) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        return n * n;
+    } else {
+        return squared_norm(r);
+    }
+}
+
+/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2 = 1/2 - n^2/24 + n^4/720 - ..., with no
+/// cancellation at any n. A floating-point type takes sin(n/2) / (n/2), correct to rounding down
+/// to the smallest n (and 1 at n = 0); a user scalar takes the series below n = 2, whose
+/// derivatives are as accurate as its value (those of sin(h) / h lose epsilon / h^2 relative).
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n2, T n) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        // n2 is not read: n2 underflows to 0 only where sin(n/2) / (n/2) rounds to 1 anyway.
+        static_cast<void>(n2);
+    } else {
+        if (n2 < T(4))
+            return power_series(T(0.5), [n2](int k) { return -n2 / T((2 * k + 3) * (2 * k + 4)); });
+    }
     const T half = n / T(2);
     const T sinc = half == T(0) ? T(1) : detail::sin(half) / half;
     return sinc * sinc / T(2);
 }
+/// one_minus_cos_over_square(n n, n).
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+    return one_minus_cos_over_square(n * n, n);
+}
 
 /// (n - sin n) / n^3 = 1/6 - n^2/120 + n^4/5040 - ...
 template <class T>
-[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n2, T n) noexcept {
     if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
     return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
+}
+/// n_minus_sin_over_cube(n n, n).
+template <class T>
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
+    return n_minus_sin_over_cube(n * n, n);
 }
 
 /// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
 template <class T>
-[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T quartic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(4))
-        return (T(2) * n2 * one_minus_cos_over_square(n) - n * detail::sin(n)) / (n2 * n2);
+        return (T(2) * n2 * one_minus_cos_over_square(n2, n) - n * detail::sin(n)) / (n2 * n2);
     return power_series(T(1) / T(12), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
     });
 }
+/// quartic_coefficient(n n, n).
+template <class T>
+[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
+    return quartic_coefficient(n * n, n);
+}
 
 /// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
 /// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
 template <class T>
-[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T quintic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(9)) return (T(3) * detail::sin(n) - n * detail::cos(n) - T(2) * n) / (n2 * n2 * n);
     return power_series(T(-1) / T(60), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
     });
 }
+/// quintic_coefficient(n n, n).
+template <class T>
+[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
+    return quintic_coefficient(n * n, n);
+}
+
+/// (n^2 + 2 cos n - 2) / (2 n^4) = (1/2 - (1 - cos n) / n^2) / n^2 = 1/24 - n^2/720 + n^4/40320
+/// - ...: the third coefficient of SE(3)'s Q block (T. Barfoot, "State Estimation for Robotics",
+/// 2017, eq. 7.86). The closed form cancels by at most 3.4 times where it is used (n >= 2).
+template <class T>
+[[nodiscard]] constexpr T cosine_remainder_coefficient(T n2, T n) noexcept {
+    if (n2 >= T(4)) return (T(0.5) - one_minus_cos_over_square(n2, n)) / n2;
+    return power_series(T(1) / T(24), [n2](int j) {
+        const int k = j + 2;  // term_k = (-1)^k n^(2k - 4) / (2k)!
+        return -n2 / T((2 * k + 1) * (2 * k + 2));
+    });
+}
 
 /// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
 template <class T>
 [[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
-    const T n = norm(r);
+    const T n = norm(r), n2 = squared_angle(r, n);
     const vec3<T> c = cross(r, v);
-    return v - c * one_minus_cos_over_square(n) + cross(r, c) * n_minus_sin_over_cube(n);
+    return v - c * one_minus_cos_over_square(n2, n) + cross(r, c) * n_minus_sin_over_cube(n2, n);
 }
 
-/// (1 - (n/2) cot(n/2)) / n^2, the [r]x^2 coefficient of J(r)^-1, as
-/// quartic_coefficient / (2 one_minus_cos_over_square): both free of cancellation. For n < 2 pi.
+/// (1 - (n/2) cot(n/2)) / n^2 = 1/n^2 - (1 + cos n) / (2 n sin n) = 1/12 + n^2/720 + ..., the
+/// [r]x^2 coefficient of J(r)^-1, as quartic_coefficient / (2 one_minus_cos_over_square): both
+/// free of cancellation. For n < 2 pi.
+template <class T>
+[[nodiscard]] constexpr T inverse_jacobian_coefficient(T n2, T n) noexcept {
+    return quartic_coefficient(n2, n) / (T(2) * one_minus_cos_over_square(n2, n));
+}
+/// inverse_jacobian_coefficient(n n, n).
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
-    return quartic_coefficient(n) / (T(2) * one_minus_cos_over_square(n));
+    return inverse_jacobian_coefficient(n * n, n);
 }
 
 /// n_minus_sin_over_cube, quartic_coefficient and quintic_coefficient at one |r|: a solve that
@@ -7521,10 +7606,16 @@ struct jacobian_rate_coefficients {
     T cubic, quartic, quintic;
 };
 
-/// The coefficients at n = |r|.
+/// The coefficients at n = |r|, n2 = |r|^2.
+template <class T>
+[[nodiscard]] constexpr jacobian_rate_coefficients<T> jacobian_rate_coefficients_of(T n2,
+                                                                                    T n) noexcept {
+    return {n_minus_sin_over_cube(n2, n), quartic_coefficient(n2, n), quintic_coefficient(n2, n)};
+}
+/// jacobian_rate_coefficients_of(n n, n).
 template <class T>
 [[nodiscard]] constexpr jacobian_rate_coefficients<T> jacobian_rate_coefficients_of(T n) noexcept {
-    return {n_minus_sin_over_cube(n), quartic_coefficient(n), quintic_coefficient(n)};
+    return jacobian_rate_coefficients_of(n * n, n);
 }
 
 /// (d/dt J(r)) v for r changing at the rate v, with k the coefficients at |r|.
@@ -7539,7 +7630,8 @@ template <class T>
 /// quadratic in v.
 template <class T>
 [[nodiscard]] constexpr vec3<T> right_jacobian_rate(const vec3<T>& r, const vec3<T>& v) noexcept {
-    return right_jacobian_rate(r, v, jacobian_rate_coefficients_of(norm(r)));
+    const T n = norm(r);
+    return right_jacobian_rate(r, v, jacobian_rate_coefficients_of(squared_angle(r, n), n));
 }
 
 }  // namespace detail

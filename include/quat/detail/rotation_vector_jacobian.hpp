@@ -6,11 +6,18 @@
 // (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018,
 // eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
 // 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
-// their digits to cancellation, it is summed from its Taylor series.
+// their digits to cancellation, it is summed from its Taylor series. The same coefficients build
+// so3.hpp's and se3.hpp's Jacobians.
+//
+// Every coefficient takes both n2 = n^2 and n, and reads n only in its closed form, away from zero:
+// a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
+// only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
+// f(n) = f(n n, n), are those rotation_spline.hpp calls.
 #ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 #define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
 #include <limits>
+#include <type_traits>
 
 #include "../vec3.hpp"
 #include "math.hpp"
@@ -21,71 +28,138 @@ namespace detail {
 
 // sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
 // terms no longer change the sum (at most 40 terms; the series here are used where |ratio| < 1/2).
+// The series are in x = n^2, term_k = c_k x^k. A user scalar (a dual number) carries derivatives,
+// and its comparisons read only the value: near x = 0 the value stops changing after c_0, while
+// d term_1 / dx = c_1 is the whole derivative. So a user scalar always takes term_1 and stops only
+// when a term no longer changes term_1 (then j term_j / x, its derivative, is below epsilon c_1).
 template <class T, class Ratio>
 [[nodiscard]] constexpr T power_series(T first, Ratio ratio) noexcept {
-    T sum = first, term = first;
+    T sum = first, term = first, linear = first;
     for (int k = 0; k < 40; ++k) {
         term = term * ratio(k);
         const T next = sum + term;
-        if (next == sum) break;
+        if constexpr (std::is_floating_point_v<T>) {
+            if (next == sum) break;
+        } else if (k == 0) {
+            linear = term;
+        } else if (linear + term == linear) {
+            break;
+        }
         sum = next;
     }
     return sum;
 }
 
-/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2, with no cancellation at any n.
+/// |r|^2 to pass with n = norm(r) to the coefficients below: n n for a floating-point type (so the
+/// results are those of the closed forms written in n, bit for bit), squared_norm(r) for a user
+/// scalar, whose derivative at r = 0 must not pass through n = sqrt(0).
 template <class T>
-[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+[[nodiscard]] constexpr T squared_angle(const vec3<T>& r, T n) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        return n * n;
+    } else {
+        return squared_norm(r);
+    }
+}
+
+/// (1 - cos n) / n^2 = (sin(n/2) / (n/2))^2 / 2 = 1/2 - n^2/24 + n^4/720 - ..., with no
+/// cancellation at any n. A floating-point type takes sin(n/2) / (n/2), correct to rounding down
+/// to the smallest n (and 1 at n = 0); a user scalar takes the series below n = 2, whose
+/// derivatives are as accurate as its value (those of sin(h) / h lose epsilon / h^2 relative).
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n2, T n) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        // n2 is not read: n2 underflows to 0 only where sin(n/2) / (n/2) rounds to 1 anyway.
+        static_cast<void>(n2);
+    } else {
+        if (n2 < T(4))
+            return power_series(T(0.5), [n2](int k) { return -n2 / T((2 * k + 3) * (2 * k + 4)); });
+    }
     const T half = n / T(2);
     const T sinc = half == T(0) ? T(1) : detail::sin(half) / half;
     return sinc * sinc / T(2);
 }
+/// one_minus_cos_over_square(n n, n).
+template <class T>
+[[nodiscard]] constexpr T one_minus_cos_over_square(T n) noexcept {
+    return one_minus_cos_over_square(n * n, n);
+}
 
 /// (n - sin n) / n^3 = 1/6 - n^2/120 + n^4/5040 - ...
 template <class T>
-[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n2, T n) noexcept {
     if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
     return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
+}
+/// n_minus_sin_over_cube(n n, n).
+template <class T>
+[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
+    return n_minus_sin_over_cube(n * n, n);
 }
 
 /// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
 template <class T>
-[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T quartic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(4))
-        return (T(2) * n2 * one_minus_cos_over_square(n) - n * detail::sin(n)) / (n2 * n2);
+        return (T(2) * n2 * one_minus_cos_over_square(n2, n) - n * detail::sin(n)) / (n2 * n2);
     return power_series(T(1) / T(12), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
     });
 }
+/// quartic_coefficient(n n, n).
+template <class T>
+[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
+    return quartic_coefficient(n * n, n);
+}
 
 /// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
 /// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
 template <class T>
-[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
-    const T n2 = n * n;
+[[nodiscard]] constexpr T quintic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(9)) return (T(3) * detail::sin(n) - n * detail::cos(n) - T(2) * n) / (n2 * n2 * n);
     return power_series(T(-1) / T(60), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
     });
 }
+/// quintic_coefficient(n n, n).
+template <class T>
+[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
+    return quintic_coefficient(n * n, n);
+}
+
+/// (n^2 + 2 cos n - 2) / (2 n^4) = (1/2 - (1 - cos n) / n^2) / n^2 = 1/24 - n^2/720 + n^4/40320
+/// - ...: the third coefficient of SE(3)'s Q block (T. Barfoot, "State Estimation for Robotics",
+/// 2017, eq. 7.86). The closed form cancels by at most 3.4 times where it is used (n >= 2).
+template <class T>
+[[nodiscard]] constexpr T cosine_remainder_coefficient(T n2, T n) noexcept {
+    if (n2 >= T(4)) return (T(0.5) - one_minus_cos_over_square(n2, n)) / n2;
+    return power_series(T(1) / T(24), [n2](int j) {
+        const int k = j + 2;  // term_k = (-1)^k n^(2k - 4) / (2k)!
+        return -n2 / T((2 * k + 1) * (2 * k + 2));
+    });
+}
 
 /// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
 template <class T>
 [[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
-    const T n = norm(r);
+    const T n = norm(r), n2 = squared_angle(r, n);
     const vec3<T> c = cross(r, v);
-    return v - c * one_minus_cos_over_square(n) + cross(r, c) * n_minus_sin_over_cube(n);
+    return v - c * one_minus_cos_over_square(n2, n) + cross(r, c) * n_minus_sin_over_cube(n2, n);
 }
 
-/// (1 - (n/2) cot(n/2)) / n^2, the [r]x^2 coefficient of J(r)^-1, as
-/// quartic_coefficient / (2 one_minus_cos_over_square): both free of cancellation. For n < 2 pi.
+/// (1 - (n/2) cot(n/2)) / n^2 = 1/n^2 - (1 + cos n) / (2 n sin n) = 1/12 + n^2/720 + ..., the
+/// [r]x^2 coefficient of J(r)^-1, as quartic_coefficient / (2 one_minus_cos_over_square): both
+/// free of cancellation. For n < 2 pi.
+template <class T>
+[[nodiscard]] constexpr T inverse_jacobian_coefficient(T n2, T n) noexcept {
+    return quartic_coefficient(n2, n) / (T(2) * one_minus_cos_over_square(n2, n));
+}
+/// inverse_jacobian_coefficient(n n, n).
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
-    return quartic_coefficient(n) / (T(2) * one_minus_cos_over_square(n));
+    return inverse_jacobian_coefficient(n * n, n);
 }
 
 /// n_minus_sin_over_cube, quartic_coefficient and quintic_coefficient at one |r|: a solve that
@@ -96,10 +170,16 @@ struct jacobian_rate_coefficients {
     T cubic, quartic, quintic;
 };
 
-/// The coefficients at n = |r|.
+/// The coefficients at n = |r|, n2 = |r|^2.
+template <class T>
+[[nodiscard]] constexpr jacobian_rate_coefficients<T> jacobian_rate_coefficients_of(T n2,
+                                                                                    T n) noexcept {
+    return {n_minus_sin_over_cube(n2, n), quartic_coefficient(n2, n), quintic_coefficient(n2, n)};
+}
+/// jacobian_rate_coefficients_of(n n, n).
 template <class T>
 [[nodiscard]] constexpr jacobian_rate_coefficients<T> jacobian_rate_coefficients_of(T n) noexcept {
-    return {n_minus_sin_over_cube(n), quartic_coefficient(n), quintic_coefficient(n)};
+    return jacobian_rate_coefficients_of(n * n, n);
 }
 
 /// (d/dt J(r)) v for r changing at the rate v, with k the coefficients at |r|.
@@ -114,7 +194,8 @@ template <class T>
 /// quadratic in v.
 template <class T>
 [[nodiscard]] constexpr vec3<T> right_jacobian_rate(const vec3<T>& r, const vec3<T>& v) noexcept {
-    return right_jacobian_rate(r, v, jacobian_rate_coefficients_of(norm(r)));
+    const T n = norm(r);
+    return right_jacobian_rate(r, v, jacobian_rate_coefficients_of(squared_angle(r, n), n));
 }
 
 }  // namespace detail

@@ -1,0 +1,219 @@
+// so3.hpp and se3.hpp: each analytic Jacobian (jacobian/quat/<op>/double, the value and its
+// Jacobians in one call) against the same Jacobian by automatic differentiation with ceres::Jet
+// (jacobian/jet/<op>/double: the function evaluated on Jets, its ambient derivatives read into the
+// tangent Jacobian of the right plus and minus, as tests/test_so3.cpp and test_se3.cpp check them),
+// and so3/se3 exp and log without Jacobians beside from_rotation_vector and to_rotation_vector.
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include <ceres/jet.h>
+
+#include <quat/se3.hpp>
+#include <quat/so3.hpp>
+
+#include "common.hpp"
+
+namespace bench {
+
+void register_lie();
+
+namespace {
+
+using quat::matrix;
+using quat::matrix3;
+using quat::matrix6;
+using quat::quatd;
+using quat::vec3;
+using dq = quat::dual_quaternion<double>;
+using twist = quat::se3::twist<double>;
+template <int N>
+using jet = ceres::Jet<double, N>;
+
+// Inputs: rotation vectors with angles in [0, pi), unit quaternions, twists and rigid motions.
+vec3<double> rotation_vector(random_source& r) {
+    return quat::normalize(r.vector()) * r.uniform(0, 3.14159);
+}
+twist random_twist(random_source& r) {
+    const vec3<double> linear = r.vector();
+    return {linear, rotation_vector(r)};
+}
+dq motion(random_source& r) {
+    const quatd q = r.rotation();
+    return quat::to_dual_quaternion(q, r.vector());
+}
+
+/// Jet variables 0 .. 2 (from `first`) at v.
+template <int N>
+vec3<jet<N>> variables(const vec3<double>& v, int first) {
+    return {jet<N>(v.x, first), jet<N>(v.y, first + 1), jet<N>(v.z, first + 2)};
+}
+/// x (1, d/2): the first-order right plus of SO(3), d Jets at 0 from variable `first`.
+template <int N>
+quat::quaternion<jet<N>> first_order_plus(const quatd& x, int first) {
+    const vec3<jet<N>> d = variables<N>({0, 0, 0}, first);
+    return quat::quaternion<jet<N>>(x) *
+           quat::quaternion<jet<N>>{jet<N>(1), d.x * 0.5, d.y * 0.5, d.z * 0.5};
+}
+/// x ((1, omega/2) + eps (0, rho/2)): SE(3)'s, rho from variable `first`, omega after it.
+template <int N>
+quat::dual_quaternion<jet<N>> first_order_plus(const dq& x, int first) {
+    const vec3<jet<N>> rho = variables<N>({0, 0, 0}, first);
+    const vec3<jet<N>> omega = variables<N>({0, 0, 0}, first + 3);
+    const quat::dual_quaternion<jet<N>> step{
+        {jet<N>(1), omega.x * 0.5, omega.y * 0.5, omega.z * 0.5},
+        {jet<N>(0), rho.x * 0.5, rho.y * 0.5, rho.z * 0.5}};
+    return quat::dual_quaternion<jet<N>>(x) * step;
+}
+/// The derivatives of a quaternion of Jets read into the tangent: column i is
+/// 2 vec(q^-1 dq / dd_i), the inverse of the plus-Jacobian.
+template <int N>
+matrix<double, 3, N> tangent(const quat::quaternion<jet<N>>& q) {
+    const quatd inverse{q.w.a, -q.x.a, -q.y.a, -q.z.a};
+    matrix<double, 3, N> m{};
+    for (int i = 0; i < N; ++i) {
+        const quatd d = inverse * quatd{q.w.v[i], q.x.v[i], q.y.v[i], q.z.v[i]};
+        m(0, i) = 2 * d.x;
+        m(1, i) = 2 * d.y;
+        m(2, i) = 2 * d.z;
+    }
+    return m;
+}
+/// The same for a unit dual quaternion of Jets: X^-1 dX = (0, omega/2) + eps (0, rho/2).
+template <int N>
+matrix<double, 6, N> tangent(const quat::dual_quaternion<jet<N>>& x) {
+    const dq inverse{{x.real.w.a, -x.real.x.a, -x.real.y.a, -x.real.z.a},
+                     {x.dual.w.a, -x.dual.x.a, -x.dual.y.a, -x.dual.z.a}};
+    matrix<double, 6, N> m{};
+    for (int i = 0; i < N; ++i) {
+        const dq d = inverse * dq{{x.real.w.v[i], x.real.x.v[i], x.real.y.v[i], x.real.z.v[i]},
+                                  {x.dual.w.v[i], x.dual.x.v[i], x.dual.y.v[i], x.dual.z.v[i]}};
+        const double column[6] = {d.dual.x, d.dual.y, d.dual.z, d.real.x, d.real.y, d.real.z};
+        for (int r = 0; r < 6; ++r) m(r, i) = 2 * column[r];
+    }
+    return m;
+}
+/// The derivatives of Jets as a matrix, one row per output.
+template <int N, int R>
+matrix<double, R, N> partials(const jet<N> (&outputs)[R]) {
+    matrix<double, R, N> m{};
+    for (int r = 0; r < R; ++r)
+        for (int i = 0; i < N; ++i) m(r, i) = outputs[r].v[i];
+    return m;
+}
+
+/// A value and its Jacobians, returned whole so that nothing is optimized away.
+template <class V, class... J>
+struct with_jacobians {
+    V value;
+    std::tuple<J...> jacobians;
+};
+
+template <class Make, class F>
+void add(const std::string& name, Make make, F f) {
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [make, f](benchmark::State& state) { cycle(state, make, f); });
+}
+
+}  // namespace
+
+void register_lie() {
+    namespace so3 = quat::so3;
+    namespace se3 = quat::se3;
+    const auto pair = [](random_source& r) {
+        const quatd a = r.rotation();
+        return std::pair<quatd, quatd>{a, r.rotation()};
+    };
+    const auto act_input = [](random_source& r) {
+        const quatd q = r.rotation();
+        return std::pair<quatd, vec3<double>>{q, r.vector()};
+    };
+    const auto motions = [](random_source& r) {
+        const dq a = motion(r);
+        return std::pair<dq, dq>{a, motion(r)};
+    };
+    const auto rotation = [](random_source& r) { return r.rotation(); };
+
+    // SO(3) exp and log, with and without Jacobians, beside the conversions they are.
+    add("so3/exp/double", rotation_vector, [](const vec3<double>& w) { return so3::exp(w); });
+    add("so3/from_rotation_vector/double", rotation_vector,
+        [](const vec3<double>& w) { return quat::from_rotation_vector(w); });
+    add("so3/log/double", rotation, [](const quatd& q) { return so3::log(q); });
+    add("so3/to_rotation_vector/double", rotation,
+        [](const quatd& q) { return quat::to_rotation_vector(q); });
+    add("se3/exp/double", random_twist, [](const twist& t) { return se3::exp(t); });
+    add("se3/log/double", motion, [](const dq& x) { return se3::log(x); });
+
+    add("jacobian/quat/so3_exp/double", rotation_vector, [](const vec3<double>& w) {
+        with_jacobians<quatd, matrix3<double>> r{};
+        r.value = so3::exp(w, &std::get<0>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/so3_exp/double", rotation_vector, [](const vec3<double>& w) {
+        const auto q = quat::from_rotation_vector(variables<3>(w, 0));
+        return tangent(q);
+    });
+    add("jacobian/quat/so3_log/double", rotation, [](const quatd& q) {
+        with_jacobians<vec3<double>, matrix3<double>> r{};
+        r.value = so3::log(q, &std::get<0>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/so3_log/double", rotation, [](const quatd& q) {
+        const vec3<jet<3>> w = quat::to_rotation_vector(first_order_plus<3>(q, 0));
+        const jet<3> outputs[3] = {w.x, w.y, w.z};
+        return partials(outputs);
+    });
+    add("jacobian/quat/so3_compose/double", pair, [](const std::pair<quatd, quatd>& p) {
+        with_jacobians<quatd, matrix3<double>, matrix3<double>> r{};
+        r.value =
+            so3::compose(p.first, p.second, &std::get<0>(r.jacobians), &std::get<1>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/so3_compose/double", pair, [](const std::pair<quatd, quatd>& p) {
+        return tangent(first_order_plus<6>(p.first, 0) * first_order_plus<6>(p.second, 3));
+    });
+    add("jacobian/quat/so3_act/double", act_input, [](const std::pair<quatd, vec3<double>>& p) {
+        with_jacobians<vec3<double>, matrix3<double>, matrix3<double>> r{};
+        r.value = so3::act(p.first, p.second, &std::get<0>(r.jacobians), &std::get<1>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/so3_act/double", act_input, [](const std::pair<quatd, vec3<double>>& p) {
+        const vec3<jet<6>> v =
+            quat::rotate(first_order_plus<6>(p.first, 0), variables<6>(p.second, 3));
+        const jet<6> outputs[3] = {v.x, v.y, v.z};
+        return partials(outputs);
+    });
+
+    add("jacobian/quat/se3_exp/double", random_twist, [](const twist& t) {
+        with_jacobians<dq, matrix6<double>> r{};
+        r.value = se3::exp(t, &std::get<0>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/se3_exp/double", random_twist, [](const twist& t) {
+        return tangent(
+            se3::exp(se3::twist<jet<6>>{variables<6>(t.linear, 0), variables<6>(t.angular, 3)}));
+    });
+    add("jacobian/quat/se3_log/double", motion, [](const dq& x) {
+        with_jacobians<twist, matrix6<double>> r{};
+        r.value = se3::log(x, &std::get<0>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/se3_log/double", motion, [](const dq& x) {
+        const se3::twist<jet<6>> t = se3::log(first_order_plus<6>(x, 0));
+        const jet<6> outputs[6] = {t.linear.x,  t.linear.y,  t.linear.z,
+                                   t.angular.x, t.angular.y, t.angular.z};
+        return partials(outputs);
+    });
+    add("jacobian/quat/se3_between/double", motions, [](const std::pair<dq, dq>& p) {
+        with_jacobians<dq, matrix6<double>, matrix6<double>> r{};
+        r.value =
+            se3::between(p.first, p.second, &std::get<0>(r.jacobians), &std::get<1>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/se3_between/double", motions, [](const std::pair<dq, dq>& p) {
+        return tangent(
+            se3::between(first_order_plus<12>(p.first, 0), first_order_plus<12>(p.second, 6)));
+    });
+}
+
+}  // namespace bench

@@ -1,0 +1,213 @@
+// Opt-in Ceres Solver support (not included by quat.hpp; needs Ceres's headers and library): two
+// ceres::Manifold classes with analytic Jacobians, and functions that read a cost functor's
+// parameter blocks (`const T*`, T double or ceres::Jet) as quat types and write quat types back.
+//
+// Parameter-block layouts (scalar FIRST, quat's order, the memory layout of ceres::QuaternionManifold
+// and ceres/rotation.h; NOT Eigen's x, y, z, w, and not g2o's x, y, z, qx, qy, qz, qw, which put the
+// scalar last: convert such data when reading it):
+//   rotation: 4 numbers  w, x, y, z                      (quaternion_manifold)
+//   pose:     7 numbers  w, x, y, z, tx, ty, tz          (pose_manifold): rotation then translation
+//   twist:    6 numbers  linear x, y, z, angular x, y, z (se3::twist, the pose manifold's tangent)
+//
+// Both manifolds perturb on the right, as quat's so3/se3 functions (Sola et al., "A micro Lie
+// theory for state estimation in robotics", 2018): Plus(x, d) = x exp(d), Minus(y, x) = log(x^-1 y),
+// so a tangent step is expressed in the body frame of x. ceres::QuaternionManifold perturbs on the
+// left with half the angle, exp(d) * x: the same manifold with the same minima, its tangent
+// d_ceres = R(x) d / 2 for quaternion_manifold's d.
+#ifndef QUAT_INTEROP_CERES_HPP_INCLUDED
+#define QUAT_INTEROP_CERES_HPP_INCLUDED
+
+#include <ceres/manifold.h>
+
+#include "../conversions.hpp"
+#include "../dual_quaternion.hpp"
+#include "../quaternion.hpp"
+#include "../se3.hpp"
+#include "../vec3.hpp"
+
+namespace quat {
+
+#include "../detail/isa_namespace.inc"
+/// The quaternion p[0] + p[1] i + p[2] j + p[3] k (w, x, y, z) of a rotation block. T is the cost
+/// functor's scalar (double or ceres::Jet). Precondition: p points at 4 numbers.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> quaternion_from_parameters(const T* p) noexcept {
+    return {p[0], p[1], p[2], p[3]};
+}
+
+/// The vector (p[0], p[1], p[2]). Precondition: p points at 3 numbers.
+template <class T>
+[[nodiscard]] constexpr vec3<T> vec3_from_parameters(const T* p) noexcept {
+    return {p[0], p[1], p[2]};
+}
+
+/// The rigid motion x -> R x + t of a pose block w, x, y, z, tx, ty, tz: rotation p[0..3] first,
+/// then translation p[4..6] (to_dual_quaternion). Precondition: p points at 7 numbers whose first
+/// four are a unit quaternion (pose_manifold keeps them so).
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> pose_from_parameters(const T* p) noexcept {
+    return to_dual_quaternion(quaternion_from_parameters(p), vec3_from_parameters(p + 4));
+}
+
+/// The twist of a 6-number tangent block, linear part first (se3::twist's order).
+template <class T>
+[[nodiscard]] constexpr se3::twist<T> twist_from_parameters(const T* p) noexcept {
+    return {vec3_from_parameters(p), vec3_from_parameters(p + 3)};
+}
+
+/// Writes q as w, x, y, z to p[0..3].
+template <class T>
+constexpr void write_parameters(const quaternion<T>& q, T* p) noexcept {
+    p[0] = q.w;
+    p[1] = q.x;
+    p[2] = q.y;
+    p[3] = q.z;
+}
+
+/// Writes v as x, y, z to p[0..2].
+template <class T>
+constexpr void write_parameters(const vec3<T>& v, T* p) noexcept {
+    p[0] = v.x;
+    p[1] = v.y;
+    p[2] = v.z;
+}
+
+/// Writes the unit dual quaternion x as a pose block: its rotation w, x, y, z, then its translation
+/// (translation_of). Precondition: |x.real| = 1. x and -x write different numbers for one motion.
+template <class T>
+constexpr void write_parameters(const dual_quaternion<T>& x, T* p) noexcept {
+    write_parameters(rotation_of(x), p);
+    write_parameters(translation_of(x), p + 4);
+}
+
+/// Writes the twist v as 6 numbers, linear part first.
+template <class T>
+constexpr void write_parameters(const se3::twist<T>& v, T* p) noexcept {
+    write_parameters(v.linear, p);
+    write_parameters(v.angular, p + 3);
+}
+
+namespace detail {
+
+/// d(q exp(d)) / dd at d = 0, the 4x3 row-major matrix q (0, e_i) / 2 (columns i = 0, 1, 2):
+/// [-v^T; w I + [v]x] / 2 for q = (w, v).
+inline void quaternion_plus_jacobian(const double* q, double* j) noexcept {
+    const double w = q[0] / 2, x = q[1] / 2, y = q[2] / 2, z = q[3] / 2;
+    const double rows[4][3] = {{-x, -y, -z}, {w, -z, y}, {z, w, -x}, {-y, x, w}};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 3; ++c) j[r * 3 + c] = rows[r][c];
+}
+
+/// d log(q^-1 y) / dy at y = q, the 3x4 row-major matrix 2 [-v | w I - [v]x] for q = (w, v): twice
+/// the vector part of q^-1 dy. Its product with quaternion_plus_jacobian is the identity, and
+/// it sends q itself (a change of |y|, which log ignores) to zero.
+inline void quaternion_minus_jacobian(const double* q, double* j) noexcept {
+    const double w = 2 * q[0], x = 2 * q[1], y = 2 * q[2], z = 2 * q[3];
+    const double rows[3][4] = {{-x, w, z, -y}, {-y, -z, w, x}, {-z, y, -x, w}};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) j[r * 4 + c] = rows[r][c];
+}
+
+}  // namespace detail
+
+/// SO(3) as unit quaternions w, x, y, z (4 numbers) with rotation-vector tangents (3 numbers):
+/// Plus(x, d) = x * from_rotation_vector(d), Minus(y, x) = to_rotation_vector(x^-1 y), both on the
+/// right (d turns x about an axis of its own frame). ceres::QuaternionManifold stores the same 4
+/// numbers and has the same minima, with tangent d_ceres = R(x) d / 2 (it computes exp(d_ceres) x
+/// with exp(d_ceres) rotating by 2 |d_ceres|). Precondition: unit quaternions in x and y; Plus
+/// keeps them unit to rounding (it does not renormalize).
+class quaternion_manifold final : public ::ceres::Manifold {
+public:
+    /// 4: w, x, y, z.
+    [[nodiscard]] int AmbientSize() const override { return 4; }
+    /// 3: a rotation vector (angle * axis, radians) in the frame of x.
+    [[nodiscard]] int TangentSize() const override { return 3; }
+
+    /// x * exp(delta), written to x_plus_delta (w, x, y, z). Always succeeds.
+    bool Plus(const double* x, const double* delta, double* x_plus_delta) const override {
+        write_parameters(
+            quaternion_from_parameters(x) * from_rotation_vector(vec3_from_parameters(delta)),
+            x_plus_delta);
+        return true;
+    }
+
+    /// d Plus(x, delta) / d delta at delta = 0: 4x3, row-major.
+    bool PlusJacobian(const double* x, double* jacobian) const override {
+        detail::quaternion_plus_jacobian(x, jacobian);
+        return true;
+    }
+
+    /// log(x^-1 y): the rotation vector (angle in [0, pi]) that Plus adds to x to reach y (or -y).
+    bool Minus(const double* y, const double* x, double* y_minus_x) const override {
+        write_parameters(to_rotation_vector(conjugate(quaternion_from_parameters(x)) *
+                                            quaternion_from_parameters(y)),
+                         y_minus_x);
+        return true;
+    }
+
+    /// d Minus(y, x) / dy at y = x: 3x4, row-major.
+    bool MinusJacobian(const double* x, double* jacobian) const override {
+        detail::quaternion_minus_jacobian(x, jacobian);
+        return true;
+    }
+};
+
+/// SE(3) as poses w, x, y, z, tx, ty, tz (7 numbers: unit quaternion, then translation) with twist
+/// tangents, linear part first (6 numbers, se3::twist): Plus(X, tau) = X se3::exp(tau) and
+/// Minus(Y, X) = se3::log(X^-1 Y), on the right. This is SE(3), not SO(3) x R^3: a step turns and
+/// moves along a screw in the frame of X, as the residuals of a pose graph do. Precondition: unit
+/// quaternions; Plus keeps them unit to rounding.
+class pose_manifold final : public ::ceres::Manifold {
+public:
+    /// 7: w, x, y, z, tx, ty, tz.
+    [[nodiscard]] int AmbientSize() const override { return 7; }
+    /// 6: a twist, linear x, y, z then angular x, y, z.
+    [[nodiscard]] int TangentSize() const override { return 6; }
+
+    /// X exp(tau), written to x_plus_delta as a pose block. Always succeeds.
+    bool Plus(const double* x, const double* delta, double* x_plus_delta) const override {
+        write_parameters(se3::plus(pose_from_parameters(x), twist_from_parameters(delta)),
+                         x_plus_delta);
+        return true;
+    }
+
+    /// d Plus(X, tau) / d tau at tau = 0: 7x6, row-major, [[0, Q], [R, 0]] with Q the
+    /// quaternion's 4x3 plus-Jacobian and R the rotation matrix of X (a linear step moves along
+    /// the axes of X).
+    bool PlusJacobian(const double* x, double* jacobian) const override {
+        for (int i = 0; i < 7 * 6; ++i) jacobian[i] = 0;
+        double q[4 * 3];
+        detail::quaternion_plus_jacobian(x, q);
+        const rotation_matrix<double> r = to_matrix(quaternion_from_parameters(x));
+        for (int row = 0; row < 4; ++row)
+            for (int col = 0; col < 3; ++col) jacobian[row * 6 + 3 + col] = q[row * 3 + col];
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col) jacobian[(4 + row) * 6 + col] = r(row, col);
+        return true;
+    }
+
+    /// log(X^-1 Y): the twist (rotation angle in [0, pi]) that Plus adds to X to reach Y.
+    bool Minus(const double* y, const double* x, double* y_minus_x) const override {
+        write_parameters(se3::minus(pose_from_parameters(y), pose_from_parameters(x)), y_minus_x);
+        return true;
+    }
+
+    /// d Minus(Y, X) / dY at Y = X: 6x7, row-major, [[0, R^T], [M, 0]] with M the quaternion's
+    /// 3x4 minus-Jacobian. MinusJacobian * PlusJacobian is the 6x6 identity.
+    bool MinusJacobian(const double* x, double* jacobian) const override {
+        for (int i = 0; i < 6 * 7; ++i) jacobian[i] = 0;
+        double m[3 * 4];
+        detail::quaternion_minus_jacobian(x, m);
+        const rotation_matrix<double> r = to_matrix(quaternion_from_parameters(x));
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col) jacobian[row * 7 + 4 + col] = r(col, row);
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 4; ++col) jacobian[(3 + row) * 7 + col] = m[row * 4 + col];
+        return true;
+    }
+};
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_INTEROP_CERES_HPP_INCLUDED
