@@ -25,6 +25,7 @@
 #include "measure_align.hpp"
 #include "measure_euler.hpp"
 #include "measure_fast_slerp.hpp"
+#include "measure_lie.hpp"
 #include "measure_registration.hpp"
 #include "measure_rigid.hpp"
 #include "measure_scipy.hpp"
@@ -277,6 +278,8 @@ int run(const options& opt) {
     d.align();
     registration::add_rows<float>(rows, opt.quick, seed);
     registration::add_rows<double>(rows, opt.quick, seed);
+    lie::add_rows<float>(rows, opt.quick, seed);
+    lie::add_rows<double>(rows, opt.quick, seed);
 
     print_table(rows);
     std::printf(
