@@ -26,6 +26,8 @@
 
 #include <ceres/jet.h>
 #include <quat/quat.hpp>
+#include <quat/se3.hpp>
+#include <quat/so3.hpp>
 
 #include "support/catch.hpp"
 #include "support/dual_number.hpp"
@@ -414,4 +416,61 @@ TEST_CASE("sclerp differentiates at equal motions, pure translations and tiny tu
             }
         }
     }
+}
+
+TEST_CASE(
+    "so3 and se3 exp, log, plus and minus differentiate at zero, tiny and near-half-turn "
+    "tangents") {
+    // The Lie-group forms with the tests' own dual number beside ceres::Jet (tests/test_so3.cpp
+    // and tests/test_se3.cpp compare Jet with the analytic Jacobians).
+    const auto so3_exp = [](const auto& x) { return flat(so3::exp(vec_in(x, 0))); };
+    const auto so3_log = [](const auto& x) { return flat(so3::log(unit_at(x))); };
+    const auto so3_plus = [](const auto& x) { return flat(so3::plus(unit_at(x), vec_in(x, 4))); };
+    const auto so3_minus = [](const auto& x) {
+        return flat(so3::minus(unit_at(x), unit_at(x, 4)));
+    };
+    const auto twist_at = [](const auto& x, std::size_t i) {
+        using S = std::decay_t<decltype(x[0])>;
+        return se3::twist<S>{vec_in(x, i), vec_in(x, i + 3)};
+    };
+    const auto flat_motion = [](const auto& m) {
+        return std::array{m.real.w, m.real.x, m.real.y, m.real.z,
+                          m.dual.w, m.dual.x, m.dual.y, m.dual.z};
+    };
+    const auto flat_twist = [](const auto& t) {
+        return std::array{t.linear.x,  t.linear.y,  t.linear.z,
+                          t.angular.x, t.angular.y, t.angular.z};
+    };
+    const auto se3_exp = [&](const auto& x) { return flat_motion(se3::exp(twist_at(x, 0))); };
+    // log and minus at motions reached from a fixed one by a twist: derivatives along the group.
+    quat::test::random_rotations random;
+    const dual_quaternion<double> base = random.rigid_motion<double>();
+    const auto se3_log = [&](const auto& x) {
+        using S = std::decay_t<decltype(x[0])>;
+        return flat_twist(se3::log(dual_quaternion<S>(base) * se3::exp(twist_at(x, 0))));
+    };
+    const auto se3_minus = [&](const auto& x) {
+        using S = std::decay_t<decltype(x[0])>;
+        const dual_quaternion<S> from(base);
+        return flat_twist(se3::minus(se3::plus(from, twist_at(x, 0)), from));
+    };
+    const vec3<double> axis = random.unit_vector<double>(), rho = random.vector<double>(1.0);
+    const quatd q = random.unit_quaternion<double>();
+    for (const double angle : {0.0, tiny, 0.9 * series_switch, 1.1 * series_switch, 0.7, 2.5}) {
+        const vec3<double> w = axis * angle;
+        const quatd p = q * turn(axis, angle);
+        check_derivatives<3>(label("so3::exp angle", angle), so3_exp, inputs<3>({w.x, w.y, w.z}));
+        check_derivatives<4>(label("so3::log angle", angle), so3_log, flat_q(turn(axis, angle)));
+        check_derivatives<7>(label("so3::plus angle", angle), so3_plus,
+                             inputs<7>({q.w, q.x, q.y, q.z, w.x, w.y, w.z}));
+        check_derivatives<8>(label("so3::minus angle", angle), so3_minus,
+                             inputs<8>({p.w, p.x, p.y, p.z, q.w, q.x, q.y, q.z}));
+        const std::array<double, 6> t = inputs<6>({rho.x, rho.y, rho.z, w.x, w.y, w.z});
+        check_derivatives<6>(label("se3::exp angle", angle), se3_exp, t);
+        check_derivatives<6>(label("se3::log angle", angle), se3_log, t);
+        check_derivatives<6>(label("se3::minus angle", angle), se3_minus, t);
+    }
+    const std::array<double, 6> zero_twist{};
+    check_derivatives<6>("se3::exp of the zero twist", se3_exp, zero_twist);
+    check_derivatives<6>("se3::log at the zero twist", se3_log, zero_twist);
 }
