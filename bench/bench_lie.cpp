@@ -2,7 +2,8 @@
 // Jacobians in one call) against the same Jacobian by automatic differentiation with ceres::Jet
 // (jacobian/jet/<op>/double: the function evaluated on Jets, its ambient derivatives read into the
 // tangent Jacobian of the right plus and minus, as tests/test_so3.cpp and test_se3.cpp check them),
-// and so3/se3 exp and log without Jacobians beside from_rotation_vector and to_rotation_vector.
+// and so3/se3 exp, log, plus and minus without Jacobians (exp and log beside from_rotation_vector
+// and to_rotation_vector).
 #include <string>
 #include <tuple>
 #include <utility>
@@ -143,6 +144,22 @@ void register_lie() {
         [](const quatd& q) { return quat::to_rotation_vector(q); });
     add("se3/exp/double", random_twist, [](const twist& t) { return se3::exp(t); });
     add("se3/log/double", motion, [](const dq& x) { return se3::log(x); });
+    const auto step = [](random_source& r) {
+        const quatd q = r.rotation();
+        return std::pair<quatd, vec3<double>>{q, rotation_vector(r)};
+    };
+    const auto rigid_step = [](random_source& r) {
+        const dq x = motion(r);
+        return std::pair<dq, twist>{x, random_twist(r)};
+    };
+    add("so3/plus/double", step,
+        [](const std::pair<quatd, vec3<double>>& p) { return so3::plus(p.first, p.second); });
+    add("so3/minus/double", pair,
+        [](const std::pair<quatd, quatd>& p) { return so3::minus(p.first, p.second); });
+    add("se3/plus/double", rigid_step,
+        [](const std::pair<dq, twist>& p) { return se3::plus(p.first, p.second); });
+    add("se3/minus/double", motions,
+        [](const std::pair<dq, dq>& p) { return se3::minus(p.first, p.second); });
 
     add("jacobian/quat/so3_exp/double", rotation_vector, [](const vec3<double>& w) {
         with_jacobians<quatd, matrix3<double>> r{};
