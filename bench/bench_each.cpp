@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include <quat/elementwise.hpp>
@@ -138,22 +137,6 @@ void rotate_each_soa(benchmark::State& state, long long size) {
     count(state, n, 10 * sizeof(T));
 }
 
-// The memory floor of rotate_each: it reads 28 bytes (float) and writes 12 per element. A copy
-// reads and writes equal amounts, so this one copies 20 bytes per element, moving the same 40.
-template <class T>
-void rotate_each_memcpy(benchmark::State& state, long long size) {
-    const std::size_t n = static_cast<std::size_t>(size);
-    random_source random;
-    std::vector<T> in(5 * n), out(5 * n);
-    for (auto& v : in) v = T(random.uniform(-1, 1));
-    for (auto _ : state) {
-        std::memcpy(out.data(), in.data(), 5 * n * sizeof(T));
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    count(state, n, 10 * sizeof(T));
-}
-
 template <class Lib>
 void compose_each(benchmark::State& state, long long size) {
     using T = typename Lib::scalar;
@@ -222,13 +205,13 @@ void register_each() {
     register_library<each_quat<T>>();
     register_library<each_glm<T>>();
     register_library<each_eigen<T>>();
-    for (const long long n : {1024LL, 4194304LL}) {
+    for (const long long n : {1024LL, 4194304LL})
         benchmark::RegisterBenchmark(
             name("rotate_each", "quat", "quaternion_soa", "float", n).c_str(), rotate_each_soa<T>,
             n);
-        benchmark::RegisterBenchmark(name("rotate_each", "memcpy", "bytes", "float", n).c_str(),
-                                     rotate_each_memcpy<T>, n);
-    }
+    // The memory floor of rotate_each: it reads 28 bytes (float) and writes 12 per element. A copy
+    // reads and writes equal amounts, so these copy 20 bytes per element, moving the same 40.
+    register_copy_floors("rotate_each", 5, 10 * sizeof(T), {1024, 4194304});
 }
 
 }  // namespace bench

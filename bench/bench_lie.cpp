@@ -16,9 +16,6 @@
 #include "common.hpp"
 
 namespace bench {
-
-void register_lie();
-
 namespace {
 
 using quat::matrix;

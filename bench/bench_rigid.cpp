@@ -1,5 +1,5 @@
 // Rigid motions x -> R x + t as dual quaternions and 4x4 matrices: transform_batch (n points moved
-// by one motion, in cache and out of it; rotate_batch's memcpy of the same bytes is the floor),
+// by one motion, in cache and out of it; rotate_batch's copies of the same bytes are the floor),
 // rigid_chain (the product of 1024 motions), sclerp and blend. Eigen has no dual quaternion, so
 // its entries are matrices only; sclerp and blend have no counterpart in GLM or Eigen.
 #include <algorithm>

@@ -1,8 +1,7 @@
 // rotate_point (latency of one rotation), rotate_pairs (throughput when every point has its own
-// quaternion) and rotate_batch (throughput over n points, in and out of cache), with a memcpy of the
-// same bytes as the memory-bound floor.
+// quaternion) and rotate_batch (throughput over n points, in and out of cache), with copies of the
+// same bytes (memcpy, a plain loop, a streaming copy: common.hpp) as the memory-bound floor.
 #include <algorithm>
-#include <cstring>
 
 #include "common.hpp"
 
@@ -89,22 +88,6 @@ void rotate_batch_soa(benchmark::State& state, long long count) {
     state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(batch_bytes<T>(n)));
 }
 
-// Copying the same bytes: no rotation can be faster once the points are out of cache.
-template <class T>
-void rotate_batch_memcpy(benchmark::State& state, long long count) {
-    const std::size_t n = static_cast<std::size_t>(count);
-    random_source random;
-    std::vector<T> in(3 * n), out(3 * n);
-    for (auto& v : in) v = T(random.uniform(-1, 1));
-    for (auto _ : state) {
-        std::memcpy(out.data(), in.data(), 3 * n * sizeof(T));
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
-    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(batch_bytes<T>(n)));
-}
-
 template <class T>
 const std::vector<long long>& batch_sizes() {
     // 64 ... 4M points in steps of 4: L1, L2, L3 and main memory.
@@ -145,9 +128,9 @@ void register_rotate() {
         benchmark::RegisterBenchmark(
             name("rotate_batch", "quat", "quaternion_soa", "float", n).c_str(),
             rotate_batch_soa<float>, n);
-        benchmark::RegisterBenchmark(name("rotate_batch", "memcpy", "bytes", "float", n).c_str(),
-                                     rotate_batch_memcpy<float>, n);
     }
+    // Copying the same bytes: no rotation can be faster once the points are out of cache.
+    register_copy_floors("rotate_batch", 3, batch_bytes<float>(1), batch_sizes<float>());
 }
 
 }  // namespace bench

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -241,6 +242,71 @@ void time_compose_span(benchmark::State& state, const Factors& factors) {
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(factors.size()));
 }
 
+/// The copy floor of a batch that moves `floats` floats per element each way: the same bytes
+/// copied by memcpy, by a plain vectorized loop and, where input and output together exceed the
+/// last-level cache, by non-temporal stores (quat's own stream_floats). `--table` takes the fastest
+/// of the three as the floor, per size, and names it: no one copy is fastest on every CPU (glibc's
+/// memcpy took 5 us for 12 KiB on a Zen 4 whose plain loop took 0.2).
+enum class copy_kind { memcpy, loop, stream };
+
+inline const char* copy_name(copy_kind kind) {
+    return kind == copy_kind::memcpy ? "memcpy" : kind == copy_kind::loop ? "copy_loop" : "stream";
+}
+
+/// The plain loop: 32-byte vectors (GCC/clang vector extension), because g++ and clang turn a
+/// float-by-float copy loop into a call of memcpy.
+inline void copy_floats_loop(float* to, const float* from, std::size_t n) {
+    using float8 = float __attribute__((vector_size(32)));
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        float8 v;
+        std::memcpy(&v, from + i, sizeof v);
+        std::memcpy(to + i, &v, sizeof v);
+    }
+    for (; i < n; ++i) to[i] = from[i];
+}
+
+template <copy_kind Kind>
+void copy_floor(benchmark::State& state, long long count, std::size_t floats,
+                std::size_t bytes_per_item) {
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    std::vector<float> in(floats * n), out(floats * n);
+    for (auto& v : in) v = float(random.uniform(-1, 1));
+    for (auto _ : state) {
+        if constexpr (Kind == copy_kind::memcpy) {
+            std::memcpy(out.data(), in.data(), in.size() * sizeof(float));
+        } else if constexpr (Kind == copy_kind::loop) {
+            copy_floats_loop(out.data(), in.data(), in.size());
+        } else {
+            quat::detail::stream_floats(out.data(), in.data(), in.size());
+            quat::detail::stream_fence();
+        }
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(n * bytes_per_item));
+}
+
+/// Registers "<operation>/{memcpy,copy_loop,stream}/bytes/float/<n>" for each n; bytes_per_item is
+/// what the operation's own benchmark counts per element.
+inline void register_copy_floors(const std::string& operation, std::size_t floats,
+                                 std::size_t bytes_per_item, const std::vector<long long>& sizes) {
+    // The streaming copy only beyond the last-level cache, by quat's own rule (0: unknown).
+    const std::size_t cache = quat::detail::last_level_cache_bytes();
+    for (const long long n : sizes) {
+        const std::size_t moved = 2 * floats * sizeof(float) * static_cast<std::size_t>(n);
+        benchmark::RegisterBenchmark(name(operation, "memcpy", "bytes", "float", n).c_str(),
+                                     copy_floor<copy_kind::memcpy>, n, floats, bytes_per_item);
+        benchmark::RegisterBenchmark(name(operation, "copy_loop", "bytes", "float", n).c_str(),
+                                     copy_floor<copy_kind::loop>, n, floats, bytes_per_item);
+        if (quat::detail::has_streaming_stores && moved > (cache == 0 ? (32u << 20) : cache))
+            benchmark::RegisterBenchmark(name(operation, "stream", "bytes", "float", n).c_str(),
+                                         copy_floor<copy_kind::stream>, n, floats, bytes_per_item);
+    }
+}
+
 /// Registration entry points, one per source file; each registers float and double variants.
 void register_rotate();
 void register_compose();
@@ -252,6 +318,7 @@ void register_estimation();  // bench_estimation.cpp
 void register_keyframes();   // bench_keyframes.cpp
 void register_rigid();       // bench_rigid.cpp
 void register_each();        // bench_each.cpp
+void register_lie();         // bench_lie.cpp
 
 /// `quat_bench --counts`: the operation-count tables.
 int print_counts();

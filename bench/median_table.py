@@ -5,7 +5,9 @@ Usage: python3 bench/median_table.py run1.json run2.json run3.json
        python3 bench/median_table.py --levels x86-64=a1.json,a2.json x86-64-v3=b1.json native=c1.json
   each run from: quat_bench --table --benchmark_out=runN.json --benchmark_out_format=json
 Cells are ns per item (point, product, call or value) from items_per_second, as `--table` prints
-them; ratio = other / quat (> 1: quat faster). With --levels, one column per build (instruction-set
+them, the median over every repetition in every file (`--table` writes 5 repetitions per run);
+"copy floor" rows are the fastest of the copies' medians (memcpy, plain loop, streaming copy);
+ratio = other / quat (> 1: quat faster). With --levels, one column per build (instruction-set
 level), each cell "quat ns (GLM / quat, Eigen / quat)". Python 3 standard library only.
 """
 import json
@@ -27,14 +29,22 @@ ROWS = [
     ("rotate_batch, quaternion, struct of arrays, n = 4194304",
      "rotate_batch/{lib}/quaternion_soa/float/4194304"),
     ("memcpy of the same bytes, n = 1024", "rotate_batch/memcpy/bytes/float/1024"),
+    ("plain copy loop of the same bytes, n = 1024", "rotate_batch/copy_loop/bytes/float/1024"),
+    ("copy floor (fastest copy), n = 1024", "floor:rotate_batch/1024"),
     ("memcpy of the same bytes, n = 4194304", "rotate_batch/memcpy/bytes/float/4194304"),
+    ("plain copy loop of the same bytes, n = 4194304",
+     "rotate_batch/copy_loop/bytes/float/4194304"),
+    ("streaming copy of the same bytes, n = 4194304", "rotate_batch/stream/bytes/float/4194304"),
+    ("copy floor (fastest copy), n = 4194304", "floor:rotate_batch/4194304"),
     ("rotate_each, point i by quaternion i, n = 1024", "rotate_each/{lib}/quaternion/float/1024"),
     ("rotate_each, struct of arrays, n = 1024", "rotate_each/{lib}/quaternion_soa/float/1024"),
     ("rotate_each, n = 4194304", "rotate_each/{lib}/quaternion/float/4194304"),
     ("rotate_each, struct of arrays, n = 4194304",
      "rotate_each/{lib}/quaternion_soa/float/4194304"),
     ("memcpy of rotate_each's bytes, n = 1024", "rotate_each/memcpy/bytes/float/1024"),
+    ("copy floor of rotate_each's bytes, n = 1024", "floor:rotate_each/1024"),
     ("memcpy of rotate_each's bytes, n = 4194304", "rotate_each/memcpy/bytes/float/4194304"),
+    ("copy floor of rotate_each's bytes, n = 4194304", "floor:rotate_each/4194304"),
     ("compose_each, a[i] * b[i], n = 1024", "compose_each/{lib}/quaternion/float/1024"),
     ("to_matrix over an array, n = 1024", "to_matrix_each/{lib}/quaternion/float/1024"),
     ("to_quaternion over an array, n = 1024", "to_quaternion_each/{lib}/matrix/float/1024"),
@@ -87,18 +97,30 @@ ROWS = [
 LIBRARIES = ("quat", "glm", "eigen")
 
 
+COPIES = ("memcpy", "copy_loop", "stream")
+
+
 def ns_per_item(path):
+    """Every repetition of every benchmark in one JSON file, as ns per item."""
     with open(path) as f:
         data = json.load(f)
     out = {}
     for b in data["benchmarks"]:
         if b.get("run_type", "iteration") == "iteration" and b.get("items_per_second", 0) > 0:
-            out[b["name"]] = 1e9 / b["items_per_second"]
+            name = b.get("run_name", b["name"])
+            out.setdefault(name, []).append(1e9 / b["items_per_second"])
     return data["context"], out
 
 
 def median_of(runs, name):
-    values = [r[name] for _, r in runs if name in r]
+    """The median over all repetitions of all runs; "floor:<operation>/<n>" is the fastest of the
+    copies' medians (memcpy, plain loop, streaming copy), as `quat_bench --table` takes it."""
+    if name.startswith("floor:"):
+        operation, _, size = name[len("floor:"):].partition("/")
+        copies = [median_of(runs, f"{operation}/{kind}/bytes/float/{size}") for kind in COPIES]
+        copies = [c for c in copies if c is not None]
+        return min(copies) if copies else None
+    values = [v for _, r in runs if name in r for v in r[name]]
     return statistics.median(values) if values else None
 
 

@@ -217,14 +217,24 @@ TEMPLATE_TEST_CASE("batch slerp matches a long double slerp, polynomial path and
     CHECK(worst_fallback <= 4);
 }
 
+TEST_CASE("the streaming threshold is half the last-level cache, or 16 MiB where none is known",
+          "[batch]") {
+    const std::size_t cache = quat::detail::last_level_cache_bytes();
+    INFO("last-level cache: " << cache << " bytes");
+    CHECK(quat::detail::last_level_cache_bytes() == cache);  // read once, the same every time
+    CHECK(quat::detail::streaming_threshold_bytes() ==
+          (cache == 0 ? std::size_t(16) << 20 : cache / 2));
+}
+
 TEST_CASE(
-    "batch rotate of a float array beyond 16 MiB (streamed in AVX-512 builds) equals the scalar "
-    "rotate",
+    "batch rotate of a float array beyond the streaming threshold (non-temporal stores on x86) "
+    "equals the scalar rotate",
     "[batch]") {
     quat::test::random_rotations random;
     const quat::quatf q = random.unit_quaternion<float>();
     const quat::rotation_matrix<float> m = quat::to_matrix(q);
-    const std::size_t n = (std::size_t(16) << 20) / sizeof(quat::vec3<float>) + 101;  // odd tail
+    const std::size_t n =
+        quat::detail::streaming_threshold_bytes() / sizeof(quat::vec3<float>) + 101;  // odd tail
     std::vector<quat::vec3<float>> points(n);
     for (std::size_t i = 0; i < n; ++i)
         points[i] = {float(i % 97) - 48.0f, float(i % 89) * 0.5f, 1.0f};
@@ -239,11 +249,41 @@ TEST_CASE(
     CHECK(points == out);
 }
 
-TEST_CASE("struct-of-arrays rotate beyond 16 MiB (streaming stores) equals the scalar rotate",
+TEST_CASE("streamed batch rotate: every offset of the output from a cache line, every short tail",
           "[batch]") {
+    // The streaming path (called directly here, whatever this machine's threshold) stores plainly
+    // up to a 64-byte boundary of the output, then streams: an output starting k points (12 k
+    // bytes) into a buffer meets the boundary after a different number of points for each k < 16.
+    const quat::quatf q = quat::normalize(quat::quatf{0.6f, 0.1f, -0.3f, 0.4f});
+    const quat::rotation_matrix<float> m = quat::to_matrix(q);
+    const quat::vec3<float> t{0.5f, -1.0f, 2.0f};
+    std::vector<quat::vec3<float>> points(3000), buffer(3100);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        points[i] = {float(i % 13) - 6.0f, float(i % 7) * 0.25f, -float(i % 5)};
+    for (std::size_t offset = 0; offset < 16; ++offset) {
+        for (const std::size_t count : {0u, 1u, 7u, 15u, 16u, 17u, 255u, 256u, 257u, 2999u}) {
+            quat::vec3<float>* out = buffer.data() + offset;
+            const quat::vec3<float> sentinel{9, 9, 9};
+            out[count] = sentinel;
+            quat::detail::transform_streaming<true>(m, t, points.data(), out, count);
+            std::size_t mismatches = 0;
+            for (std::size_t i = 0; i < count; ++i)
+                if (!(max_difference(out[i], quat::rotate(m, points[i]) + t) <= 1e-5f))
+                    ++mismatches;
+            INFO("offset " << offset << " points, " << count << " points");
+            CHECK(mismatches == 0);
+            CHECK(out[count] == sentinel);  // nothing written past the end
+        }
+    }
+}
+
+TEST_CASE(
+    "struct-of-arrays rotate beyond the streaming threshold (streaming stores) equals the scalar "
+    "rotate",
+    "[batch]") {
     const quat::quatf q = quat::normalize(quat::quatf{0.3f, -0.5f, 0.7f, 0.2f});
     const quat::rotation_matrix<float> m = quat::to_matrix(q);
-    const std::size_t n = (std::size_t(16) << 20) / (3 * sizeof(float)) + 77;
+    const std::size_t n = quat::detail::streaming_threshold_bytes() / (3 * sizeof(float)) + 77;
     std::vector<float> x(n), y(n), z(n), ox(n), oy(n), oz(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = float(i % 31), y[i] = -float(i % 17), z[i] = 0.5f;
     quat::rotate(q, quat::soa_points<const float>{x.data(), y.data(), z.data(), n},

@@ -62,11 +62,12 @@ TEMPLATE_TEST_CASE("batch transform equals the scalar transform, both layouts, e
     }
 }
 
-TEST_CASE("batch transform beyond 16 MiB (streaming stores) equals the scalar transform",
-          "[rigid_batch]") {
+TEST_CASE(
+    "batch transform beyond the streaming threshold (streaming stores) equals the scalar transform",
+    "[rigid_batch]") {
     const auto dq = quat::to_dual_quaternion(quat::normalize(quat::quatf{0.3f, -0.5f, 0.7f, 0.2f}),
                                              vec3<float>{1, -2, 3});
-    const std::size_t n = (std::size_t(16) << 20) / (3 * sizeof(float)) + 77;
+    const std::size_t n = quat::detail::streaming_threshold_bytes() / (3 * sizeof(float)) + 77;
     std::vector<vec3<float>> in(n), out(n);
     std::vector<float> x(n), y(n), z(n), ox(n), oy(n), oz(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The README's two commands.
 #   bash tools/quat.sh bench   build quat_bench for this machine (preset release-native, -march=native)
-#                              and print the benchmark comparison table, naming the instruction set
+#                              and print the benchmark comparison table, naming the instruction set:
+#                              each cell the median of 5 repetitions run in random interleaved order,
+#                              with their spread, so one disturbed run on a shared machine cannot
+#                              flip a verdict (quat_bench --table's defaults; a few minutes)
 #   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does)
 # Both first make sure the Debian packages quat needs are installed: as root they are installed
 # with apt-get; otherwise the script stops and prints the apt-get line to run.
@@ -54,6 +57,8 @@ run_bench() {
     local exe
     exe="$(find "build/$preset" -type f -name quat_bench -perm -u+x | head -n 1)"
     [[ -n "$exe" ]] || { echo "quat.sh: quat_bench executable not found" >&2; exit 1; }
+    # --table repeats and interleaves by itself (--benchmark_repetitions=5,
+    # --benchmark_enable_random_interleaving=true), printing medians and their spread.
     "$exe" --table
 }
 

@@ -2,8 +2,10 @@
 // many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
 // objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
 // structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
-// 1.6x the compiled loop at -march=x86-64-v3), and float arrays beyond 16 MiB on x86 are written
-// with non-temporal stores (both layouts; plain stores elsewhere), the one use of intrinsics.
+// 1.6x the compiled loop at -march=x86-64-v3), and float arrays that with their input exceed the
+// last-level cache (read once at run time by cpuid, else 16 MiB of output) are
+// written on x86 with non-temporal stores (both layouts; plain stores elsewhere), the one use of
+// intrinsics (detail/streaming_store.hpp).
 //
 // Arrays are passed either as pointer + count or as any contiguous container or view with data()
 // and size() members (std::vector, std::array, std::span in C++20), or as C arrays.

@@ -1,8 +1,9 @@
 // The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
 // out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
 // builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
-// from a plain loop. No intrinsics header: <immintrin.h> alone doubled the compile time of a
-// translation unit including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
+// from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
+// non-temporal stores): <immintrin.h> alone doubled the compile time of a translation unit
+// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
 //
 // Why: x, y, z interleaved in memory must be separated (de-interleaved) before 8 points can share a
 // vector multiply, and joined again after. Compiled from a plain loop, g++ 12 does this with 12
@@ -21,6 +22,7 @@
 
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
+#include "streaming_store.hpp"
 
 namespace quat {
 #include "isa_namespace.inc"
@@ -38,6 +40,15 @@ using float8 = float __attribute__((vector_size(32)));
     return v;
 }
 inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
+// A plain store, or a non-temporal one (p aligned to 16 bytes) when Stream.
+template <bool Stream>
+inline void put4(float* p, float4 v) noexcept {
+    if constexpr (Stream) {
+        _mm_stream_ps(p, v);
+    } else {
+        store4(p, v);
+    }
+}
 
 // Blends of a and b lane by lane (mask bit i set: element i from b), as vblendps encodes them.
 [[nodiscard]] inline float8 blend_2_6(float8 a, float8 b) noexcept {
@@ -63,8 +74,12 @@ inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); 
 // Rotates (and translates when Translate) points [0, n - n % 8) of the float array `in`, three
 // floats a point, into `out`, and returns how many it did. out == in is safe: each group of 8
 // points is read whole before it is written. The sums are m00 x + m01 y + m02 z in that order, as
-// the scalar loop has them (contracted into FMAs alike where the target has them).
-template <bool Translate>
+// the scalar loop has them (contracted into FMAs alike where the target has them). With Stream the
+// stores are non-temporal (out aligned to 16 bytes): the 16-byte pieces of a group are written in
+// address order, so the write-combining buffers fill whole lines, and the memory writes overlap
+// the loads and arithmetic of the next groups, which a computed block streamed afterwards does not
+// (4M points on a Zen 4: 3.2-3.5 ms against 3.5-3.8 through a buffer; streaming copy 3.2-3.3).
+template <bool Translate, bool Stream = false>
 [[nodiscard]] inline std::size_t transform_interleaved(const rotation_matrix<float>& m,
                                                        const vec3<float>& t, const float* in,
                                                        float* out, std::size_t n) noexcept {
@@ -106,12 +121,12 @@ template <bool Translate>
         // Halves taken by the vextractf128 builtin (g++ and clang alike), not by a shuffle: g++
         // merges adjacent shuffled halves into 256-bit stores through three vperm2f128 (port 5),
         // which measured 424 ns against 359 ns at 1024 points.
-        store4(o, __builtin_ia32_vextractf128_ps256(ra, 0));
-        store4(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
-        store4(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
-        store4(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
-        store4(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
-        store4(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
+        put4<Stream>(o, __builtin_ia32_vextractf128_ps256(ra, 0));
+        put4<Stream>(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
+        put4<Stream>(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
+        put4<Stream>(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
+        put4<Stream>(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
+        put4<Stream>(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
     }
     return i;
 }
@@ -188,8 +203,10 @@ template <bool Translate>
 
 // Rotates (and translates when Translate) the leading points of `in` (three floats each) into
 // `out` with the kernels above where the build has them (AVX, g++ 12 or clang), and returns how
-// many it did, leaving fewer than 8 to the caller; 0 elsewhere.
-template <bool Translate>
+// many it did, leaving fewer than 8 to the caller; 0 elsewhere. With Stream (out aligned to 16
+// bytes) the stores are non-temporal, by the 8-point kernel in AVX-512 builds too: out of cache
+// the arithmetic is not the bound.
+template <bool Translate, bool Stream = false>
 [[nodiscard]] inline std::size_t transform_interleaved_floats(
     const rotation_matrix<float>& m, const vec3<float>& t, const float* in,
     // NOLINTNEXTLINE(readability-non-const-parameter): AVX builds write it
@@ -198,9 +215,9 @@ template <bool Translate>
 #if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
 #if defined(__AVX512F__)
-    done = transform_interleaved_16<Translate>(m, t, in, out, n);
+    if constexpr (!Stream) done = transform_interleaved_16<Translate>(m, t, in, out, n);
 #endif
-    done += transform_interleaved<Translate>(m, t, in + 3 * done, out + 3 * done, n - done);
+    done += transform_interleaved<Translate, Stream>(m, t, in + 3 * done, out + 3 * done, n - done);
 #endif
 #endif
     static_cast<void>(m), static_cast<void>(t), static_cast<void>(in), static_cast<void>(out),

@@ -1,12 +1,13 @@
 // The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
 // (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
 // arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
-// its shuffles out (interleaved_points_avx.hpp), and float arrays beyond 16 MiB on x86 are written
-// with non-temporal stores (streaming_store.hpp).
+// its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
+// last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
 #ifndef QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 #define QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include "../rotation_matrix.hpp"
@@ -66,21 +67,31 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
     }
 }
 
-// Arrays at least this large (16 MiB of output) are written with non-temporal stores: they do not
-// fit in cache anyway, and a normal store first reads the destination line (read-for-ownership),
-// which costs a third more memory traffic than a copy.
-inline constexpr std::size_t streaming_bytes = std::size_t(16) << 20;
-
-// Rotates block by block into a local buffer, then streams the buffer to memory. The points are
-// written as one float array (vec3<float> is three floats with no padding, as is static_asserted).
+// Writes the points with non-temporal stores. The first points (at most 15) are stored plainly
+// up to a 64-byte boundary of the output, so that no cache line is written partly by plain and
+// partly by non-temporal stores. AVX builds then stream straight from the shuffling kernel
+// (interleaved_points_avx.hpp); the rest (all of it in SSE builds) is computed block by block
+// into a local buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole
+// lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
+// a Zen 4 (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks
+// 3.5-3.8, streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
 template <bool Translate>
 void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
                          const vec3<float>* input, vec3<float>* output,
                          std::size_t count) noexcept {
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                   "vec3<float> must be three packed floats");
-    vec3<float> buffer[batch_block];
-    for (std::size_t start = 0; start < count; start += batch_block) {
+    static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
+    std::size_t start = 0;
+    while (start < 16 && start < count &&
+           reinterpret_cast<std::uintptr_t>(output + start) % 64 != 0)
+        ++start;
+    transform_block<Translate>(m, t, input, output, start);
+    if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
+        start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
+                                                               &output[start].x, count - start);
+    alignas(64) vec3<float> buffer[batch_block];
+    for (; start < count; start += batch_block) {
         const std::size_t n = count - start < batch_block ? count - start : batch_block;
         transform_block<Translate>(m, t, input + start, buffer, n);
         stream_floats(&output[start].x, &buffer[0].x, 3 * n);
@@ -126,14 +137,14 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
                       vec3<T>* output, std::size_t count) noexcept {
-    // Beyond 16 MiB the points go through a buffer and non-temporal stores, in every x86 build. The
-    // evidence differs by machine. Zen 5 (issue 6): streaming won only in AVX-512 builds (4M
-    // points 2.7-3.1 ms against 3.4-3.8 plain; memcpy 2.3-2.5) and lost with SSE2 and AVX2
-    // (3.4-4.1 against 2.2-3.1). The Intel Xeon of issue 16, where 4M points sit in a 480 MiB L3
-    // that memcpy's rep movsb fills without reading the destination: streaming won at every level
-    // (medians of 5: SSE2 5.7 ms against 6.6 plain, AVX2 4.7-4.9 against 5.2-6.0; memcpy 3.7).
+    // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
+    // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
+    // 32 MiB L3 (issue 27, g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms
+    // against 3.9-4.1 plain, streaming copy 3.2-3.8. Earlier machines, under the fixed 16 MiB
+    // threshold this rule replaces: the Xeon of issue 16 (streaming won at every level, SSE2 5.7
+    // ms against 6.6, AVX2 4.7-4.9 against 5.2-6.0), the Zen 5 of issue 6 (won only with AVX-512).
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_bytes) {
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
             transform_streaming<Translate>(m, t, input, output, count);
             return;
         }
@@ -148,10 +159,21 @@ template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
                       soa_points<T> output) noexcept {
     if constexpr (std::is_same_v<T, float>) {
-        if (input.count * 3 * sizeof(float) >= streaming_bytes) {
-            // Out of cache: move a block into local arrays, then stream them (as for AoS).
-            float rx[batch_block], ry[batch_block], rz[batch_block];
-            for (std::size_t start = 0; start < input.count; start += batch_block) {
+        if (has_streaming_stores &&
+            input.count * 3 * sizeof(float) >= streaming_threshold_bytes()) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
+            // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
+            // the same offset into a page), so that the blocks cover whole cache lines.
+            std::size_t head = 0;
+            while (head < 16 && head < input.count &&
+                   reinterpret_cast<std::uintptr_t>(output.x + head) % 64 != 0)
+                ++head;
+            transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y,
+                                       output.z, head);
+            alignas(64) float rx[batch_block];
+            alignas(64) float ry[batch_block];
+            alignas(64) float rz[batch_block];
+            for (std::size_t start = head; start < input.count; start += batch_block) {
                 const std::size_t n =
                     input.count - start < batch_block ? input.count - start : batch_block;
                 transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
