@@ -14,10 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <map>
 #include <string>
 
 #include <ceres/jet.h>
@@ -25,6 +22,7 @@
 #include <quat/se3.hpp>
 
 #include "support/catch.hpp"
+#include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 
 namespace {
@@ -39,59 +37,13 @@ using dq = dual_quaternion<T>;
 constexpr double pi = 3.14159265358979323846;
 constexpr double near_half_turn = pi - 1e-8;
 
-/// The reference Jacobian of g: R^In -> R^Out at 0 (long double arrays in and out).
-template <int Out, int In, class G>
-matrix<ld, Out, In> central_differences(G g, ld h) {
-    matrix<ld, Out, In> result{};
-    for (int i = 0; i < In; ++i) {
-        std::array<std::array<ld, 3>, Out> estimate{};
-        for (int k = 0; k < 3; ++k) {
-            const ld step = h / static_cast<ld>(1 << k);
-            std::array<ld, In> plus{}, minus{};
-            plus[static_cast<std::size_t>(i)] = step;
-            minus[static_cast<std::size_t>(i)] = -step;
-            const std::array<ld, Out> up = g(plus), down = g(minus);
-            for (std::size_t r = 0; r < Out; ++r)
-                estimate[r][static_cast<std::size_t>(k)] = (up[r] - down[r]) / (2 * step);
-        }
-        for (int r = 0; r < Out; ++r) {
-            const auto& e = estimate[static_cast<std::size_t>(r)];
-            const ld first = (4 * e[1] - e[0]) / 3, second = (4 * e[2] - e[1]) / 3;
-            result(r, i) = (16 * second - first) / 15;
-        }
-    }
-    return result;
-}
-
-template <class T, int R, int C>
-double relative_error(const matrix<T, R, C>& got, const matrix<ld, R, C>& reference) {
-    ld largest = 0, error = 0;
-    for (int r = 0; r < R; ++r)
-        for (int c = 0; c < C; ++c) {
-            const ld value = static_cast<ld>(got(r, c));
-            if (!std::isfinite(value)) return std::numeric_limits<double>::infinity();
-            largest = std::max(largest, std::abs(reference(r, c)));
-            error = std::max(error, std::abs(value - reference(r, c)));
-        }
-    return static_cast<double>(largest > 0 ? error / largest : error);
-}
-
-struct worst_errors {
-    std::map<std::string, double> table;
-    ~worst_errors() {
-        if (std::getenv("QUAT_LIE_REPORT") == nullptr) return;
-        for (const auto& [name, error] : table)
-            std::printf("se3 %-40s %.2e\n", name.c_str(), error);
-    }
-};
-worst_errors worst;
+quat::test::worst_errors worst("se3");
 
 void check(const std::string& name, double error, double tolerance = 1e-12) {
-    double& w = worst.table[name];
-    w = std::max(w, error);
-    INFO(name << ": error " << error);
-    CHECK(error <= tolerance);
+    worst.check(name, error, tolerance);
 }
+using quat::test::central_differences;
+using quat::test::relative_error;
 
 using arr6 = std::array<ld, 6>;
 arr6 arr(const twist<ld>& t) {

@@ -15,10 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <map>
 #include <string>
 #include <type_traits>
 
@@ -26,6 +23,7 @@
 #include <quat/so3.hpp>
 
 #include "support/catch.hpp"
+#include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 
 namespace {
@@ -39,64 +37,13 @@ constexpr double near_half_turn = pi - 1e-8;
 template <class T, int R, int C>
 using mat = matrix<T, R, C>;
 
-/// The reference Jacobian of g: R^In -> R^Out at 0 (g takes and returns long double arrays).
-template <int Out, int In, class G>
-mat<ld, Out, In> central_differences(G g, ld h) {
-    mat<ld, Out, In> result{};
-    for (int i = 0; i < In; ++i) {
-        std::array<std::array<ld, 3>, Out> estimate{};
-        for (int k = 0; k < 3; ++k) {
-            const ld step = h / static_cast<ld>(1 << k);
-            std::array<ld, In> plus{}, minus{};
-            plus[static_cast<std::size_t>(i)] = step;
-            minus[static_cast<std::size_t>(i)] = -step;
-            const std::array<ld, Out> up = g(plus), down = g(minus);
-            for (int r = 0; r < Out; ++r)
-                estimate[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] =
-                    (up[static_cast<std::size_t>(r)] - down[static_cast<std::size_t>(r)]) /
-                    (2 * step);
-        }
-        for (int r = 0; r < Out; ++r) {
-            const auto& e = estimate[static_cast<std::size_t>(r)];
-            const ld first = (4 * e[1] - e[0]) / 3, second = (4 * e[2] - e[1]) / 3;
-            result(r, i) = (16 * second - first) / 15;
-        }
-    }
-    return result;
-}
-
-/// max |got - reference| / max |reference| (absolute where the reference is zero); Inf for a NaN
-/// or infinite entry.
-template <class T, int R, int C>
-double relative_error(const mat<T, R, C>& got, const mat<ld, R, C>& reference) {
-    ld largest = 0, error = 0;
-    for (int r = 0; r < R; ++r)
-        for (int c = 0; c < C; ++c) {
-            const ld value = static_cast<ld>(got(r, c));
-            if (!std::isfinite(value)) return std::numeric_limits<double>::infinity();
-            largest = std::max(largest, std::abs(reference(r, c)));
-            error = std::max(error, std::abs(value - reference(r, c)));
-        }
-    return static_cast<double>(largest > 0 ? error / largest : error);
-}
-
-/// The worst error seen for each Jacobian, printed at exit under QUAT_LIE_REPORT.
-struct worst_errors {
-    std::map<std::string, double> table;
-    ~worst_errors() {
-        if (std::getenv("QUAT_LIE_REPORT") == nullptr) return;
-        for (const auto& [name, error] : table)
-            std::printf("so3 %-40s %.2e\n", name.c_str(), error);
-    }
-};
-worst_errors worst;
+quat::test::worst_errors worst("so3");
 
 void check(const std::string& name, double error, double tolerance = 1e-12) {
-    double& w = worst.table[name];
-    w = std::max(w, error);
-    INFO(name << ": error " << error);
-    CHECK(error <= tolerance);
+    worst.check(name, error, tolerance);
 }
+using quat::test::central_differences;
+using quat::test::relative_error;
 
 // Conversions between quat's vectors and the arrays of the differences.
 std::array<ld, 3> arr(const vec3<ld>& v) { return {v.x, v.y, v.z}; }

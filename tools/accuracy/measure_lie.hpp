@@ -277,15 +277,18 @@ real round_trip_error(const hv& got, const hv& w) {
     return e;
 }
 
+/// A row of quat's figures only (GLM and Eigen have no Lie-group Jacobians).
+template <class T>
+row lie_row(const std::string& op, const std::string& inputs, const char* unit, double target) {
+    return {op,     inputs,       lie_scalar_name<T>(), unit,
+            target, std::nullopt, std::nullopt,         std::nullopt};
+}
+
 template <class T>
 void add_so3_rows(std::vector<row>& rows, bool quick, std::uint64_t seed) {
     const int count = quick ? 500 : 20000;
     const char* jacobian_unit = "eps (max element error / largest element)";
-    const auto make = [&](const std::string& op, const std::string& inputs, const char* unit,
-                          double target) {
-        return row{op,     inputs,       lie_scalar_name<T>(), unit,
-                   target, std::nullopt, std::nullopt,         std::nullopt};
-    };
+    const auto make = lie_row<T>;
     for (const family& fam : families) {
         rng g{seed * 7919 + 70 + std::uint64_t(fam.kind)};
         const std::vector<v3<T>> ws = rotation_vectors_of<T>(g, fam.kind, count);
@@ -378,11 +381,7 @@ template <class T>
 void add_se3_rows(std::vector<row>& rows, bool quick, std::uint64_t seed) {
     const int count = quick ? 500 : 20000;
     const char* jacobian_unit = "eps (max element error / largest element)";
-    const auto make = [&](const std::string& op, const std::string& inputs, const char* unit,
-                          double target) {
-        return row{op,     inputs,       lie_scalar_name<T>(), unit,
-                   target, std::nullopt, std::nullopt,         std::nullopt};
-    };
+    const auto make = lie_row<T>;
     for (const family& fam : families) {
         rng g{seed * 7919 + 80 + std::uint64_t(fam.kind)};
         const std::vector<v3<T>> ws = rotation_vectors_of<T>(g, fam.kind, count);
