@@ -42,8 +42,8 @@ struct alignment_with_sensitivity : alignment<T> {
 
 /// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
 /// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
-/// reflection. targets and sources are equally long (QUAT_ASSERT) containers of vec3<T> with data()
-/// and size(), or C arrays; the vectors need not be unit, and longer ones count more, as in scipy.
+/// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
+/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
 /// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
 /// two first). unique is false when other rotations fit as well: when the sources, or the targets,
 /// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
@@ -55,14 +55,16 @@ struct alignment_with_sensitivity : alignment<T> {
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
                                                    const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources),
                 "quat::align_vectors: targets and sources differ in size");
+    if (!detail::same_size(targets, sources)) return detail::nan_wahba<T>(false).result;
     return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
                                   detail::size_of(sources), [](std::size_t) { return T(1); })
         .result;
 }
 
-/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors):
+/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors;
+/// other lengths as in align_vectors(targets, sources)):
 /// R minimizes sum weights[i] |targets[i] - R sources[i]|^2, and rssd is weighted alike. A zero
 /// weight drops its pair; weights may spread over many orders of magnitude (the rotation is
 /// polished by Newton steps where they leave Davenport's eigenvector coarse). One infinite weight
@@ -76,9 +78,9 @@ template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
                                                    const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources, weights),
                 "quat::align_vectors: targets, sources and weights differ in size");
+    if (!detail::same_size(targets, sources, weights)) return detail::nan_wahba<T>(false).result;
     const auto* w = detail::data_of(weights);
     const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
         detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
@@ -142,19 +144,21 @@ template <class Targets, class Sources, class Weights,
 /// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
 /// mean of the targets' error variances (weights inversely proportional to them), it is the
 /// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
-/// elements when a weight is infinite (scipy raises).
+/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
 template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
     const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
     QUAT_ASSERT(
-        detail::size_of(targets) == detail::size_of(sources) &&
-            detail::size_of(weights) == detail::size_of(sources),
+        detail::same_size(targets, sources, weights),
         "quat::align_vectors_with_sensitivity: targets, sources and weights differ in size");
     const auto* w = detail::data_of(weights);
-    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
-        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
-        [w](std::size_t i) { return static_cast<T>(w[i]); });
+    const detail::wahba_solution<T> solution =
+        detail::same_size(targets, sources, weights)
+            ? detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                     detail::size_of(sources),
+                                     [w](std::size_t i) { return static_cast<T>(w[i]); })
+            : detail::nan_wahba<T>(false);
     QUAT_ASSERT(!solution.negative, "quat::align_vectors_with_sensitivity: a weight is negative");
     return {solution.result, detail::wahba_sensitivity(solution, detail::size_of(sources))};
 }

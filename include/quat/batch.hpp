@@ -155,21 +155,22 @@ void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>>
 }
 
 /// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
-/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input).
+/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input)
+/// (QUAT_ASSERT); unchecked, the first min(size(input), size(output)) points, never past either.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
-    rotate(q, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    rotate(q, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
 }
-/// Container form of the array-of-structs rotation by m.
+/// Container form of the array-of-structs rotation by m, with the precondition of the one by q.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
-    rotate(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    rotate(m, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
 }
 
 /// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
@@ -212,7 +213,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const U* t, quaternion<T>* output,
 
 /// slerp at every t of a contiguous container (of T or another scalar type, which converts) into a
 /// contiguous output of quaternion<T>; a and b may be elements of output. Precondition:
-/// size(output) >= size(t).
+/// size(output) >= size(t) (QUAT_ASSERT); unchecked, the first min(size(t), size(output)).
 template <class T, class Parameters, class Output,
           class = std::enable_if_t<std::is_convertible_v<
               decltype(detail::data_of(std::declval<Output&>())), quaternion<T>*>>>
@@ -220,7 +221,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(t),
                 "quat::slerp: output shorter than the parameters");
     slerp(a, b, detail::data_of(t), static_cast<quaternion<T>*>(detail::data_of(output)),
-          detail::size_of(t));
+          detail::common_size(t, output));
 }
 
 }  // inline namespace isa_...

@@ -57,14 +57,15 @@ template <class T, class Weight>
 
 /// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
 /// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
-/// Precondition: equal sizes (QUAT_ASSERT).
+/// Precondition: equal sizes (QUAT_ASSERT); unchecked, other sizes blend as count 0: NaN.
 template <class Transforms, class Weights,
           class T = detail::element_scalar_t<dual_quaternion, Transforms>>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
                                                  const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),
+    QUAT_ASSERT(detail::same_size(transforms, weights),
                 "quat::blend: transforms and weights differ in size");
-    return blend(detail::data_of(transforms), detail::data_of(weights), detail::size_of(weights));
+    return blend(detail::data_of(transforms), detail::data_of(weights),
+                 detail::same_size(transforms, weights) ? detail::size_of(weights) : 0);
 }
 }  // inline namespace isa_...
 

@@ -298,7 +298,8 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
 }
 
 /// Container form of rotate_each: contiguous rotations (quaternion<T>) and points, any contiguous
-/// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output).
+/// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output) (QUAT_ASSERT);
+/// unchecked, the common length of the three, never past any of them.
 template <class Rotations, class Points, class Output,
           class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Points, Output>>
@@ -308,7 +309,7 @@ void rotate_each(const Rotations& rotations, const Points& points, Output&& outp
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(points),
                 "quat::rotate_each: output shorter than the input");
     rotate_each(detail::data_of(rotations), detail::data_of(points), detail::data_of(output),
-                detail::size_of(points));
+                detail::common_size(rotations, points, output));
 }
 
 /// output[i] = a[i] * b[i] for i < count: as rotations, b[i] applies first (Hamilton product).
@@ -325,7 +326,8 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
     detail::compose_each_loop(a, b, output, count);
 }
 
-/// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output).
+/// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output) (QUAT_ASSERT);
+/// unchecked, the common length of the three, never past any of them.
 template <class A, class B, class Output, class T = detail::element_scalar_t<quaternion, A>,
           class = detail::if_arrays_of<quaternion<T>, quaternion<T>, B, Output>>
 void compose_each(const A& a, const B& b, Output&& output) noexcept {
@@ -334,7 +336,7 @@ void compose_each(const A& a, const B& b, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(a),
                 "quat::compose_each: output shorter than the input");
     compose_each(detail::data_of(a), detail::data_of(b), detail::data_of(output),
-                 detail::size_of(a));
+                 detail::common_size(a, b, output));
 }
 
 /// output[i] = to_matrix(q[i]) for i < count, for unit q[i] (unchecked: a non-unit q gives a matrix
@@ -351,13 +353,14 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
     }
 }
 
-/// Container form of to_matrix_each. Precondition: size(output) >= size(q).
+/// Container form of to_matrix_each. Precondition: size(output) >= size(q) (QUAT_ASSERT);
+/// unchecked, the first min(size(q), size(output)).
 template <class Rotations, class Output, class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<quaternion<T>, rotation_matrix<T>, Rotations, Output>>
 void to_matrix_each(const Rotations& q, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(q),
                 "quat::to_matrix_each: output shorter than the input");
-    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::size_of(q));
+    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::common_size(q, output));
 }
 
 /// output[i] = to_quaternion(m[i]) for i < count (w >= 0). Precondition: rotation matrices, as for
@@ -371,14 +374,15 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
     for (std::size_t i = 0; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 
-/// Container form of to_quaternion_each. Precondition: size(output) >= size(m).
+/// Container form of to_quaternion_each. Precondition: size(output) >= size(m) (QUAT_ASSERT);
+/// unchecked, the first min(size(m), size(output)).
 template <class Matrices, class Output,
           class T = detail::element_scalar_t<rotation_matrix, Matrices>,
           class = detail::if_arrays_of<rotation_matrix<T>, quaternion<T>, Matrices, Output>>
 void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(m),
                 "quat::to_quaternion_each: output shorter than the input");
-    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::size_of(m));
+    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::common_size(m, output));
 }
 
 }  // inline namespace isa_...

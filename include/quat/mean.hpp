@@ -132,13 +132,14 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 /// The weighted chordal L2 mean: M minimizing the sum of weights[i] |M - R_i|^2. weights is a
 /// container of scalars convertible to T (any finite size, subnormal to max(): only their ratios
 /// count), as long as rotations (QUAT_ASSERT); a zero weight drops that rotation. Precondition:
-/// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, or a weight is
-/// negative, NaN or infinite.
+/// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, a weight is negative,
+/// NaN or infinite, or the two containers differ in size.
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations,
                                            const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
+    QUAT_ASSERT(detail::same_size(rotations, weights),
                 "quat::mean: weights and rotations differ in size");
+    if (!detail::same_size(rotations, weights)) return detail::mean_of(detail::mean_solution<T>{});
     const auto* w = detail::data_of(weights);
     return detail::mean_of(
         detail::solve_mean<false>(detail::data_of(rotations), detail::size_of(rotations),
@@ -163,7 +164,7 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations,
                                                               const Weights& weights) noexcept {
-    if (detail::size_of(weights) != detail::size_of(rotations)) return std::nullopt;
+    if (!detail::same_size(rotations, weights)) return std::nullopt;
     const auto* w = detail::data_of(weights);
     return detail::unique_mean_of(
         detail::solve_mean<true>(detail::data_of(rotations), detail::size_of(rotations),

@@ -101,21 +101,25 @@ void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_ident
 }
 
 /// Container form of the array-of-structs transform by unit dq: any contiguous input and output
-/// of vec3<T>. Precondition: size(output) >= size(input).
+/// of vec3<T>. Precondition: size(output) >= size(input) (QUAT_ASSERT); unchecked, the first
+/// min(size(input), size(output)) points, never past either container.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
-    transform(dq, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    transform(dq, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
 }
-/// Container form of the array-of-structs transform by the 4x4 matrix m.
+/// Container form of the array-of-structs transform by the 4x4 matrix m, with the precondition of
+/// the one by dq.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
-    transform(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    transform(m, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
 }
 
 /// The product dq[0] dq[1] ... dq[count - 1] (dq[count - 1] applies first); identity when

@@ -31,6 +31,20 @@ template <class T, std::size_t N>
     return N;
 }
 
+// Paired containers (docs/conventions.md, "Containers that must match"): whether every container
+// holds as many elements as the first, which the fits and keyframe paths require, and the length
+// all of them hold, the most a batch's container form may read or write.
+template <class First, class... Rest>
+[[nodiscard]] constexpr bool same_size(const First& first, const Rest&... rest) noexcept {
+    return ((detail::size_of(rest) == detail::size_of(first)) && ...);
+}
+template <class First, class... Rest>
+[[nodiscard]] constexpr std::size_t common_size(const First& first, const Rest&... rest) noexcept {
+    std::size_t common = detail::size_of(first);
+    ((common = detail::size_of(rest) < common ? detail::size_of(rest) : common), ...);
+    return common;
+}
+
 // The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
 // way quat's container forms name the scalar type of their elements. Not a type for a container of
 // anything else, so a container form whose default template argument uses it drops out of overload
