@@ -8,8 +8,11 @@
 #include <vector>
 
 #include <quat/align_points.hpp>
+#include <quat/geodesic_mean.hpp>
 #include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
+#include <quat/se3.hpp>
+#include <quat/so3.hpp>
 
 #include "support/catch.hpp"
 
@@ -51,6 +54,21 @@ bool bad(const quat::screw<T>& s) {
 template <class T, sequence S, quat::frame F>
 bool bad(const quat::euler<T, S, F>& e) {
     return bad(e[0]) || bad(e[1]) || bad(e[2]);
+}
+template <class T>
+bool bad(const dual_quaternion<T>& dq) {
+    return bad(dq.real) || bad(dq.dual);
+}
+template <class T, int R, int C>
+bool bad(const quat::matrix<T, R, C>& m) {
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j)
+            if (bad(m(i, j))) return true;
+    return false;
+}
+template <class T>
+bool bad(const quat::se3::twist<T>& t) {
+    return bad(t.linear) || bad(t.angular);
 }
 
 // Inputs with one bad component in a position that is not multiplied by zero on the way.
@@ -405,5 +423,57 @@ TEMPLATE_TEST_CASE("the first-use spellings give a visibly bad result for NaN an
         CHECK(bad(quat::to_homogeneous(in.m, p) * p));
         CHECK(bad(quat::to_homogeneous(in.m) * p));
         CHECK(bad(quat::homogeneous_matrix<T>::from_translation(in.v) * p));
+    }
+}
+
+TEMPLATE_TEST_CASE("the Lie groups and the geodesic mean give a visibly bad result for NaN and "
+                   "infinite input",
+                   "[nan][lie]", float, double) {
+    using T = TestType;
+    for (const T value : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                          -std::numeric_limits<T>::infinity()}) {
+        INFO("bad component: " << value);
+        const inputs<T> in{value};
+        const quaternion<T> q{in.unit.w, value, in.unit.y, in.unit.z};
+        const vec3<T>& w = in.v;
+        const dual_quaternion<T> good = quat::to_dual_quaternion(in.unit, in.good_vector);
+        const dual_quaternion<T> motion = quat::to_dual_quaternion(in.unit, w);
+        const quat::se3::twist<T> t{w, in.good_vector};
+        quat::matrix<T, 3, 3> j3{}, k3{};
+        quat::matrix<T, 6, 6> j6{}, k6{};
+
+        // so3.hpp: the value, and each Jacobian that depends on the bad input
+        CHECK(bad(quat::so3::exp(w, &j3)));
+        CHECK(bad(j3));
+        CHECK(bad(quat::so3::log(q, &j3)));
+        CHECK(bad(j3));
+        CHECK(bad(quat::so3::right_jacobian(w)));
+        CHECK(bad(quat::so3::right_jacobian_inverse(w)));
+        CHECK(bad(quat::so3::plus(in.unit, w, &j3, &k3)));
+        CHECK(bad(quat::so3::minus(q, in.unit, &j3, &k3)));
+        CHECK(bad(j3));
+        CHECK(bad(quat::so3::act(q, in.good_vector, &j3, &k3)));
+        CHECK(bad(quat::so3::compose(q, in.unit)));
+
+        // se3.hpp
+        CHECK(bad(quat::se3::exp(t, &j6)));
+        CHECK(bad(j6));
+        CHECK(bad(quat::se3::log(motion, &j6)));
+        CHECK(bad(j6));
+        CHECK(bad(quat::se3::right_jacobian(t)));
+        CHECK(bad(quat::se3::plus(good, t, &j6, &k6)));
+        CHECK(bad(quat::se3::minus(motion, good, &j6, &k6)));
+        CHECK(bad(quat::se3::act(good, w)));
+        CHECK(bad(quat::se3::compose(motion, good)));
+
+        // geodesic_mean.hpp
+        std::vector<quaternion<T>> rotations(5, in.unit);
+        rotations[3] = q;
+        CHECK(bad(quat::geodesic_mean(rotations)));
+        CHECK_FALSE(quat::try_geodesic_mean(rotations).has_value());
+        std::vector<dual_quaternion<T>> motions(5, good);
+        motions[2] = motion;
+        CHECK(bad(quat::geodesic_mean(motions)));
+        CHECK_FALSE(quat::try_geodesic_mean(motions).has_value());
     }
 }

@@ -214,6 +214,13 @@ template <bool checked, class T, class Weight>
             return moved.real.w < T(0) ? -moved : moved;
         });
     outcome.converged = outcome.converged && chordal.valid;
+    // A NaN or infinite translation leaves the rotations' mean finite; a finite rotation beside a
+    // NaN translation would pass for half a result, so the whole mean is NaN, as documented.
+    if (!is_finite(outcome.mean.real) || !is_finite(outcome.mean.dual)) {
+        const T nan = quiet_nan<T>();
+        outcome.mean = {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        outcome.converged = false;
+    }
     T spread = T(0);
     for (std::size_t i = 0; i < count; ++i)
         if (weight(i) > T(0))
