@@ -1,6 +1,6 @@
 // The body of each quat_isa_mix unit, with internal linkage: every unit has its own copy, so the
 // only functions the units could share are quat's (and the few of the standard library's that
-// quat's code itself calls).
+// quat's code and the printing below call: std::ostringstream and std::string).
 #ifndef QUAT_TESTS_ISA_MIX_COMPUTE_HPP
 #define QUAT_TESTS_ISA_MIX_COMPUTE_HPP
 
@@ -94,6 +94,8 @@ void isa_mix_compute(isa_mix_results& r) noexcept {
     // The value types' own members (matrix's zero, identity and element access): not keyed, so at
     // -O0 each call reaches whichever copy the linker kept unless the call is inlined. Halves and
     // small integers: every product is exact, so the units agree to the last bit, FMA or not.
+    // Assigned, not initialized: g++ evaluates a constant initializer at compile time, calling
+    // nothing.
     quat::matrix<double, 6, 6> jacobian;
     jacobian = quat::matrix<double, 6, 6>::identity();
     for (int i = 0; i < 6; ++i) jacobian((i + 1) % 6, i) = 0.5 * double(i);
