@@ -239,105 +239,105 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
 #if defined(__cpp_lib_format) && __has_include(<format>)
 
 // std::format support: the format above, each component formatted by std::formatter<T, CharT> with
-// the spec given ("{}" is the shortest text that reads back exactly).
+// the spec given ("{}" is the shortest text that reads back exactly). Each specialization derives
+// from quat::value_formatter or quat::name_formatter, which are not keyed by instruction set:
+// detail/print_layout.hpp says why.
 
 namespace std {
 
 /// Formats vec3{x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::vec3<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
 
 /// Formats quaternion{w, x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::quaternion<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
 
 /// Formats rotation_matrix{{m00, m01, m02}, ...} by rows; the spec applies to each element.
 template <class T, class CharT>
 struct formatter<::quat::rotation_matrix<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
 
 /// Formats matrix{{m00, m01, ...}, ...} by rows; the spec applies to each element.
 template <class T, int R, int C, class CharT>
 struct formatter<::quat::matrix<T, R, C>, CharT>
-    : ::quat::detail::value_formatter<::quat::matrix<T, R, C>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::matrix<T, R, C>, std::formatter<T, CharT>> {};
 
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class CharT>
 struct formatter<::quat::axis_angle<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
 
 /// Formats euler<S, F>{e[0], e[1], e[2]}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
 struct formatter<::quat::euler<T, S, F>, CharT>
-    : ::quat::detail::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
 
 /// Formats euler_extraction{euler<S, F>{...}, gimbal_lock}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
 struct formatter<::quat::euler_extraction<T, S, F>, CharT>
-    : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {
-};
+    : ::quat::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {};
 
 /// Formats alignment{quaternion{...}, rssd, unique}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
-                                      std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::alignment_with_sensitivity<T>, std::formatter<T, CharT>> {};
 
 /// Formats point_alignment{dual_quaternion{...}, rms, unique}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::point_alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats similarity_alignment{point_alignment{...}, scale}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::similarity_alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::swing_twist_parts<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
 
 /// Formats dual_quaternion{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::dual_quaternion<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::dual_quaternion<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::dual_quaternion<T>, std::formatter<T, CharT>> {};
 
 /// Formats homogeneous_matrix{{m00, m01, m02, m03}, ...} by rows; the spec applies to each element.
 template <class T, class CharT>
 struct formatter<::quat::homogeneous_matrix<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::homogeneous_matrix<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::homogeneous_matrix<T>, std::formatter<T, CharT>> {};
 
 /// Formats screw{vec3{...}, vec3{...}, angle, displacement}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::screw<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
 struct formatter<::quat::sequence, CharT>
-    : ::quat::detail::name_formatter<::quat::sequence,
-                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+    : ::quat::name_formatter<::quat::sequence,
+                             std::formatter<std::basic_string_view<CharT>, CharT>> {};
 
 /// Formats the frame's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
 struct formatter<::quat::frame, CharT>
-    : ::quat::detail::name_formatter<::quat::frame,
-                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+    : ::quat::name_formatter<::quat::frame, std::formatter<std::basic_string_view<CharT>, CharT>> {
+};
 
 }  // namespace std
 

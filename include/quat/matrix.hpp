@@ -23,25 +23,26 @@ struct matrix {
     T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
 
     /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
         return elements[row][col];
     }
     /// Element at (row, col), read-only.
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
+                                                                       int col) const noexcept {
         QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
         return elements[row][col];
     }
 
     /// The matrix of zeros.
-    [[nodiscard]] static constexpr matrix zero() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix zero() noexcept {
         matrix m{};
         for (int i = 0; i < Rows; ++i)
             for (int j = 0; j < Cols; ++j) m.elements[i][j] = T(0);
         return m;
     }
     /// The identity (ones on the diagonal, zeros elsewhere; square or not).
-    [[nodiscard]] static constexpr matrix identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix identity() noexcept {
         matrix m = zero();
         for (int i = 0; i < (Rows < Cols ? Rows : Cols); ++i) m.elements[i][i] = T(1);
         return m;

@@ -21,6 +21,8 @@ struct isa_mix_results {
     double slerped_batch[samples][4];  // batch slerp, float
     double between[4];                 // rotation_between, double (difference_of_products)
     double looking[4];                 // look_rotation, double
+    double propagated[6][6];           // J C J^T of matrix<double, 6, 6> (zero, identity, (i, j))
+    char printed[1024];                // operator<< (io.hpp) of a quaternion and that matrix
 };
 
 /// The same computation in a unit built with the compiler's default flags (-march=x86-64), ...

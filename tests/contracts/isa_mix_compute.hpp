@@ -1,11 +1,15 @@
 // The body of each quat_isa_mix unit, with internal linkage: every unit has its own copy, so the
 // only functions the units could share are quat's (and the few of the standard library's that
-// quat's code itself calls).
+// quat's code and the printing below call: std::ostringstream and std::string).
 #ifndef QUAT_TESTS_ISA_MIX_COMPUTE_HPP
 #define QUAT_TESTS_ISA_MIX_COMPUTE_HPP
 
 #include <cstddef>
+#include <cstring>
+#include <sstream>
+#include <string>
 
+#include <quat/io.hpp>
 #include <quat/quat.hpp>
 
 #include "isa_mix.hpp"
@@ -86,6 +90,28 @@ void isa_mix_compute(isa_mix_results& r) noexcept {
     const quat::quatd l =
         quat::look_rotation(quat::vec3<double>{1, 0, 1e-7}, quat::vec3<double>{1, 1e-9, 0});
     r.looking[0] = l.w, r.looking[1] = l.x, r.looking[2] = l.y, r.looking[3] = l.z;
+
+    // The value types' own members (matrix's zero, identity and element access): not keyed, so at
+    // -O0 each call reaches whichever copy the linker kept unless the call is inlined. Halves and
+    // small integers: every product is exact, so the units agree to the last bit, FMA or not.
+    // Assigned, not initialized: g++ evaluates a constant initializer at compile time, calling
+    // nothing.
+    quat::matrix<double, 6, 6> jacobian;
+    jacobian = quat::matrix<double, 6, 6>::identity();
+    for (int i = 0; i < 6; ++i) jacobian((i + 1) % 6, i) = 0.5 * double(i);
+    quat::matrix<double, 6, 6> covariance;
+    covariance = quat::matrix<double, 6, 6>::zero();
+    for (int i = 0; i < 6; ++i) covariance(i, i) = double(i + 1);
+    const quat::matrix<double, 6, 6> propagated = jacobian * covariance * transpose(jacobian);
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) r.propagated[i][j] = propagated(i, j);
+
+    std::ostringstream text;
+    text << quat::quatd{0.5, -0.5, 0.5, 0.5} << ' ' << propagated;
+    const std::string printed = text.str();
+    const std::size_t length = printed.size() < sizeof r.printed ? printed.size() : 0;
+    std::memcpy(r.printed, printed.data(), length);
+    r.printed[length] = '\0';
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 // This unit includes no quat header.
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "isa_mix.hpp"
 
@@ -46,6 +47,12 @@ bool agrees_with_baseline(const char* unit) {
     ok = agree(&a.slerped_batch[0][0], &b.slerped_batch[0][0], 4 * n, "batch slerp", unit) && ok;
     ok = agree(a.between, b.between, 4, "rotation_between", unit) && ok;
     ok = agree(a.looking, b.looking, 4, "look_rotation", unit) && ok;
+    ok = agree(&a.propagated[0][0], &b.propagated[0][0], 36, "matrix product", unit) && ok;
+    if (std::strcmp(a.printed, b.printed) != 0) {
+        std::printf("FAIL: the %s unit printed\n%s\nthe baseline\n%s\n", unit, b.printed,
+                    a.printed);
+        ok = false;
+    }
     return ok;
 }
 
@@ -70,6 +77,18 @@ bool baseline_is_right() {
     const double* end = baseline.slerped_batch[isa_mix_results::samples - 1];
     if (!(std::fabs(std::fabs(end[1]) - 1) < 1e-6)) {
         std::printf("FAIL: batch slerp does not end at b\n");
+        return false;
+    }
+    // J C J^T with J = I + sum 0.5 i e_{i+1 mod 6} e_i^T and C = diag(1, ..., 6): (0, 0) is
+    // 1 + 2.5^2 * 6 and (2, 2) is 3 + 0.5^2 * 2.
+    if (!(baseline.propagated[0][0] == 38.5 && baseline.propagated[2][2] == 3.5)) {
+        std::printf("FAIL: J C J^T gave %g and %g on the diagonal\n", baseline.propagated[0][0],
+                    baseline.propagated[2][2]);
+        return false;
+    }
+    const char* printed_start = "quaternion{0.5, -0.5, 0.5, 0.5} matrix{{38.5, ";
+    if (std::strncmp(baseline.printed, printed_start, std::strlen(printed_start)) != 0) {
+        std::printf("FAIL: printed %s\n", baseline.printed);
         return false;
     }
     return true;

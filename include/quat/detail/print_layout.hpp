@@ -1,8 +1,9 @@
 // The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
 // (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
-// for the fixed text and p.value(component) for each scalar; format_printer, value_formatter and
-// name_formatter adapt the layout to std::format and fmt, whose formatters derive from them. No
-// <ostream> and no <format> here: those are the printers' own.
+// for the fixed text and p.value(component) for each scalar; format_printer adapts the layout to
+// std::format and fmt, whose formatters derive from value_formatter and name_formatter (the end of
+// this file says why those two are not keyed). No <ostream> and no <format> here: those are the
+// printers' own.
 #ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 #define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 
@@ -241,48 +242,83 @@ struct format_printer {
     }
 };
 
-// The formatter of a quat value type for std::format and fmt: ComponentFormatter, the scalar's own
-// formatter, parses the spec once and formats every component with it.
-template <class Value, class ComponentFormatter>
-struct value_formatter {
-    ComponentFormatter component_formatter;
+// The work of value_formatter::format (below): the layout of value, each component through
+// component_formatter, which parsed the spec.
+template <class ComponentFormatter, class Value, class Context>
+auto format_value(const ComponentFormatter& component_formatter, const Value& value,
+                  Context& context) {
+    format_printer<ComponentFormatter, Context> printer{component_formatter, context};
+    write_layout(printer, value);
+    return context.out();
+}
 
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return component_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(const Value& value, FormatContext& context) const {
-        format_printer<ComponentFormatter, FormatContext> printer{component_formatter, context};
-        write_layout(printer, value);
-        return context.out();
-    }
-};
-
-// The formatter of sequence and frame: their names through StringFormatter, the formatter of
-// std::basic_string_view<CharT>, so string specs such as width and fill apply.
-template <class Enum, class StringFormatter>
-struct name_formatter {
-    StringFormatter string_formatter;
-
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return string_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(Enum value, FormatContext& context) const {
-        using CharT = typename FormatContext::char_type;
-        constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
-        const std::string_view ascii = spelling(value);
-        const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
-        CharT name[longest]{};
-        for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
-        return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
-    }
-};
+// The work of name_formatter::format (below): the name of a sequence or frame through
+// string_formatter, the formatter of std::basic_string_view<CharT>, so string specs such as width
+// and fill apply.
+template <class StringFormatter, class Enum, class Context>
+auto format_name(const StringFormatter& string_formatter, Enum value, Context& context) {
+    using CharT = typename Context::char_type;
+    constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
+    const std::string_view ascii = spelling(value);
+    const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
+    CharT name[longest]{};
+    for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
+    return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
+}
 
 }  // namespace detail
 }  // inline namespace isa_...
+
+// The bases of the std::formatter and fmt::formatter specializations for quat's types (io.hpp,
+// interop/fmt.hpp). Those specializations cannot be keyed: std::formatter<vec3<double>, char> is
+// named by the standard's template and an unkeyed value type, so it is one class in the whole
+// program whichever -m flags a unit is built with. Derived from a keyed class, it would have a
+// different base in each instruction set, one definition broken by construction. So the bases live
+// outside the key too and, like the value types' own members, their member functions are always
+// inlined: no copy of them is emitted for the linker to share between units, and what each unit
+// inlines only calls its own key's detail::format_value or detail::format_name. What the key cannot
+// cover, as for std::vector<vec3<float>>: the functions std::format and fmt instantiate for a quat
+// type (fmt's format_custom_arg, into which these calls are inlined) are theirs, unkeyed, and the
+// linker keeps one copy of each for the whole program.
+
+/// The formatter of a quat value type for std::format and fmt, the base of their specializations:
+/// ComponentFormatter, the scalar's own formatter, parses the spec once and formats every
+/// component with it. Users need not name it.
+template <class Value, class ComponentFormatter>
+struct value_formatter {
+    ComponentFormatter component_formatter;  ///< The scalar's formatter, holding the parsed spec.
+
+    /// Parses the spec as the scalar's formatter does ("{:.3f}", "{:e}", "{:>8}").
+    template <class ParseContext>
+    [[gnu::always_inline]] constexpr auto parse(ParseContext& context) {
+        return component_formatter.parse(context);
+    }
+    /// Writes value's layout (io.hpp), each component with the parsed spec.
+    template <class FormatContext>
+    [[gnu::always_inline]] auto format(const Value& value, FormatContext& context) const {
+        return detail::format_value(component_formatter, value, context);
+    }
+};
+
+/// The formatter of sequence and frame for std::format and fmt, the base of their
+/// specializations: the name through StringFormatter, the formatter of std::basic_string_view of
+/// the context's characters. Users need not name it.
+template <class Enum, class StringFormatter>
+struct name_formatter {
+    StringFormatter string_formatter;  ///< The string's formatter, holding the parsed spec.
+
+    /// Parses the spec as a string's (width, fill, alignment).
+    template <class ParseContext>
+    [[gnu::always_inline]] constexpr auto parse(ParseContext& context) {
+        return string_formatter.parse(context);
+    }
+    /// Writes the name, e.g. zyx or intrinsic, with the parsed spec.
+    template <class FormatContext>
+    [[gnu::always_inline]] auto format(Enum value, FormatContext& context) const {
+        return detail::format_name(string_formatter, value, context);
+    }
+};
+
 }  // namespace quat
 
 #endif  // QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
