@@ -7,7 +7,12 @@
 #include <random>
 #include <vector>
 
+#include <quat/align_points.hpp>
+#include <quat/geodesic_mean.hpp>
+#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
+#include <quat/se3.hpp>
+#include <quat/so3.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
@@ -161,5 +166,66 @@ TEST_CASE("keyframe paths allocate only when a rotation_spline is built", "[allo
     spline.evaluate(ts, out);
     sink += out[100].w;
     CHECK(allocations.load() == built);
+    CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("the estimation families allocate nothing: Lie groups, means, registration, hand-eye",
+          "[allocation]") {
+    quat::test::random_rotations random;
+    const std::size_t n = 600;  // beyond the registration's blocks of 256 pairs
+    std::vector<quat::vec3<double>> sources(n), targets(n);
+    std::vector<quat::quatd> rotations(n);
+    std::vector<quat::dual_quaterniond> motions(n), hand(8), eye(8);
+    std::vector<double> weights(n, 1.5);
+    const quat::dual_quaterniond mount =
+        quat::to_dual_quaternion(random.unit_quaternion<double>(), quat::vec3<double>{0.1, 0.2, 0.3});
+    for (std::size_t i = 0; i < n; ++i) {
+        sources[i] = quat::vec3<double>{double(i % 7), double(i % 11) - 5.0, double(i % 5) * 0.5};
+        targets[i] = quat::transform(mount, sources[i]);
+        rotations[i] = quat::slerp(quat::quatd::identity(), random.unit_quaternion<double>(), 0.2);
+        motions[i] = quat::to_dual_quaternion(rotations[i], sources[i]);
+    }
+    for (std::size_t i = 0; i < hand.size(); ++i) {
+        hand[i] = quat::to_dual_quaternion(random.unit_quaternion<double>(), sources[i]);
+        eye[i] = quat::inverse(mount) * hand[i] * mount;
+    }
+    const quat::quatd a = rotations[1], b = rotations[2];
+    const quat::dual_quaterniond x = motions[3], y = motions[4];
+    const quat::vec3<double> w{0.3, -0.2, 0.5};
+    const quat::se3::twist<double> t{{0.1, 0.2, -0.3}, w};
+
+    const long before = allocations.load();
+    double sink = 0;
+    quat::matrix<double, 3, 3> j3{}, k3{};
+    quat::matrix<double, 6, 6> j6{}, k6{};
+    quat::matrix<double, 3, 6> j36{};
+    sink += quat::so3::exp(w, &j3).w + quat::so3::log(a, &j3).x + j3(1, 2);
+    sink += quat::so3::plus(a, w, &j3, &k3).y + quat::so3::minus(b, a, &j3, &k3).z;
+    sink += quat::so3::plus_left(w, a, &j3, &k3).w + quat::so3::minus_left(b, a, &j3, &k3).x;
+    sink += quat::so3::compose(a, b, &j3, &k3).w + quat::so3::inverse(a, &j3).x;
+    sink += quat::so3::act(a, w, &j3, &k3).y + quat::so3::between(a, b, &j3, &k3).z;
+    sink += quat::so3::right_jacobian_inverse(w)(0, 0) + quat::so3::left_jacobian(w)(1, 1);
+    sink += quat::so3::adjoint(a)(2, 2) + quat::so3::vee(quat::so3::hat(w)).x;
+    sink += quat::se3::exp(t, &j6).real.w + quat::se3::log(x, &j6).linear.x + j6(5, 5);
+    sink += quat::se3::log(quat::to_homogeneous(x), &j6).angular.y;
+    sink += quat::se3::plus(x, t, &j6, &k6).dual.x + quat::se3::minus(y, x, &j6, &k6).angular.z;
+    sink += quat::se3::plus_left(t, x, &j6, &k6).real.x;
+    sink += quat::se3::minus_left(y, x, &j6, &k6).linear.y;
+    sink += quat::se3::compose(x, y, &j6, &k6).real.y + quat::se3::inverse(x, &j6).dual.z;
+    sink += quat::se3::act(x, w, &j36, &j3).z + quat::se3::between(x, y, &j6, &k6).real.z;
+    sink += quat::se3::adjoint(x)(3, 3) + quat::se3::right_jacobian_inverse(t)(4, 4);
+    sink += quat::geodesic_mean(rotations).w + quat::geodesic_mean(rotations, weights).x;
+    sink += quat::try_geodesic_mean(rotations)->y + quat::geodesic_mean(motions).dual.x;
+    sink += quat::try_geodesic_mean(motions, weights)->real.w;
+    sink += quat::align_points(targets, sources).rms + quat::align_points(targets, sources, weights).rms;
+    sink += quat::align_points_with_scale(targets, sources).scale;
+    sink += quat::try_align_points(targets, sources)->motion.real.w;
+    sink += quat::try_align_points_with_scale(targets, sources, weights)->scale;
+    sink += quat::hand_eye(hand, eye).mount.real.w;
+    sink += quat::hand_eye(hand, eye, quat::hand_eye_method::rotation_first).rotation_rms;
+    sink += quat::try_hand_eye(hand, eye)->translation_rms;
+    const long after = allocations.load();
+
+    CHECK(after == before);
     CHECK(std::isfinite(sink));
 }
