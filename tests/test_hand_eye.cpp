@@ -99,8 +99,8 @@ motion_pairs<T> one_axis_motions(quat::test::random_rotations& random,
 
 template <class T>
 bool all_finite(const quat::hand_eye_calibration<T>& x) {
-    const T parts[] = {x.mount.real.w, x.mount.real.x, x.mount.real.y, x.mount.real.z,
-                       x.mount.dual.w, x.mount.dual.x, x.mount.dual.y, x.mount.dual.z,
+    const T parts[] = {x.mount.real.w, x.mount.real.x,    x.mount.real.y, x.mount.real.z,
+                       x.mount.dual.w, x.mount.dual.x,    x.mount.dual.y, x.mount.dual.z,
                        x.rotation_rms, x.translation_rms, x.ambiguity};
     for (const T part : parts)
         if (!std::isfinite(part)) return false;
@@ -285,8 +285,8 @@ TEMPLATE_TEST_CASE("a hand turning about one axis never makes the mount unique",
     CHECK(least_ambiguity >= 0.25);
 }
 
-TEMPLATE_TEST_CASE("a hand turning about one axis: no slide along it, the rest exact",
-                   "[hand_eye]", float, double) {
+TEMPLATE_TEST_CASE("a hand turning about one axis: no slide along it, the rest exact", "[hand_eye]",
+                   float, double) {
     // Exact motions about one axis with at least one turn of 0.1 rad or more: the translations
     // fix X's rotation about the axis, and all of its translation but the slide along it, which
     // comes out as the least: zero.
@@ -303,7 +303,8 @@ TEMPLATE_TEST_CASE("a hand turning about one axis: no slide along it, the rest e
         const motion_pairs<T> m =
             one_axis_motions(random, mount, axis, count, hand_turns::about_one_axis, 0.0);
         bool turns = false;
-        for (const dual_quaternion<T>& a : m.a) turns = turns || std::abs(a.real.w) < std::cos(0.05);
+        for (const dual_quaternion<T>& a : m.a)
+            turns = turns || std::abs(a.real.w) < std::cos(0.05);
         if (!turns) continue;
         ++sets;
         const quat::hand_eye_calibration<T> x = quat::hand_eye(m.a, m.b, method);
@@ -349,8 +350,7 @@ TEMPLATE_TEST_CASE("motions about random axes stay unique, ambiguity growing wit
         // 4 sqrt(epsilon) (measured 1.1e-7 in double, 2.5e-3 in float); noisy ones near the noise
         // (each sensor pose off by `noise` rad and `noise` in translation, turns of 0.1 to 2 rad
         // about random axes: measured 0.69 and 0.68 times it in double), or at the floor.
-        if (noise == 0)
-            CHECK(ambiguities[250] <= 64 * std::sqrt(double(eps<T>)));
+        if (noise == 0) CHECK(ambiguities[250] <= 64 * std::sqrt(double(eps<T>)));
         else
             CHECK((ambiguities[250] >= noise / 4 &&
                    ambiguities[250] <= 4 * noise + 64 * std::sqrt(double(eps<T>))));
@@ -395,7 +395,8 @@ TEST_CASE("a release-build hand_eye of lists of different sizes is NaN", "[hand_
     const std::vector<dual_quaternion<double>> fewer(m.b.begin(), m.b.end() - 1);
     for (const auto method :
          {quat::hand_eye_method::daniilidis, quat::hand_eye_method::rotation_first}) {
-        for (const auto& x : {quat::hand_eye(m.a, fewer, method), quat::hand_eye(fewer, m.a, method)}) {
+        for (const auto& x :
+             {quat::hand_eye(m.a, fewer, method), quat::hand_eye(fewer, m.a, method)}) {
             CHECK(std::isnan(x.mount.real.w));
             CHECK(std::isnan(x.mount.real.z));
             CHECK(std::isnan(x.mount.dual.x));

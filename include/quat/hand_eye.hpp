@@ -31,20 +31,26 @@ struct hand_eye_calibration {
     /// sqrt(mean |translation(A_i X) - translation(X B_i)|^2): the translations' disagreement, in
     /// the motions' unit of length.
     T translation_rms;
-    /// ambiguity < 1/4: the motions turn about axes that spread well beyond their noise, which
-    /// fixes X. Otherwise (one turning axis, no turns, or axes that differ only by noise) X's
-    /// translation along the common axis is free, and so is its rotation about it unless the
-    /// translations fix it; see hand_eye for the solution returned.
+    /// ambiguity < 1/4: the motions turn about axes that spread beyond their noise, which fixes
+    /// X. Otherwise (one turning axis, no turns, or axes that differ only by noise) X's slide along
+    /// the common axis is free, and so is its turn about it unless the translations fix it;
+    /// hand_eye says which solution it returns then.
     bool unique;
-    /// How nearly a rotation turned from the mount's about some axis fits the rotation equations
-    /// as well: sqrt(smallest / second-smallest eigenvalue) of their 4 x 4 normal matrix, both
-    /// raised to a floor of rounding error; in (0, 1]. It compares the noise of the motions'
-    /// rotations with the spread of their axes (weighted by sin^2 of the half-angles), so it does
-    /// not fall with the number of motions. About 4 sqrt(epsilon) / spread for exact motions
-    /// (1e-7 in double, 3e-3 in float, for axes spread by a radian); about noise / spread for
-    /// noisy ones; near 1 for one axis, whatever the noise. Treat values above 1/4 as undetermined
-    /// (unique is false) and above about 1/20 as ill-conditioned: the rotation about the least
-    /// determined axis then comes out several times worse than about the others.
+    /// How nearly the motions leave X's rotation free, in (0, 1]: the largest of
+    /// - sqrt(smallest / second-smallest eigenvalue) of the rotation equations' 4 x 4 normal
+    ///   matrix (both raised to a floor of rounding): the noise of the motions' rotations against
+    ///   the spread of their axes, weighted by sin^2 of the half-angles, which more motions do not
+    ///   change;
+    /// - for the hand's motions and for the sensor's: sqrt(rounding floor / (e2 + e3)), at most 1,
+    ///   for e1 >= e2 >= e3 the eigenvalues of sum sin^2(angle_i / 2) axis_i axis_i^T, so that
+    ///   one side turning about one axis gives 1 whatever noise the other side's motions carry.
+    /// Exact motions about several axes sit at rounding's floor, about 4 sqrt(epsilon) / spread
+    /// (median 1.1e-7 in double and 2.5e-3 in float for turns of 0.1 to 2 rad about random axes);
+    /// noisy ones near the noise (a median of 0.7 times the angle noise of each measured pose for
+    /// those turns); one axis or none: 1. unique is ambiguity < 1/4. Treat values approaching 1/4
+    /// as ill-conditioned: the axes then spread hardly beyond the noise, and the rotation about the
+    /// least determined axis is the first to go wrong. NaN where the result is NaN; NaN too when
+    /// not given in a hand-written hand_eye_calibration.
     T ambiguity = detail::quiet_nan<T>();
 };
 
@@ -147,12 +153,12 @@ struct axis_spread {
 };
 
 template <class T>
-[[nodiscard]] constexpr axis_spread<T> spread_of(T (&w)[3][3], std::size_t count) noexcept {
+[[nodiscard]] constexpr axis_spread<T> spread_of(T (&w)[3][3], T motions) noexcept {
     const T largest = scale_to_unit(w);
     const symmetric_eigen_n<3, T> e = jacobi_eigen<3>(w);
     const T eps = epsilon<T>();
     const T first = e.values[0] * largest, rest = (e.values[1] + e.values[2]) * largest;
-    const T floor = T(16) * eps * first + T(64) * T(count) * eps * eps;
+    const T floor = T(16) * eps * first + T(64) * motions * eps * eps;
     return {sqrt(floor / max(rest, floor)), first > floor};
 }
 
@@ -160,24 +166,30 @@ template <class T>
 /// fix (3 where X is unique). Of the rows: sqrt(noise / second-smallest eigenvalue), the noise
 /// their smallest eigenvalue or a floor of rounding (forming and decomposing the matrix, and the
 /// motions' components themselves); the fixed directions are the eigenvectors whose eigenvalues
-/// exceed noise / limit^2. Then at least the spread of either side's axes: where one side turns
-/// about one axis exactly, noise on the other can make the rows look determined.
+/// exceed noise / limit^4: the free solution inverts the rows there, and a direction only a few
+/// times above the noise would carry that noise into X's translation. Then at least the spread
+/// of either side's axes: where one side turns about one axis exactly, noise on the other can
+/// make the rows look determined.
 template <class T>
 struct rotation_fit {
     T ambiguity;
     std::size_t fixed;
 };
 
-inline constexpr double ambiguity_limit = 0.25;  // hand_eye_calibration::unique's threshold
+/// hand_eye_calibration::unique's threshold on the ambiguity.
+template <class T>
+[[nodiscard]] constexpr T ambiguity_limit() noexcept {
+    return T(1) / T(4);
+}
 
 template <class T>
 [[nodiscard]] constexpr rotation_fit<T> fit_of(const symmetric_eigen4<T>& rows,
                                                const axis_spread<T>& a, const axis_spread<T>& b,
-                                               std::size_t count) noexcept {
+                                               T motions) noexcept {
     const T eps = epsilon<T>();
-    const T floor = T(16) * eps * rows.values[0] + T(64) * T(count) * eps * eps;
+    const T floor = T(16) * eps * rows.values[0] + T(64) * motions * eps * eps;
     const T noise = max(rows.values[3], floor);
-    const T limit(ambiguity_limit);
+    const T limit = ambiguity_limit<T>();
     rotation_fit<T> fit{max(sqrt(noise / max(rows.values[2], floor)), max(a.ratio, b.ratio)), 0};
     while (fit.fixed < 3 && rows.values[fit.fixed] * limit * limit * limit * limit > noise)
         ++fit.fixed;
@@ -258,10 +270,9 @@ template <class T, class A, class B>
 /// its eigenvalues below 64 epsilon of the largest left out (rounding where the axes are nearly
 /// parallel). Translations divided by p; for motions that determine X.
 template <class T, class A, class B>
-[[nodiscard]] constexpr dual_quaternion<T> rotation_first_mount(const A* a_motions,
-                                                                const B* b_motions,
-                                                                std::size_t count, T p,
-                                                                const symmetric_eigen4<T>& rows) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> rotation_first_mount(
+    const A* a_motions, const B* b_motions, std::size_t count, T p,
+    const symmetric_eigen4<T>& rows) noexcept {
     const quaternion<T> q = normalize(rows.vectors[3]);
     const rotation_matrix<T> x_rotation = to_matrix(q);
 
@@ -331,8 +342,7 @@ template <class T, class A, class B>
         T sum(0);
         for (int x = 0; x < 4; ++x)
             for (int y = 0; y < 4; ++y) sum += uu[x] * h[x][y] * vv[y];
-        for (std::size_t k = 0; k < fixed; ++k)
-            sum -= dot(w[k], u) * dot(w[k], v) / rows.values[k];
+        for (std::size_t k = 0; k < fixed; ++k) sum -= dot(w[k], u) * dot(w[k], v) / rows.values[k];
         return sum;
     };
     // The reduced matrix in N's coordinates; the unused coordinates get an eigenvalue above any
@@ -364,12 +374,13 @@ template <class T, class A, class B>
     if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false, T(1)};
     // The translations are divided by the power of two of the longest, so that the dual rows
     // weigh like the rotation rows (Daniilidis's matrix mixes both) and nothing overflows.
-    T longest(0), wa[3][3] = {}, wb[3][3] = {};
+    T longest(0), motions(0), wa[3][3] = {}, wb[3][3] = {};
     for (std::size_t i = 0; i < count; ++i) {
         const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
         if (!is_finite(a.real) || !is_finite(a.dual) || !is_finite(b.real) || !is_finite(b.dual))
             return {{nan_q, nan_q}, nan, nan, false, nan};
         longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
+        motions += T(1);
         const T va[3] = {a.real.x, a.real.y, a.real.z}, vb[3] = {b.real.x, b.real.y, b.real.z};
         for (int x = 0; x < 3; ++x)
             for (int y = 0; y < 3; ++y) {
@@ -379,8 +390,9 @@ template <class T, class A, class B>
     }
     const T p = binade_or_one(longest);
     const symmetric_eigen4<T> rows = rotation_rows_eigen(a_motions, b_motions, count, p);
-    const rotation_fit<T> fit = fit_of(rows, spread_of(wa, count), spread_of(wb, count), count);
-    const bool unique = fit.ambiguity < T(ambiguity_limit);
+    const rotation_fit<T> fit =
+        fit_of(rows, spread_of(wa, motions), spread_of(wb, motions), motions);
+    const bool unique = fit.ambiguity < ambiguity_limit<T>();
     dual_quaternion<T> best = !unique ? free_mount(a_motions, b_motions, count, p, rows, fit.fixed)
                               : method == hand_eye_method::rotation_first
                                   ? rotation_first_mount(a_motions, b_motions, count, p, rows)
@@ -416,11 +428,22 @@ template <class T, class A, class B>
 /// (a fixed target in the sensor's frame), pair j -> k gives A = H_k^-1 H_j and B = S_k S_j^-1;
 /// X then maps sensor coordinates into hand coordinates. The sign of each B is chosen to match its
 /// A's screw (equal scalar parts), so either sign may be given. The robot-world form AX = YB is not
-/// solved here. unique is false when fewer than two motions turn or all turn about parallel axes
-/// (then X's rotation about that axis and its translation along it are undetermined, and one of the
-/// solutions is returned). No motions: the identity, residuals 0, not unique. A NaN or infinite
-/// component gives NaN in every component; try_hand_eye checks instead. Precondition: unit real
-/// parts (QUAT_ASSERT).
+/// solved here.
+///
+/// unique is false where the motions do not fix X (hand_eye_calibration::ambiguity, reported, at
+/// 1/4 or more): the hand turning about one axis, or not at all, or about axes that differ only by
+/// noise. Then both methods return the same solution: among the rotations the rotation equations
+/// leave free (a turn about the common axis; any rotation where nothing turns), the one that fits
+/// the translations best (for pure translations, t_Ai = R_X t_Bi), and of the translations that
+/// fit it, the least: no slide along the common axis, and none at all without turns. Exact
+/// motions about one axis give that solution to rounding. Noise on the hand's motions as well can,
+/// with few motions, spread one axis into axes that look determined: use more motions, and turns
+/// well above the noise.
+///
+/// No motions: the identity, residuals 0, ambiguity 1, not unique. Lists of different sizes (a
+/// precondition, QUAT_ASSERT) or a NaN or infinite component give NaN in every component,
+/// residuals and ambiguity, and unique false; try_hand_eye checks instead. Finite motions never
+/// give NaN. Precondition: unit real parts (QUAT_ASSERT).
 template <class MotionsA, class MotionsB,
           class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
 [[nodiscard]] constexpr hand_eye_calibration<T> hand_eye(
@@ -443,10 +466,11 @@ template <class MotionsA, class MotionsB,
     return detail::solve_hand_eye<T>(a, b, count, method);
 }
 
-/// hand_eye(motions_a, motions_b, method), or std::nullopt for motions it cannot calibrate from: lists of
-/// different sizes, fewer than two motions, a NaN or infinite component, or a real part that is not
-/// a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined are not bad
-/// input: they give unique = false. Never asserts.
+/// hand_eye(motions_a, motions_b, method), or std::nullopt for motions it cannot calibrate from:
+/// lists of different sizes, fewer than two motions, a NaN or infinite component, or a real part
+/// that is not a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined
+/// (pure translations, one turning axis) are not bad input: they give hand_eye's solution with
+/// unique = false. Never asserts.
 template <class MotionsA, class MotionsB,
           class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
 [[nodiscard]] constexpr std::optional<hand_eye_calibration<T>> try_hand_eye(
