@@ -101,10 +101,10 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
     CHECK(text_of(similar) ==
           "similarity_alignment{point_alignment{dual_quaternion{quaternion{0, 0, 0, 1}, "
           "quaternion{-0.5, 0, 0, 0}}, 0.25, true}, 2}");
-    const quat::hand_eye_calibration<T> mount{motion, T(0.125), T(0.5), false};
+    const quat::hand_eye_calibration<T> mount{motion, T(0.125), T(0.5), false, T(1)};
     CHECK(text_of(mount) ==
           "hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, "
-          "0}}, 0.125, 0.5, false}");
+          "0}}, 0.125, 0.5, false, 1}");
     CHECK(text_of(quat::to_homogeneous(motion)) ==
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};

@@ -66,9 +66,10 @@ TEMPLATE_TEST_CASE("std::format prints the documented format", "[io][format]", f
     CHECK(std::format("{}", similar) ==
           "similarity_alignment{point_alignment{dual_quaternion{quaternion{0, 0, 0, 1}, "
           "quaternion{-0.5, 0, 0, 0}}, 0.25, true}, 2}");
-    CHECK(std::format("{:.1f}", quat::hand_eye_calibration<T>{motion, T(0.125), T(0.5), false}) ==
+    CHECK(std::format("{:.1f}",
+                      quat::hand_eye_calibration<T>{motion, T(0.125), T(0.5), false, T(1)}) ==
           "hand_eye_calibration{dual_quaternion{quaternion{0.0, 0.0, 0.0, 1.0}, "
-          "quaternion{-0.5, 0.0, 0.0, 0.0}}, 0.1, 0.5, false}");
+          "quaternion{-0.5, 0.0, 0.0, 0.0}}, 0.1, 0.5, false, 1.0}");
     CHECK(std::format("{}", motion) ==
           "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
     CHECK(std::format("{}", quat::to_homogeneous(motion)) ==

@@ -17,8 +17,9 @@
 //   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
 //   point_alignment{dual_quaternion{...}, 0.25, true}          motion, rms, unique
 //   similarity_alignment{point_alignment{...}, 2}              scale
-//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true} mount, rotation_rms, translation_rms,
-//                                                             unique
+//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true, 0.01}
+//                                                             mount, rotation_rms, translation_rms,
+//                                                             unique, ambiguity
 // (the last three where align_points.hpp or hand_eye.hpp is included too)
 //   zyx   intrinsic                                           sequence and frame: their names
 //
@@ -194,7 +195,8 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
-/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}
+/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
+/// ambiguity}
 /// (hand_eye.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -301,7 +303,8 @@ template <class T, class CharT>
 struct formatter<::quat::similarity_alignment<T>, CharT>
     : ::quat::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
+/// ambiguity}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>

@@ -181,7 +181,9 @@ void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
     p.value(c.rotation_rms);
     p.text(", ");
     p.value(c.translation_rms);
-    p.text(c.unique ? ", true}" : ", false}");
+    p.text(c.unique ? ", true, " : ", false, ");
+    p.value(c.ambiguity);
+    p.text("}");
 }
 
 template <class Printer, class T>

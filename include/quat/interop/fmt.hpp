@@ -79,7 +79,8 @@ template <class T, class Char>
 struct formatter<::quat::similarity_alignment<T>, Char>
     : ::quat::value_formatter<::quat::similarity_alignment<T>, fmt::formatter<T, Char>> {};
 
-/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
+/// ambiguity}; the
 /// spec applies to each number.
 template <class T, class Char>
 struct formatter<::quat::hand_eye_calibration<T>, Char>
