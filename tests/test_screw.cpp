@@ -128,8 +128,8 @@ TEMPLATE_TEST_CASE("to_screw of a subnormal turn with a slide along its axis has
                 CAPTURE(d, a.x, a.y, a.z, k);
                 const quaternion<T> q{T(1), d * a.x, d * a.y, d * a.z};
                 const quat::screw<T> s = quat::to_screw(quat::to_dual_quaternion(q, a * k));
-                const long double length = std::sqrt(static_cast<long double>(
-                    a.x * a.x + a.y * a.y + a.z * a.z));
+                const long double length =
+                    std::sqrt(static_cast<long double>(a.x * a.x + a.y * a.y + a.z * a.z));
                 CHECK(s.moment == vec3<T>{0, 0, 0});
                 CHECK(std::abs(s.direction.x - a.x / length) <= 4 * eps<T>);
                 CHECK(std::abs(s.direction.y - a.y / length) <= 4 * eps<T>);
