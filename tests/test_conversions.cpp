@@ -300,3 +300,67 @@ TEMPLATE_TEST_CASE("angle(q) and axis(q) are to_axis_angle(q).angle and .axis, b
     static_assert(quat::angle(quat::quatd{0, 1, 0, 0}) == quat::numbers::pi);
     static_assert(quat::axis(quat::quatd{0, 0, 1, 0}) == vec3<double>{0, 1, 0});
 }
+
+TEMPLATE_TEST_CASE("to_axis_angle gives a unit axis for subnormal vector parts",
+                   "[conversions][edge]", float, double) {
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    // q = (1, d, d, 0) and (1, d, 2d, 0) with d subnormal: |(d, d, 0)| keeps only the few bits
+    // of a subnormal, so dividing by it leaves the axis off unit length (the smallest subnormal
+    // times sqrt(2) rounds to itself). Reference: the exact directions (1, 1, 0) / sqrt(2) and
+    // (1, 2, 0) / sqrt(5), and the angle 2 atan(|v|) ~ 2 |v|, in long double.
+    for (const T d : {L::denorm_min(), L::denorm_min() * T(3), L::min() / T(1024)}) {
+        CAPTURE(d);
+        for (const long double k : {1.0L, 2.0L}) {
+            const quaternion<T> q{T(1), d, d * T(k), T(0)};
+            const axis_angle<T> r = quat::to_axis_angle(q);
+            const long double length = std::sqrt(1 + k * k);
+            CHECK(std::abs(quat::norm(r.axis) - T(1)) <= 4 * L::epsilon());
+            CHECK(std::abs(r.axis.x - 1 / length) <= 4 * L::epsilon());
+            CHECK(std::abs(r.axis.y - k / length) <= 4 * L::epsilon());
+            CHECK(r.axis.z == 0);
+            // The angle is subnormal too: right to within the spacing of subnormals.
+            const long double angle = 2 * static_cast<long double>(d) * length;
+            CHECK(std::abs(static_cast<long double>(r.angle) - angle) <= 2 * L::denorm_min());
+            CHECK(quat::axis(q) == r.axis);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("from_rotation_vector is a unit quaternion for every finite vector",
+                   "[conversions][edge]", float, double) {
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    // Vectors whose |v|^2 overflows, with exact lengths: (3, 4, 0) 2^(e - 3) has length
+    // 1.25 2^(e - 1), below max(); (8, 15, 0) 2^(e - 4) has length 17 2^(e - 4) = 1.0625 2^e,
+    // above max() (the angle overflows, its half does not), components below max(). The
+    // reference: cos and sin of the exact half angle in long double, whose range holds these.
+    struct pythagorean {
+        T a, b;
+        long double length;
+        int shift;
+    };
+    const int e = L::max_exponent;
+    for (const pythagorean p : {pythagorean{3, 4, 5, e - 3}, pythagorean{8, 15, 17, e - 4}}) {
+        const vec3<T> v{std::ldexp(p.a, p.shift), std::ldexp(p.b, p.shift), T(0)};
+        const long double half = std::ldexp(p.length, p.shift) / 2;
+        CAPTURE(v.x, v.y, half);
+        REQUIRE(std::isfinite(v.y));
+        const quaternion<T> q = quat::from_rotation_vector(v);
+        const long double c = std::cos(half), s = std::sin(half);
+        CHECK(std::abs(q.w - c) <= 4 * L::epsilon());
+        CHECK(std::abs(q.x - s * p.a / p.length) <= 4 * L::epsilon());
+        CHECK(std::abs(q.y - s * p.b / p.length) <= 4 * L::epsilon());
+        CHECK(q.z == 0);
+        CHECK(std::abs(quat::norm(q) - 1) <= 4 * L::epsilon());
+    }
+    // Every component at max(): the axis (1, 1, 1) / sqrt(3), a unit quaternion.
+    const T largest = L::max();
+    const quaternion<T> q = quat::from_rotation_vector(vec3<T>{largest, largest, -largest});
+    CHECK(std::abs(quat::norm(q) - 1) <= 4 * L::epsilon());
+    CHECK(q.x == q.y);
+    CHECK(q.z == -q.y);
+    // NaN and infinities stay NaN.
+    CHECK(std::isnan(quat::from_rotation_vector(vec3<T>{L::infinity(), 0, 0}).w));
+    CHECK(std::isnan(quat::from_rotation_vector(vec3<T>{L::quiet_NaN(), 1, 0}).x));
+}

@@ -236,3 +236,37 @@ TEST_CASE("inverse of a non-rigid matrix is not its inverse: the precondition is
     CHECK(std::isnan(inv(0, 3)));
     CHECK(inv(0, 0) == 1);
 }
+
+TEMPLATE_TEST_CASE("a translation with components up to max() reads back through a dual quaternion",
+                   "[homogeneous_matrix][edge]", float, double) {
+    using T = TestType;
+    const T largest = std::numeric_limits<T>::max();
+    // The dual part (t / 2) q never overflows, but 2 dual real* rounds within a few units of
+    // max() and used to overflow on the doubling. Reference: the translation as given, exact.
+    quat::test::random_rotations random;
+    int rounded_past = 0;
+    for (int n = 0; n < 200; ++n) {
+        const quaternion<T> q = random.unit_quaternion<T>();
+        const T sign = n % 2 == 0 ? T(1) : T(-1);
+        const vec3<T> translations[] = {{sign * largest, T(0), T(0)},
+                                        {T(1), sign * largest, T(-2)},
+                                        {largest, -largest, sign * largest}};
+        for (const vec3<T>& t : translations) {
+            const homogeneous_matrix<T> h = quat::to_homogeneous(q, t);
+            const vec3<T> back = quat::translation_of(quat::to_dual_quaternion(h));
+            CAPTURE(n, t.x, t.y, t.z, back.x, back.y, back.z);
+            // Within 8 units of roundoff of the largest component, and never past max().
+            CHECK(max_difference(back, t) <= 8 * eps<T> * largest);
+            CHECK(std::abs(back.x) <= largest);
+            CHECK(std::abs(back.y) <= largest);
+            CHECK(std::abs(back.z) <= largest);
+            rounded_past += quat::detail::largest_magnitude(back) == largest ? 1 : 0;
+            const homogeneous_matrix<T> again = quat::to_homogeneous(quat::to_dual_quaternion(h));
+            for (int row = 0; row < 3; ++row) CHECK(std::isfinite(again(row, 3)));
+        }
+    }
+    CHECK(rounded_past > 0);  // the case that overflowed is exercised
+    // Beyond rounding a translation past max() is infinite, as any overflow.
+    const dual_quaternion<T> beyond{quaternion<T>::identity(), quaternion<T>{0, largest, 0, 0}};
+    CHECK(std::isinf(quat::translation_of(beyond).x));
+}

@@ -605,3 +605,117 @@ TEST_CASE("rotation_spline takes times of another precision than its rotations",
         CHECK(spline.angular_velocity(t) == reference.angular_velocity(t));
     }
 }
+
+namespace {
+
+// The C2 cubic spline of scalar values at times, with the end slopes of the first and last
+// segments' straight lines (rotation_spline's end conditions), in long double: its slope at t.
+// About one fixed axis the rotation spline is exactly this spline of the angles (the rotation
+// vectors are parallel, so J(r) is the identity on them and the non-linear term vanishes).
+long double clamped_spline_slope(const std::vector<long double>& times,
+                                 const std::vector<long double>& values, long double t) {
+    const std::size_t n = times.size();
+    std::vector<long double> h(n - 1), slope(n), diagonal(n), rhs(n);
+    for (std::size_t k = 0; k + 1 < n; ++k) h[k] = times[k + 1] - times[k];
+    slope[0] = (values[1] - values[0]) / h[0];
+    slope[n - 1] = (values[n - 1] - values[n - 2]) / h[n - 2];
+    // Continuity of the second derivative at keyframe k, by the Thomas algorithm.
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+        diagonal[k] = 4 / h[k - 1] + 4 / h[k];
+        rhs[k] = 6 * (values[k] - values[k - 1]) / (h[k - 1] * h[k - 1]) +
+                 6 * (values[k + 1] - values[k]) / (h[k] * h[k]);
+        if (k == 1) rhs[k] -= 2 / h[0] * slope[0];
+        if (k == n - 2) rhs[k] -= 2 / h[n - 2] * slope[n - 1];
+        if (k > 1) {
+            const long double factor = (2 / h[k - 1]) / diagonal[k - 1];
+            diagonal[k] -= factor * (2 / h[k - 1]);
+            rhs[k] -= factor * rhs[k - 1];
+        }
+    }
+    for (std::size_t k = n - 2; k >= 1; --k)
+        slope[k] = (rhs[k] - (k + 2 < n ? 2 / h[k] * slope[k + 1] : 0.0L)) / diagonal[k];
+    std::size_t k = 0;
+    while (k + 2 < n && t >= times[k + 1]) ++k;
+    // The derivative of the cubic Hermite segment.
+    const long double u = (t - times[k]) / h[k], rise = values[k + 1] - values[k];
+    return slope[k] * (1 - 4 * u + 3 * u * u) + slope[k + 1] * (3 * u * u - 2 * u) +
+           rise / h[k] * (6 * u - 6 * u * u);
+}
+
+}  // namespace
+
+TEST_CASE("rotation_spline with durations unequal by 1e6 is the C2 spline, huge rates included",
+          "[rotation_spline][edge]") {
+    // Keyframes 1e-6 s apart at both ends and 1 s apart between: the end velocities are those of
+    // the 1e-6 s slerps (3e5 rad/s here), and continuity of the acceleration carries rates of
+    // that size into the 1 s segments. That is the C2 spline, not an artefact: about one axis
+    // it is the scalar clamped spline above, computed independently in long double.
+    const std::vector<double> times{0, 1e-6, 1 + 1e-6, 2 + 1e-6, 2 + 2e-6};
+    const std::vector<long double> angles{0, 0.3L, 0.9L, 1.2L, 1.6L};
+    std::vector<quaternion<double>> rotations;
+    for (const long double a : angles) rotations.push_back(quat::rotation_z(double(a)));
+    const std::optional<rotation_spline<double>> spline =
+        rotation_spline<double>::try_make(times, rotations);
+    REQUIRE(spline);
+    const std::vector<long double> long_times(times.begin(), times.end());
+    double largest = 0;
+    for (int k = 0; k <= 200; ++k) {
+        const double t = times.front() + (times.back() - times.front()) * k / 200.0;
+        const vec3<double> w = spline->angular_velocity(t);
+        const long double reference = clamped_spline_slope(long_times, angles, t);
+        CAPTURE(t, w.z, double(reference));
+        CHECK(std::abs(w.z - reference) <= 1e-9 * (1 + std::abs(reference)));
+        CHECK(std::abs(w.x) + std::abs(w.y) <= 1e-9 * (1 + std::abs(reference)));
+        largest = std::max(largest, std::abs(w.z));
+    }
+    CHECK(largest > 1e5);
+    // Scaled by 1e-20 the accelerations (1e6 rad/s^2 here, times 1e40) pass float's largest value:
+    // try_make refuses the float copy, as documented, while double takes it.
+    std::vector<float> float_times;
+    std::vector<double> scaled_times;
+    std::vector<quaternion<float>> float_rotations;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        float_times.push_back(float(times[i] * 1e-20));
+        scaled_times.push_back(times[i] * 1e-20);
+        float_rotations.emplace_back(rotations[i]);
+    }
+    CHECK_FALSE(rotation_spline<float>::try_make(float_times, float_rotations));
+    const std::optional<rotation_spline<double>> scaled =
+        rotation_spline<double>::try_make(scaled_times, rotations);
+    REQUIRE(scaled);
+    const double middle = 1.5;
+    CHECK(std::abs(scaled->angular_acceleration(middle * 1e-20).z) >
+          double(std::numeric_limits<float>::max()));
+    CHECK(std::abs(scaled->angular_velocity(middle * 1e-20).z * 1e-20 -
+                   spline->angular_velocity(middle).z) <=
+          1e-9 * std::abs(spline->angular_velocity(middle).z));
+}
+
+#ifdef NDEBUG
+TEST_CASE("rotation_spline with times and rotations of different sizes reads neither past its end",
+          "[rotation_spline][nan]") {
+    // Release builds only (debug builds stop at QUAT_ASSERT); run under AddressSanitizer, a read
+    // past either vector is reported. The spline evaluates to NaN; try_make is empty.
+    const std::vector<double> five{0, 1, 2, 3, 4}, two{0, 1};
+    const std::vector<quaternion<double>> three{quaternion<double>::identity(),
+                                                quat::rotation_x(0.5), quat::rotation_y(0.5)};
+    const std::vector<quaternion<double>> six(6, quaternion<double>::identity());
+    const auto check_nan = [](const rotation_spline<double>& s) {
+        CHECK(std::isnan(s(0.5).w));
+        CHECK(std::isnan(s.angular_velocity(0.5).x));
+        CHECK(std::isnan(s.angular_acceleration(0.5).x));
+        CHECK(s.times().empty());
+    };
+    check_nan(rotation_spline<double>(five, three));
+    check_nan(rotation_spline<double>(two, three));
+    check_nan(rotation_spline<double>(five, six));
+    CHECK_FALSE(rotation_spline<double>::try_make(five, three));
+    CHECK_FALSE(rotation_spline<double>::try_make(two, three));
+    CHECK_FALSE(rotation_spline<double>::try_make(five, six));
+    const double c_times[] = {0, 1, 2};
+    const quaternion<double> c_rotations[] = {quaternion<double>::identity(),
+                                              quat::rotation_z(1.0)};
+    check_nan(rotation_spline<double>(c_times, c_rotations));
+    CHECK_FALSE(rotation_spline<double>::try_make(c_times, c_rotations));
+}
+#endif

@@ -112,3 +112,49 @@ TEMPLATE_TEST_CASE("to_screw of a turn by a subnormal angle is finite", "[screw]
     CHECK(exact.moment.x == 0);
     CHECK(exact.moment.y == 0);
 }
+
+TEMPLATE_TEST_CASE("to_screw of a subnormal turn with a slide along its axis has a zero moment",
+                   "[screw][edge]", float, double) {
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    // The turn (1, d a) about a / |a| by about 2 |a| d, then a slide by k a, along that axis: the
+    // axis passes the origin, so the moment is zero. Across the axis is only the rounding of the
+    // unit direction, |t| eps, which cot(angle / 2) ~ 1 / d used to make huge or infinite.
+    // Reference: the exact screw, in long double.
+    const vec3<T> directions[] = {{1, 0, 1}, {1, 2, 3}, {3, 1, 2}, {1, 2, 0}};
+    for (const T d : {L::denorm_min(), L::denorm_min() * T(7), L::min() / T(64)}) {
+        for (const vec3<T>& a : directions) {
+            for (const T k : {T(1), T(100), T(1e5)}) {
+                CAPTURE(d, a.x, a.y, a.z, k);
+                const quaternion<T> q{T(1), d * a.x, d * a.y, d * a.z};
+                const quat::screw<T> s = quat::to_screw(quat::to_dual_quaternion(q, a * k));
+                const long double length =
+                    std::sqrt(static_cast<long double>(a.x * a.x + a.y * a.y + a.z * a.z));
+                CHECK(s.moment == vec3<T>{0, 0, 0});
+                CHECK(std::abs(s.direction.x - a.x / length) <= 4 * eps<T>);
+                CHECK(std::abs(s.direction.y - a.y / length) <= 4 * eps<T>);
+                CHECK(std::abs(s.direction.z - a.z / length) <= 4 * eps<T>);
+                CHECK(std::abs(s.displacement - k * length) <= 8 * eps<T> * k * length);
+                CHECK(std::abs(s.angle - 2 * length * static_cast<long double>(d)) <=
+                      4 * L::denorm_min() + 4 * eps<T> * s.angle);
+            }
+        }
+    }
+}
+
+TEST_CASE("to_screw of a subnormal turn with a slide across its axis", "[screw][edge]") {
+    // A turn by 1e-310 about x and a slide by 1e-300 along y: the axis is the line through
+    // p = (across + cot(h) l x t) / 2 = (0, 5e-301, 5e9), and the moment p x l = (0, 5e9, -5e-301)
+    // (long double, exact to rounding). A slide of 1 across would put the axis 5e309 away, past
+    // max(): that moment is infinite.
+    const double d = 1e-310;
+    const quat::screw<double> s = quat::to_screw(
+        quat::to_dual_quaternion(quaternion<double>{1, d / 2, 0, 0}, vec3<double>{0, 1e-300, 0}));
+    const long double cot = 1 / (static_cast<long double>(d / 2));
+    CHECK(s.moment.x == 0);
+    CHECK(std::abs(s.moment.y - 1e-300L * cot / 2) <= 8 * eps<double> * (1e-300L * cot / 2));
+    CHECK(std::abs(s.moment.z + 5e-301L) <= 8 * eps<double> * 5e-301L);
+    const quat::screw<double> far = quat::to_screw(
+        quat::to_dual_quaternion(quaternion<double>{1, d / 2, 0, 0}, vec3<double>{0, 1, 0}));
+    CHECK(std::isinf(far.moment.y));
+}

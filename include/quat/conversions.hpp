@@ -100,7 +100,8 @@ template <class T>
     const vec3<T> u{p.x, p.y, p.z};
     const T s = norm(u);
     if (s == T(0) && p.w > T(0)) return {{T(1), T(0), T(0)}, T(0)};
-    return {u / s, T(2) * detail::atan2(s, p.w)};
+    // normalize, not u / s: for subnormal x, y, z, s keeps only a few bits and u / s is not unit.
+    return {normalize(u), T(2) * detail::atan2(s, p.w)};
 }
 
 /// The angle in [0, pi] of the rotation q: to_axis_angle(q).angle, q and -q alike, 0 for the
@@ -146,10 +147,21 @@ template <class T>
 }
 
 /// Exponential map: the unit quaternion of the rotation by |v| radians about v / |v|.
-/// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle.
+/// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle, for every finite
+/// v: where |v| exceeds max() the half angle |v| / 2 does not, and gives the unit quaternion (an
+/// angle that large is known only to within its rounding, many turns, as already from about 1e16
+/// rad in double). NaN or infinite components give NaN.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_rotation_vector(
     const vec3<T>& rotation_vector) noexcept {
+    if (!(squared_norm(rotation_vector) <= detail::largest<T>())) {
+        // |v|^2 overflowed (or is NaN): the half angle from v / 2, whose norm is at most
+        // sqrt(3) max() / 2, and the axis from normalize, as sin(h) / h falls below the normal
+        // range (losing digits) as h nears max().
+        const T half_angle = norm(rotation_vector * T(0.5)), s = detail::sin(half_angle);
+        const vec3<T> axis = normalize(rotation_vector);
+        return {detail::cos(half_angle), axis.x * s, axis.y * s, axis.z * s};
+    }
     // The half angle's square from the squared norm, not from norm, so that a dual-number scalar
     // gets finite derivatives at the zero vector (norm's square root is only read past the series).
     const detail::cos_and_sinc<T> half =

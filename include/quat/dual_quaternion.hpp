@@ -3,6 +3,7 @@
 #define QUAT_DUAL_QUATERNION_HPP_INCLUDED
 
 #include <optional>
+#include <type_traits>
 
 #include "config.hpp"
 #include "detail/math.hpp"
@@ -69,18 +70,39 @@ template <class T>
     return dq.real;
 }
 
-/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+namespace detail {
+
+/// 2 x, or +-max() where x is within a few units of roundoff of max() / 2 and the doubling alone
+/// would overflow (a value of max() read back with rounding error); infinite beyond that.
+template <class T>
+[[nodiscard]] constexpr T doubled_within_range(T x) noexcept {
+    const T twice = x + x;
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T limit = largest<T>() / T(2) * (T(1) + T(16) * epsilon<T>());
+        if (!is_finite(twice) && abs(x) <= limit) return x < T(0) ? -largest<T>() : largest<T>();
+    }
+    return twice;
+}
+
+}  // namespace detail
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector, for components
+/// up to max(): one that rounding alone carries past max() (as in reading back a translation of
+/// max() through to_dual_quaternion) is +-max(), not infinite.
 /// Precondition: |real| = 1; a real part of norm s gives s^2 t.
 template <class T>
 [[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
     // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
-    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all. Each
+    // component is a dot product of r with a signed permutation of d, so no partial sum exceeds
+    // |r| |d| = |t| / 2 (at most sqrt(3) max() / 2): only the doubling can overflow.
     const quaternion<T>& r = dq.real;
     const quaternion<T>& d = dq.dual;
     const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
                        r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
                        r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
-    return half + half;
+    return {detail::doubled_within_range(half.x), detail::doubled_within_range(half.y),
+            detail::doubled_within_range(half.z)};
 }
 
 /// Negation: the same rigid motion.

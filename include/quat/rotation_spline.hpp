@@ -66,7 +66,12 @@ public:
     /// containers with data() and size(), or C arrays, of equal size >= 2. Debug builds check
     /// these preconditions; a release build given fewer than two keyframes or sizes that differ
     /// makes a spline that evaluates to NaN, and unsorted or non-finite input a meaningless (often
-    /// non-finite) one, never undefined behaviour. try_make checks the input instead.
+    /// non-finite) one, never undefined behaviour. try_make checks the input instead. Where
+    /// try_make is empty for valid input (the solve did not converge, or a value would overflow T)
+    /// the constructor keeps the velocities with the smallest jumps: through every keyframe with
+    /// continuous angular velocity, the acceleration jumping at inner keyframes, and the values
+    /// that overflow infinite or NaN. Durations unequal by many orders of magnitude are valid and
+    /// give rates of the short segments' size on the long ones: that is the C2 spline.
     template <class Times, class Rotations>
     rotation_spline(const Times& times, const Rotations& rotations) {
         const std::size_t count = detail::size_of(times);

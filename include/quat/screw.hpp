@@ -5,6 +5,7 @@
 
 #include "config.hpp"
 #include "detail/math.hpp"
+#include "detail/power_of_two.hpp"
 #include "dual_quaternion.hpp"
 #include "quaternion.hpp"
 #include "vec3.hpp"
@@ -26,8 +27,10 @@ struct screw {
 /// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
 /// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
 /// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
-/// moment: its axis lies far away. Precondition: unit dq; a NaN or infinite component gives NaN in
-/// the result.
+/// moment: its axis lies far away, and where that is beyond max() (a slide across the axis of more
+/// than about max() times half the angle, as for a subnormal angle) the moment is infinite; a
+/// slide along the axis gives a zero moment at any angle. Precondition: unit dq; a NaN or infinite
+/// component gives NaN in the result.
 template <class T>
 [[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
     const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
@@ -44,8 +47,17 @@ template <class T>
     // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
     // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
     // across w / s, not across (w / s): w / s overflows for a tiny angle even where across is 0.
-    const vec3<T> across = t - l * displacement;
-    const vec3<T> moment = (cross(t, l) + across * near.real.w / s) * T(0.5);
+    // across = l x (t x l), from t x v with v and t scaled by powers of two (exact, so v still
+    // lies along the axis) and compensated products: it is exactly zero for a t along v, where
+    // t - l (t . l) keeps |t| eps from the rounding of l, which cot(h) turns into an infinite
+    // moment when the angle is subnormal.
+    const vec3<T> axis = detail::scaled_by_power_of_two(v);
+    const T size = detail::binade_or_one(detail::largest_magnitude(t));
+    const vec3<T> t_cross_axis = detail::accurate_cross(t / size, axis);  // (t x v) / |v| / size
+    const T axis_squared = squared_norm(axis);
+    const vec3<T> across = cross(axis, t_cross_axis) * (size / axis_squared);
+    const vec3<T> moment =
+        (t_cross_axis * (size / detail::sqrt(axis_squared)) + across * near.real.w / s) * T(0.5);
     return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
 }
 
