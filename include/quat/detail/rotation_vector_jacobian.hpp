@@ -97,11 +97,16 @@ template <class T>
     return n_minus_sin_over_cube(n * n, n);
 }
 
+/// quartic_coefficient's closed form, for n >= 2, given a = one_minus_cos_over_square(n2, n).
+template <class T>
+[[nodiscard]] constexpr T quartic_closed_form(T n2, T n, T a) noexcept {
+    return (T(2) * n2 * a - n * detail::sin(n)) / (n2 * n2);
+}
+
 /// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
 template <class T>
 [[nodiscard]] constexpr T quartic_coefficient(T n2, T n) noexcept {
-    if (n2 >= T(4))
-        return (T(2) * n2 * one_minus_cos_over_square(n2, n) - n * detail::sin(n)) / (n2 * n2);
+    if (n2 >= T(4)) return quartic_closed_form(n2, n, one_minus_cos_over_square(n2, n));
     return power_series(T(1) / T(12), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
@@ -154,7 +159,10 @@ template <class T>
 /// free of cancellation. For n < 2 pi.
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n2, T n) noexcept {
-    return quartic_coefficient(n2, n) / (T(2) * one_minus_cos_over_square(n2, n));
+    // a once: the closed form of the quartic coefficient needs it too (a sine saved past n = 2).
+    const T a = one_minus_cos_over_square(n2, n);
+    const T quartic = n2 >= T(4) ? quartic_closed_form(n2, n, a) : quartic_coefficient(n2, n);
+    return quartic / (T(2) * a);
 }
 /// inverse_jacobian_coefficient(n n, n).
 template <class T>
