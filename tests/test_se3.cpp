@@ -3,7 +3,7 @@
 // central differences of the same function in long double through the right plus and minus
 // (J = d (f(X exp(d)) (-) f(X)) / d d at d = 0), at fixed-seed random points, the identity, zero
 // and tiny rotations (pure and nearly pure translations), both sides of the coefficients' switches
-// (|omega| = 1/4, 2 and 3) and near half turns (pi - 1e-8); ceres::Jet derivatives of
+// (|omega| = 2 and 3), around 1/4, and near half turns (pi - 1e-8); ceres::Jet derivatives of
 // exp, log, plus and minus, finite at zero and tiny tangents and equal to the analytic Jacobians;
 // the identities between the Jacobians; NaN in, NaN out.
 //
@@ -550,8 +550,8 @@ TEST_CASE("se3 a literal nullptr skips any Jacobian of every se3 function") {
 }
 
 TEST_CASE("se3 the Jacobians of exp and log are right_jacobian and its inverse, bit for bit") {
-    // One coefficient path: so3's right_jacobian and right_jacobian_inverse, whose accuracy
-    // tests/test_so3.cpp measures against a long double series, are the blocks of both.
+    // One coefficient path: so3's, whose accuracy tests/test_so3.cpp measures against a long
+    // double series, makes the blocks of both.
     test::random_rotations random;
     for (int k = 0; k < 200; ++k) {
         const twist<double> t{random.vector<double>(),

@@ -11,6 +11,8 @@
 #ifndef QUAT_SO3_HPP_INCLUDED
 #define QUAT_SO3_HPP_INCLUDED
 
+#include <type_traits>
+
 #include "config.hpp"
 #include "conversions.hpp"
 #include "detail/math.hpp"
@@ -63,33 +65,35 @@ template <class T>
 /// scalar gets finite derivatives at w = 0).
 template <class T>
 [[nodiscard]] constexpr matrix3<T> right_jacobian(const vec3<T>& w) noexcept {
-    const T n = norm(w), n2 = detail::squared_angle(w, n);
-    return detail::skew_series(w, n2, T(1), -detail::one_minus_cos_over_square(n2, n),
-                               detail::n_minus_sin_over_cube(n2, n));
+    const detail::right_jacobian_coefficients<T> k =
+        detail::right_jacobian_coefficients_of(w, false);
+    return detail::skew_series(w, squared_norm(w), T(1), -k.a, k.b);
 }
 
 /// The left Jacobian Jl(w) = Jr(-w) = R(w) Jr(w): exp(w + d) = exp(Jl(w) d) exp(w). Any w.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> left_jacobian(const vec3<T>& w) noexcept {
-    const T n = norm(w), n2 = detail::squared_angle(w, n);
-    return detail::skew_series(w, n2, T(1), detail::one_minus_cos_over_square(n2, n),
-                               detail::n_minus_sin_over_cube(n2, n));
+    const detail::right_jacobian_coefficients<T> k =
+        detail::right_jacobian_coefficients_of(w, false);
+    return detail::skew_series(w, squared_norm(w), T(1), k.a, k.b);
 }
 
 /// Jr(w)^-1 = I + [w]x / 2 + (1/n^2 - (1 + cos n)/(2 n sin n)) [w]x^2. Precondition: |w| < 2 pi
 /// (Jr is singular at 2 pi; beyond, the result is finite but not the inverse).
 template <class T>
 [[nodiscard]] constexpr matrix3<T> right_jacobian_inverse(const vec3<T>& w) noexcept {
-    const T n = norm(w), n2 = detail::squared_angle(w, n);
-    return detail::skew_series(w, n2, T(1), T(0.5), detail::inverse_jacobian_coefficient(n2, n));
+    const detail::right_jacobian_coefficients<T> k =
+        detail::right_jacobian_coefficients_of(w, true);
+    return detail::skew_series(w, squared_norm(w), T(1), T(0.5), k.c);
 }
 
 /// Jl(w)^-1 = Jr(-w)^-1 = I - [w]x / 2 + (1/n^2 - (1 + cos n)/(2 n sin n)) [w]x^2.
 /// Precondition: |w| < 2 pi, as right_jacobian_inverse.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> left_jacobian_inverse(const vec3<T>& w) noexcept {
-    const T n = norm(w), n2 = detail::squared_angle(w, n);
-    return detail::skew_series(w, n2, T(1), T(-0.5), detail::inverse_jacobian_coefficient(n2, n));
+    const detail::right_jacobian_coefficients<T> k =
+        detail::right_jacobian_coefficients_of(w, true);
+    return detail::skew_series(w, squared_norm(w), T(1), T(-0.5), k.c);
 }
 
 /// The adjoint of q, Ad(q) = R(q): q exp(w) = exp(R w) q. Precondition: unit q.
@@ -103,8 +107,21 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(
     const vec3<T>& w, detail::type_identity_t<matrix3<T>>* jacobian = nullptr) noexcept {
-    if (jacobian != nullptr) *jacobian = right_jacobian(w);
-    return from_rotation_vector(w);
+    if constexpr (std::is_floating_point_v<T>) {
+        // from_rotation_vector(w) and right_jacobian(w) from one sincos of the half angle.
+        const detail::cos_and_sinc<T> half = detail::half_angle_of(w);
+        if (jacobian != nullptr) {
+            const T n = norm(w);
+            const detail::right_jacobian_coefficients<T> k =
+                detail::right_jacobian_coefficients_of(n * n, n, half, false);
+            *jacobian = detail::skew_series(w, squared_norm(w), T(1), -k.a, k.b);
+        }
+        const T scale = half.sinc * T(0.5);
+        return {half.cos, w.x * scale, w.y * scale, w.z * scale};
+    } else {
+        if (jacobian != nullptr) *jacobian = right_jacobian(w);
+        return from_rotation_vector(w);
+    }
 }
 
 /// log(q) = to_rotation_vector(q), angle in [0, pi], q and -q alike; *jacobian = Jr(log q)^-1.
@@ -113,6 +130,8 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> log(
     const quaternion<T>& q, detail::type_identity_t<matrix3<T>>* jacobian = nullptr) noexcept {
     const vec3<T> w = to_rotation_vector(q);
+    // Not q's own half-angle cosine and sine in place of right_jacobian_inverse's sincos: they
+    // belong to q's angle, not to the rounded |w|, and measure 2.7 epsilon against 1.6 (double).
     if (jacobian != nullptr) *jacobian = right_jacobian_inverse(w);
     return w;
 }
