@@ -3,7 +3,7 @@
 // central differences of the same function in long double through the right plus and minus
 // (J = d (f(X exp(d)) (-) f(X)) / d d at d = 0), at fixed-seed random points, the identity, zero
 // and tiny rotations (pure and nearly pure translations), both sides of the coefficients' switches
-// (|omega| = 1/4, 2 and 3) and near half turns (pi - 1e-8); ceres::Jet derivatives of
+// (|omega| = 2 and 3), around 1/4, and near half turns (pi - 1e-8); ceres::Jet derivatives of
 // exp, log, plus and minus, finite at zero and tiny tangents and equal to the analytic Jacobians;
 // the identities between the Jacobians; NaN in, NaN out.
 //
@@ -488,4 +488,78 @@ TEST_CASE("se3 gives NaN for NaN input, in the value and the Jacobians") {
     CHECK(std::isnan(d2(3, 3)));
     const twist<double> linear_nan{{nan, 0, 0}, {0, 0, 0}};
     CHECK(std::isnan(se3::exp(linear_nan).dual.x));
+}
+
+TEST_CASE("se3 a literal nullptr skips any Jacobian of every se3 function") {
+    // As for so3: the value and the other Jacobian are those of the call that asks for both.
+    test::random_rotations random;
+    const dq<double> x = random.rigid_motion<double>(), y = random.rigid_motion<double>();
+    const twist<double> t{random.vector<double>(), random.vector<double>()};
+    const vec3<double> p = random.vector<double>();
+    matrix6<double> full1{}, full2{}, one{};
+    const auto same = [](const twist<double>& a, const twist<double>& b) {
+        return se3::to_vector(a) == se3::to_vector(b);
+    };
+
+    const dq<double> e = se3::exp(t, &full1);
+    CHECK(se3::exp(t, nullptr) == e);
+    const twist<double> l = se3::log(x, &full1);
+    CHECK(same(se3::log(x, nullptr), l));
+    const homogeneous_matrix<double> h = to_homogeneous(x);
+    const twist<double> lh = se3::log(h, &full1);
+    CHECK(same(se3::log(h, nullptr), lh));
+    const dq<double> i = se3::inverse(x, &full1);
+    CHECK(se3::inverse(x, nullptr) == i);
+
+    const dq<double> c = se3::compose(x, y, &full1, &full2);
+    CHECK(se3::compose(x, y, nullptr, nullptr) == c);
+    CHECK((se3::compose(x, y, &one, nullptr) == c && one == full1));
+    CHECK((se3::compose(x, y, nullptr, &one) == c && one == full2));
+
+    matrix<double, 3, 6> d_x{}, one_x{};
+    matrix3<double> d_p{}, one_p{};
+    const vec3<double> moved = se3::act(x, p, &d_x, &d_p);
+    CHECK(se3::act(x, p, nullptr, nullptr) == moved);
+    CHECK((se3::act(x, p, &one_x, nullptr) == moved && one_x == d_x));
+    CHECK((se3::act(x, p, nullptr, &one_p) == moved && one_p == d_p));
+
+    const dq<double> b = se3::between(x, y, &full1, &full2);
+    CHECK(se3::between(x, y, nullptr, nullptr) == b);
+    CHECK((se3::between(x, y, &one, nullptr) == b && one == full1));
+    CHECK((se3::between(x, y, nullptr, &one) == b && one == full2));
+
+    const dq<double> pp = se3::plus(x, t, &full1, &full2);
+    CHECK(se3::plus(x, t, nullptr, nullptr) == pp);
+    CHECK((se3::plus(x, t, &one, nullptr) == pp && one == full1));
+    CHECK((se3::plus(x, t, nullptr, &one) == pp && one == full2));
+
+    const twist<double> m = se3::minus(y, x, &full1, &full2);
+    CHECK(same(se3::minus(y, x, nullptr, nullptr), m));
+    CHECK((same(se3::minus(y, x, &one, nullptr), m) && one == full1));
+    CHECK((same(se3::minus(y, x, nullptr, &one), m) && one == full2));
+
+    const dq<double> pl = se3::plus_left(t, x, &full1, &full2);
+    CHECK(se3::plus_left(t, x, nullptr, nullptr) == pl);
+    CHECK((se3::plus_left(t, x, &one, nullptr) == pl && one == full1));
+    CHECK((se3::plus_left(t, x, nullptr, &one) == pl && one == full2));
+
+    const twist<double> ml = se3::minus_left(y, x, &full1, &full2);
+    CHECK(same(se3::minus_left(y, x, nullptr, nullptr), ml));
+    CHECK((same(se3::minus_left(y, x, &one, nullptr), ml) && one == full1));
+    CHECK((same(se3::minus_left(y, x, nullptr, &one), ml) && one == full2));
+}
+
+TEST_CASE("se3 the Jacobians of exp and log are right_jacobian and its inverse, bit for bit") {
+    // One coefficient path: so3's, whose accuracy tests/test_so3.cpp measures against a long
+    // double series, makes the blocks of both.
+    test::random_rotations random;
+    for (int k = 0; k < 200; ++k) {
+        const twist<double> t{random.vector<double>(),
+                              random.unit_vector<double>() * random.uniform<double>(0, pi)};
+        matrix6<double> exp_jacobian{}, log_jacobian{};
+        const dq<double> x = se3::exp(t, &exp_jacobian);
+        CHECK(exp_jacobian == se3::right_jacobian(t));
+        const twist<double> back = se3::log(x, &log_jacobian);
+        CHECK(log_jacobian == se3::right_jacobian_inverse(back));
+    }
 }

@@ -97,11 +97,18 @@ template <class T>
     return n_minus_sin_over_cube(n * n, n);
 }
 
+/// quartic_coefficient's closed form, for n >= 2, given a = one_minus_cos_over_square(n2, n) and
+/// sin n.
+template <class T>
+[[nodiscard]] constexpr T quartic_closed_form(T n2, T n, T a, T sin_n) noexcept {
+    return (T(2) * n2 * a - n * sin_n) / (n2 * n2);
+}
+
 /// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
 template <class T>
 [[nodiscard]] constexpr T quartic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(4))
-        return (T(2) * n2 * one_minus_cos_over_square(n2, n) - n * detail::sin(n)) / (n2 * n2);
+        return quartic_closed_form(n2, n, one_minus_cos_over_square(n2, n), detail::sin(n));
     return power_series(T(1) / T(12), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
@@ -141,25 +148,75 @@ template <class T>
     });
 }
 
-/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
-template <class T>
-[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
-    const T n = norm(r), n2 = squared_angle(r, n);
-    const vec3<T> c = cross(r, v);
-    return v - c * one_minus_cos_over_square(n2, n) + cross(r, c) * n_minus_sin_over_cube(n2, n);
-}
-
 /// (1 - (n/2) cot(n/2)) / n^2 = 1/n^2 - (1 + cos n) / (2 n sin n) = 1/12 + n^2/720 + ..., the
 /// [r]x^2 coefficient of J(r)^-1, as quartic_coefficient / (2 one_minus_cos_over_square): both
 /// free of cancellation. For n < 2 pi.
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n2, T n) noexcept {
-    return quartic_coefficient(n2, n) / (T(2) * one_minus_cos_over_square(n2, n));
+    // a once: the closed form of the quartic coefficient needs it too (a sine saved past n = 2).
+    const T a = one_minus_cos_over_square(n2, n);
+    const T quartic =
+        n2 >= T(4) ? quartic_closed_form(n2, n, a, detail::sin(n)) : quartic_coefficient(n2, n);
+    return quartic / (T(2) * a);
 }
 /// inverse_jacobian_coefficient(n n, n).
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
     return inverse_jacobian_coefficient(n * n, n);
+}
+
+/// The coefficients of Jr = I - a [r]x + b [r]x^2 and of Jr^-1 = I + [r]x / 2 + c [r]x^2.
+template <class T>
+struct right_jacobian_coefficients {
+    T a, b, c;
+};
+
+/// a, b and c (c only when `inverse` is set) at n = |r|, n2 = n n, for a floating-point T, from
+/// half = cos_sinc(|r|^2 / 4, n / 2), the one sincos that from_rotation_vector computes too: a =
+/// sinc^2 / 2 (one_minus_cos_over_square's form), sin n = n sinc cos in the closed forms past
+/// n = 2, the series below.
+template <class T>
+[[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
+    T n2, T n, const cos_and_sinc<T>& half, bool inverse) noexcept {
+    static_assert(std::is_floating_point_v<T>, "a user scalar takes the series in n^2");
+    const T a = half.sinc * half.sinc / T(2);
+    if (n2 >= T(4)) {
+        const T sin_n = n * half.sinc * half.cos;
+        return {a, (n - sin_n) / (n2 * n),
+                inverse ? quartic_closed_form(n2, n, a, sin_n) / (T(2) * a) : T(0)};
+    }
+    return {a, n_minus_sin_over_cube(n2, n),
+            inverse ? quartic_coefficient(n2, n) / (T(2) * a) : T(0)};
+}
+
+/// The half angle's cosine and sinc of the rotation vector r, from_rotation_vector's expression:
+/// so3::exp and the Jacobians share it, bit for bit.
+template <class T>
+[[nodiscard]] constexpr cos_and_sinc<T> half_angle_of(const vec3<T>& r) noexcept {
+    return cos_sinc(squared_norm(r) * T(0.25), norm(r) * T(0.5));
+}
+
+/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1
+/// of so3.hpp, se3.hpp and rotation_spline.hpp takes. A floating-point T takes the half angle
+/// (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
+template <class T>
+[[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
+    const vec3<T>& r, bool inverse) noexcept {
+    const T n = norm(r), n2 = squared_angle(r, n);
+    if constexpr (std::is_floating_point_v<T>) {
+        return right_jacobian_coefficients_of(n2, n, half_angle_of(r), inverse);
+    } else {
+        if (inverse) return {T(0), T(0), inverse_jacobian_coefficient(n2, n)};
+        return {one_minus_cos_over_square(n2, n), n_minus_sin_over_cube(n2, n), T(0)};
+    }
+}
+
+/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const right_jacobian_coefficients<T> k = right_jacobian_coefficients_of(r, false);
+    const vec3<T> c = cross(r, v);
+    return v - c * k.a + cross(r, c) * k.b;
 }
 
 /// n_minus_sin_over_cube, quartic_coefficient and quintic_coefficient at one |r|: a solve that
