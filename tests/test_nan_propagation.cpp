@@ -426,9 +426,10 @@ TEMPLATE_TEST_CASE("the first-use spellings give a visibly bad result for NaN an
     }
 }
 
-TEMPLATE_TEST_CASE("the Lie groups and the geodesic mean give a visibly bad result for NaN and "
-                   "infinite input",
-                   "[nan][lie]", float, double) {
+TEMPLATE_TEST_CASE(
+    "the Lie groups and the geodesic mean give a visibly bad result for NaN and "
+    "infinite input",
+    "[nan][lie]", float, double) {
     using T = TestType;
     for (const T value : {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
                           -std::numeric_limits<T>::infinity()}) {

@@ -132,8 +132,8 @@ TEST_CASE("the estimation families allocate nothing: Lie groups, means, registra
     std::vector<quat::quatd> rotations(n);
     std::vector<quat::dual_quaterniond> motions(n), hand(8), eye(8);
     std::vector<double> weights(n, 1.5);
-    const quat::dual_quaterniond mount =
-        quat::to_dual_quaternion(random.unit_quaternion<double>(), quat::vec3<double>{0.1, 0.2, 0.3});
+    const quat::dual_quaterniond mount = quat::to_dual_quaternion(
+        random.unit_quaternion<double>(), quat::vec3<double>{0.1, 0.2, 0.3});
     for (std::size_t i = 0; i < n; ++i) {
         sources[i] = quat::vec3<double>{double(i % 7), double(i % 11) - 5.0, double(i % 5) * 0.5};
         targets[i] = quat::transform(mount, sources[i]);
@@ -172,7 +172,8 @@ TEST_CASE("the estimation families allocate nothing: Lie groups, means, registra
     sink += quat::geodesic_mean(rotations).w + quat::geodesic_mean(rotations, weights).x;
     sink += quat::try_geodesic_mean(rotations)->y + quat::geodesic_mean(motions).dual.x;
     sink += quat::try_geodesic_mean(motions, weights)->real.w;
-    sink += quat::align_points(targets, sources).rms + quat::align_points(targets, sources, weights).rms;
+    sink += quat::align_points(targets, sources).rms +
+            quat::align_points(targets, sources, weights).rms;
     sink += quat::align_points_with_scale(targets, sources).scale;
     sink += quat::try_align_points(targets, sources)->motion.real.w;
     sink += quat::try_align_points_with_scale(targets, sources, weights)->scale;

@@ -194,7 +194,7 @@ template <class T>
 }
 
 /// exp(t): the motion x -> exp(omega) x + Jl(omega) rho as a unit dual quaternion; *jacobian =
-/// Jr(t). Any finite twist; NaN in gives NaN.
+/// Jr(t). Any finite twist; a NaN or infinite component gives NaN in every component.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> exp(
     const twist<T>& t, quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
@@ -205,7 +205,15 @@ template <class T>
     if (jacobian != nullptr)
         *jacobian = quat::detail::upper_block_triangular(
             jr, quat::detail::se3_q_block(-t.linear, -t.angular));
-    return to_dual_quaternion(rotation, transpose(jr) * t.linear);
+    const dual_quaternion<T> motion = to_dual_quaternion(rotation, transpose(jr) * t.linear);
+    if constexpr (std::is_floating_point_v<T>) {
+        // A bad linear part leaves the rotation finite; half a result would pass for an answer.
+        if (!quat::detail::is_finite(t.linear) || !quat::detail::is_finite(t.angular)) {
+            const T nan = quat::detail::quiet_nan<T>();
+            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        }
+    }
+    return motion;
 }
 
 /// log(X): the twist with |omega| in [0, pi] whose exp is X (X and -X alike); *jacobian =

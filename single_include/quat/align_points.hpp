@@ -437,12 +437,18 @@ template <class T, class Weight>
     return positive || !some_positive;
 }
 
-/// solve_registration over arrays of points (of any precision) and a container of weights.
+/// solve_registration over arrays of points (of any precision) and a container of weights; the NaN
+/// result, unique false, where paired says the containers differ in size.
 template <class T, class Targets, class Sources, class Weight>
 [[nodiscard]] constexpr similarity_alignment<T> register_arrays(const Targets& targets,
                                                                 const Sources& sources,
-                                                                Weight weight,
-                                                                bool scaled) noexcept {
+                                                                Weight weight, bool scaled,
+                                                                bool paired) noexcept {
+    if (!paired) {
+        const T nan = quiet_nan<T>();
+        const quaternion<T> nan_q{nan, nan, nan, nan};
+        return {{{nan_q, nan_q}, nan, false}, nan};
+    }
     const auto* t = detail::data_of(targets);
     const auto* s = detail::data_of(sources);
     const registration<T> r = solve_registration<T>([t](std::size_t i) { return vec3<T>(t[i]); },
@@ -464,10 +470,10 @@ template <class T, class Targets, class Sources, class Weights>
     const similarity_alignment<T> result =
         weights == nullptr
             ? register_arrays<T>(
-                  targets, sources, [](std::size_t) { return T(1); }, scaled)
+                  targets, sources, [](std::size_t) { return T(1); }, scaled, true)
             : register_arrays<T>(
                   targets, sources, [weights](std::size_t i) { return static_cast<T>(weights[i]); },
-                  scaled);
+                  scaled, true);
     if (!detail::is_finite(result.motion.real.w) || !detail::is_finite(result.rms) ||
         !detail::is_finite(largest_magnitude(result.motion.dual)) ||
         !detail::is_finite(result.scale))
@@ -478,8 +484,9 @@ template <class T, class Targets, class Sources, class Weights>
 }  // namespace detail
 
 /// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
-/// unit dual quaternion: never a reflection. targets and sources are equally long (QUAT_ASSERT)
-/// containers of vec3<T> with data() and size(), or C arrays, of corresponding points. The centroids
+/// unit dual quaternion: never a reflection. targets and sources are equally long containers of
+/// vec3<T> with data() and size(), or C arrays, of corresponding points (QUAT_ASSERT; unchecked,
+/// other lengths give the NaN result below, and no element past either container is read). The centroids
 /// are taken in two passes, so points far from the origin keep their spread. unique is false when
 /// the targets, or the sources, less their centroid, all lie within 64 epsilon radians of one line
 /// (collinear points, fewer than three distinct): then the rotation is the one align_vectors
@@ -488,13 +495,15 @@ template <class T, class Targets, class Sources, class Weights>
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
                                                         const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources),
                 "quat::align_points: targets and sources differ in size");
     return detail::register_arrays<T>(
-        targets, sources, [](std::size_t) { return T(1); }, false);
+        targets, sources, [](std::size_t) { return T(1); }, false,
+        detail::same_size(targets, sources));
 }
 
-/// align_points with weights (a container of scalars convertible to T, as long as the points):
+/// align_points with weights (a container of scalars convertible to T, as long as the points;
+/// other lengths as in align_points(targets, sources)):
 /// the motion minimizing sum weights[i] |targets[i] - (R sources[i] + t)|^2, with rms weighted
 /// alike. A zero weight drops its pair; only the weights' ratios count. Precondition: weights >= 0
 /// and finite (QUAT_ASSERT); unchecked, a negative, NaN or infinite weight gives the NaN result.
@@ -504,14 +513,14 @@ template <class Targets, class Sources, class Weights,
 [[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
                                                         const Sources& sources,
                                                         const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources, weights),
                 "quat::align_points: targets, sources and weights differ in size");
     const auto* w = detail::data_of(weights);
     QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
                 "quat::align_points: a weight is negative, NaN or infinite");
     return detail::register_arrays<T>(
-        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, false);
+        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, false,
+        detail::same_size(targets, sources, weights));
 }
 
 /// The similarity x -> scale R x + t minimizing sum |targets[i] - (scale R sources[i] + t)|^2
@@ -522,10 +531,11 @@ template <class Targets, class Sources, class Weights,
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
     const Targets& targets, const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources),
                 "quat::align_points_with_scale: targets and sources differ in size");
     return detail::register_arrays<T>(
-        targets, sources, [](std::size_t) { return T(1); }, true);
+        targets, sources, [](std::size_t) { return T(1); }, true,
+        detail::same_size(targets, sources));
 }
 
 /// align_points_with_scale with weights, as align_points(targets, sources, weights).
@@ -533,14 +543,14 @@ template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr similarity_alignment<T> align_points_with_scale(
     const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources, weights),
                 "quat::align_points_with_scale: targets, sources and weights differ in size");
     const auto* w = detail::data_of(weights);
     QUAT_ASSERT(detail::valid_weights<T>(w, detail::size_of(weights)),
                 "quat::align_points_with_scale: a weight is negative, NaN or infinite");
     return detail::register_arrays<T>(
-        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, true);
+        targets, sources, [w](std::size_t i) { return static_cast<T>(w[i]); }, true,
+        detail::same_size(targets, sources, weights));
 }
 
 /// align_points(targets, sources), or std::nullopt for input it does not register: no points,

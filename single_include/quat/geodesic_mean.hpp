@@ -256,6 +256,13 @@ template <bool checked, class T, class Weight>
             return moved.real.w < T(0) ? -moved : moved;
         });
     outcome.converged = outcome.converged && chordal.valid;
+    // A NaN or infinite translation leaves the rotations' mean finite; a finite rotation beside a
+    // NaN translation would pass for half a result, so the whole mean is NaN, as documented.
+    if (!is_finite(outcome.mean.real) || !is_finite(outcome.mean.dual)) {
+        const T nan = quiet_nan<T>();
+        outcome.mean = {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        outcome.converged = false;
+    }
     T spread = T(0);
     for (std::size_t i = 0; i < count; ++i)
         if (weight(i) > T(0))
@@ -285,18 +292,20 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 }
 
 /// The weighted geodesic mean: M minimizing the sum of weights[i] |log(M^-1 R_i)|^2, as
-/// geodesic_mean(rotations). weights: scalars convertible to T, as many as rotations (QUAT_ASSERT);
-/// a zero weight drops that rotation. Precondition: weights >= 0 (QUAT_ASSERT); NaN when no weight
-/// is positive or a weight is negative, NaN or infinite.
+/// geodesic_mean(rotations). weights: scalars convertible to T, as many as rotations (QUAT_ASSERT;
+/// unchecked, other lengths give NaN); a zero weight drops that rotation. Precondition: weights >= 0
+/// (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or infinite.
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> geodesic_mean(const Rotations& rotations,
                                                     const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
+    QUAT_ASSERT(detail::same_size(rotations, weights),
                 "quat::geodesic_mean: weights and rotations differ in size");
     const auto* w = detail::data_of(weights);
-    return detail::solve_geodesic_mean<false>(detail::data_of(rotations),
-                                              detail::size_of(rotations),
-                                              [w](std::size_t i) { return static_cast<T>(w[i]); })
+    // Unpaired containers are averaged as an empty one: NaN, nothing read.
+    return detail::solve_geodesic_mean<false>(
+               detail::data_of(rotations),
+               detail::same_size(rotations, weights) ? detail::size_of(rotations) : 0,
+               [w](std::size_t i) { return static_cast<T>(w[i]); })
         .mean;
 }
 
@@ -317,7 +326,7 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_geodesic_mean(
     const Rotations& rotations, const Weights& weights) noexcept {
-    if (detail::size_of(weights) != detail::size_of(rotations)) return std::nullopt;
+    if (!detail::same_size(rotations, weights)) return std::nullopt;
     const auto* w = detail::data_of(weights);
     return detail::unique_karcher_mean(
         detail::solve_geodesic_mean<true>(detail::data_of(rotations), detail::size_of(rotations),
@@ -341,17 +350,18 @@ template <class Motions, class T = detail::element_scalar_t<dual_quaternion, Mot
 }
 
 /// The weighted bi-invariant mean: sum weights[i] log(M^-1 X_i) = 0, as geodesic_mean(motions).
-/// weights: scalars convertible to T, as many as motions (QUAT_ASSERT), >= 0 (QUAT_ASSERT); NaN
-/// when no weight is positive or a weight is negative, NaN or infinite.
+/// weights: scalars convertible to T, as many as motions (QUAT_ASSERT; unchecked, other lengths give
+/// NaN), >= 0 (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or infinite.
 template <class Motions, class Weights,
           class T = detail::element_scalar_t<dual_quaternion, Motions>>
 [[nodiscard]] constexpr dual_quaternion<T> geodesic_mean(const Motions& motions,
                                                          const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(motions),
+    QUAT_ASSERT(detail::same_size(motions, weights),
                 "quat::geodesic_mean: weights and motions differ in size");
     const auto* w = detail::data_of(weights);
     return detail::solve_rigid_geodesic_mean<false>(
-               detail::data_of(motions), detail::size_of(motions),
+               detail::data_of(motions),
+               detail::same_size(motions, weights) ? detail::size_of(motions) : 0,
                [w](std::size_t i) { return static_cast<T>(w[i]); })
         .mean;
 }
@@ -372,7 +382,7 @@ template <class Motions, class Weights,
           class T = detail::element_scalar_t<dual_quaternion, Motions>>
 [[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_geodesic_mean(
     const Motions& motions, const Weights& weights) noexcept {
-    if (detail::size_of(weights) != detail::size_of(motions)) return std::nullopt;
+    if (!detail::same_size(motions, weights)) return std::nullopt;
     const auto* w = detail::data_of(weights);
     return detail::unique_karcher_mean(detail::solve_rigid_geodesic_mean<true>(
         detail::data_of(motions), detail::size_of(motions),

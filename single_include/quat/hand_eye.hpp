@@ -40,7 +40,7 @@
 
 namespace quat {
 
-/// The mount X found by hand_eye, and how well the motions agree with it.
+/// The mount X found by hand_eye, and how well the motions agree with it and determine it.
 template <class T>
 struct hand_eye_calibration {
     /// Unit dual quaternion of X: the sensor's frame in the hand's, x_hand = X x_sensor.
@@ -50,10 +50,27 @@ struct hand_eye_calibration {
     /// sqrt(mean |translation(A_i X) - translation(X B_i)|^2): the translations' disagreement, in
     /// the motions' unit of length.
     T translation_rms;
-    /// False when the motions do not determine X: fewer than two turn (angle above 64 epsilon), or
-    /// all turn about parallel axes (within 64 epsilon radians). X's rotation about that axis is
-    /// then free, and so is its translation along it.
+    /// ambiguity < 1/4: the motions turn about axes that spread beyond their noise, which fixes
+    /// X. Otherwise (one turning axis, no turns, or axes that differ only by noise) X's slide along
+    /// the common axis is free, and so is its turn about it unless the translations fix it;
+    /// hand_eye says which solution it returns then.
     bool unique;
+    /// How nearly the motions leave X's rotation free, in (0, 1]: the largest of
+    /// - sqrt(smallest / second-smallest eigenvalue) of the rotation equations' 4 x 4 normal
+    ///   matrix (both raised to a floor of rounding): the noise of the motions' rotations against
+    ///   the spread of their axes, weighted by sin^2 of the half-angles, which more motions do not
+    ///   change;
+    /// - for the hand's motions and for the sensor's: sqrt(rounding floor / (e2 + e3)), at most 1,
+    ///   for e1 >= e2 >= e3 the eigenvalues of sum sin^2(angle_i / 2) axis_i axis_i^T, so that
+    ///   one side turning about one axis gives 1 whatever noise the other side's motions carry.
+    /// Exact motions about several axes sit at rounding's floor, about 4 sqrt(epsilon) / spread
+    /// (median 1.1e-7 in double and 2.5e-3 in float for turns of 0.1 to 2 rad about random axes);
+    /// noisy ones near the noise (a median of 0.7 times the angle noise of each measured pose for
+    /// those turns); one axis or none: 1. unique is ambiguity < 1/4. Treat values approaching 1/4
+    /// as ill-conditioned: the axes then spread hardly beyond the noise, and the rotation about the
+    /// least determined axis is the first to go wrong. NaN where the result is NaN; NaN too when
+    /// not given in a hand-written hand_eye_calibration.
+    T ambiguity = detail::quiet_nan<T>();
 };
 
 /// How hand_eye solves A_i X = X B_i.
@@ -110,31 +127,6 @@ template <class T>
     return is_finite(dq.real) && is_finite(dq.dual) && is_near_unit(dq.real);
 }
 
-/// Whether the motions' rotation axes determine X: at least two turn (angle above 64 epsilon), not
-/// all about parallel axes (within 64 epsilon radians).
-template <class T>
-struct turning_axes {
-    std::size_t turning = 0;
-    vec3<T> longest{T(0), T(0), T(0)};  // the unit axis of the largest sin(angle / 2) so far
-    T longest_size = T(0);
-    bool parallel = true;
-
-    constexpr void add(const quaternion<T>& rotation) noexcept {
-        const vec3<T> axis{rotation.x, rotation.y, rotation.z};
-        const T size = norm(axis);
-        if (!(size > T(64) * epsilon<T>())) return;
-        ++turning;
-        const vec3<T> unit = axis / size;
-        if (longest_size > T(0) && norm(cross(unit, longest)) > T(64) * epsilon<T>())
-            parallel = false;
-        if (size > longest_size) {
-            longest = unit;
-            longest_size = size;
-        }
-    }
-    [[nodiscard]] constexpr bool determine() const noexcept { return turning >= 2 && !parallel; }
-};
-
 /// Motion i's pair as both methods take it: b's sign chosen so that its screw parameters equal a's
 /// (a.real.w = b.real.w, the angle, and a.dual.w = b.dual.w, the slide), which Daniilidis's
 /// equations assume; the dual parts (the translations) divided by p.
@@ -166,6 +158,87 @@ constexpr T scale_to_unit(T (&m)[N][N]) noexcept {
         for (std::size_t x = 0; x < N; ++x)
             for (std::size_t y = 0; y < N; ++y) m[x][y] = m[x][y] / largest;
     return largest;
+}
+
+/// The normal matrix sum R_i^T R_i of the rotation rows (daniilidis_block of the real parts),
+/// decomposed; its eigenvalues in the matrix's own units (not scaled).
+template <class T, class A, class B>
+[[nodiscard]] constexpr symmetric_eigen4<T> rotation_rows_eigen(const A* a_motions,
+                                                                const B* b_motions,
+                                                                std::size_t count, T p) noexcept {
+    T m[4][4] = {};
+    for (std::size_t i = 0; i < count; ++i) {
+        const motion_pair<T> pair = matched_pair(a_motions[i], b_motions[i], p);
+        T r[3][4] = {};
+        daniilidis_block(pair.a.real, pair.b.real, r);
+        for (int x = 0; x < 4; ++x)
+            for (int y = 0; y < 4; ++y)
+                for (int k = 0; k < 3; ++k) m[x][y] += r[k][x] * r[k][y];
+    }
+    const T largest = scale_to_unit(m);
+    symmetric_eigen4<T> eigen = symmetric_eigen(m);
+    if (largest > T(0))
+        for (T& value : eigen.values) value = value * largest;
+    return eigen;
+}
+
+/// The spread of one side's turning axes: sqrt(floor / (e2 + e3)), at most 1, for e1 >= e2 >= e3
+/// the eigenvalues of W = sum v_i v_i^T over its rotations' vector parts v_i = sin(angle_i / 2)
+/// axis_i. e2 + e3 is what the turns about axes other than the main one add; the floor is the
+/// rounding of the v_i (a few epsilon each, absolute, whatever the angle) and of forming and
+/// decomposing W. So exact motions about one axis give 1 however small their turns, where the
+/// axes' own directions are as uncertain as epsilon / angle. turns: e1 above the floor.
+template <class T>
+struct axis_spread {
+    T ratio;
+    bool turns;
+};
+
+template <class T>
+[[nodiscard]] constexpr axis_spread<T> spread_of(T (&w)[3][3], T motions) noexcept {
+    const T largest = scale_to_unit(w);
+    const symmetric_eigen_n<3, T> e = jacobi_eigen<3>(w);
+    const T eps = epsilon<T>();
+    const T first = e.values[0] * largest, rest = (e.values[1] + e.values[2]) * largest;
+    const T floor = T(16) * eps * first + T(64) * motions * eps * eps;
+    return {sqrt(floor / max(rest, floor)), first > floor};
+}
+
+/// hand_eye_calibration::ambiguity, and how many directions of X's rotation the rotation rows
+/// fix (3 where X is unique). Of the rows: sqrt(noise / second-smallest eigenvalue), the noise
+/// their smallest eigenvalue or a floor of rounding (forming and decomposing the matrix, and the
+/// motions' components themselves); the fixed directions are the eigenvectors whose eigenvalues
+/// exceed noise / limit^4: the free solution inverts the rows there, and a direction only a few
+/// times above the noise would carry that noise into X's translation. Then at least the spread
+/// of either side's axes: where one side turns about one axis exactly, noise on the other can
+/// make the rows look determined.
+template <class T>
+struct rotation_fit {
+    T ambiguity;
+    std::size_t fixed;
+};
+
+/// hand_eye_calibration::unique's threshold on the ambiguity.
+template <class T>
+[[nodiscard]] constexpr T ambiguity_limit() noexcept {
+    return T(1) / T(4);
+}
+
+template <class T>
+[[nodiscard]] constexpr rotation_fit<T> fit_of(const symmetric_eigen4<T>& rows,
+                                               const axis_spread<T>& a, const axis_spread<T>& b,
+                                               T motions) noexcept {
+    const T eps = epsilon<T>();
+    const T floor = T(16) * eps * rows.values[0] + T(64) * motions * eps * eps;
+    const T noise = max(rows.values[3], floor);
+    const T limit = ambiguity_limit<T>();
+    rotation_fit<T> fit{max(sqrt(noise / max(rows.values[2], floor)), max(a.ratio, b.ratio)), 0};
+    while (fit.fixed < 3 && rows.values[fit.fixed] * limit * limit * limit * limit > noise)
+        ++fit.fixed;
+    if (!(fit.ambiguity < limit) && fit.fixed > 2) fit.fixed = 2;
+    // A side that does not turn leaves the rotation to the translations, t_Ai = R_X t_Bi.
+    if (!a.turns || !b.turns) fit.fixed = 0;
+    return fit;
 }
 
 /// Daniilidis's joint solution, with translations divided by p. M = sum T_i^T T_i for the 6 x 8
@@ -232,28 +305,17 @@ template <class T, class A, class B>
     return best;
 }
 
-/// The rotation first, from the rotation rows alone (the eigenvector of the smallest eigenvalue of
-/// sum R_i^T R_i), then the translation t of X by linear least squares given it:
+/// The rotation first, from the rotation rows alone (rows: rotation_rows_eigen; the eigenvector
+/// of its smallest eigenvalue), then the translation t of X by linear least squares given it:
 /// (R_Ai - I) t = R_X t_Bi - t_Ai for every i (Tsai and Lenz's second step, IEEE Trans. Robotics
 /// and Automation 5(3), 1989), solved through the eigen-decomposition of the 3 x 3 normal matrix,
 /// its eigenvalues below 64 epsilon of the largest left out (rounding where the axes are nearly
 /// parallel). Translations divided by p; for motions that determine X.
 template <class T, class A, class B>
-[[nodiscard]] constexpr dual_quaternion<T> rotation_first_mount(const A* a_motions,
-                                                                const B* b_motions,
-                                                                std::size_t count, T p) noexcept {
-    T m[4][4] = {};
-    for (std::size_t i = 0; i < count; ++i) {
-        const motion_pair<T> pair = matched_pair(a_motions[i], b_motions[i], p);
-        T r[3][4] = {};
-        daniilidis_block(pair.a.real, pair.b.real, r);
-        for (int x = 0; x < 4; ++x)
-            for (int y = 0; y < 4; ++y)
-                for (int k = 0; k < 3; ++k) m[x][y] += r[k][x] * r[k][y];
-    }
-    scale_to_unit(m);
-    const symmetric_eigen4<T> eigen = symmetric_eigen(m);
-    const quaternion<T> q = normalize(eigen.vectors[3]);
+[[nodiscard]] constexpr dual_quaternion<T> rotation_first_mount(
+    const A* a_motions, const B* b_motions, std::size_t count, T p,
+    const symmetric_eigen4<T>& rows) noexcept {
+    const quaternion<T> q = normalize(rows.vectors[3]);
     const rotation_matrix<T> x_rotation = to_matrix(q);
 
     T normal[3][3] = {}, rhs[3] = {};
@@ -281,6 +343,69 @@ template <class T, class A, class B>
     return to_dual_quaternion(q, t);
 }
 
+/// X where the rotation rows leave its rotation free in 4 - fixed directions (the eigenvectors of
+/// rows' smallest eigenvalues, the space N): from Daniilidis's full system T (q, q') = 0, q' is
+/// eliminated by least squares over the directions the rotation rows fix, q' = -M^+ G q with
+/// M = sum R_i^T R_i inverted there only and G = sum R_i^T D_i; then q in N is the unit vector of
+/// least remaining residual q^T (H - G^T M^+ G) q, H = sum D_i^T D_i. So the translations settle
+/// the rotation about a common axis where they can (pure translations: t_Ai = R_X t_Bi, the
+/// whole rotation), and q', having no part in N, holds the least translation: none along the
+/// common axis, none at all without turns. Translations divided by p.
+template <class T, class A, class B>
+[[nodiscard]] constexpr dual_quaternion<T> free_mount(const A* a_motions, const B* b_motions,
+                                                      std::size_t count, T p,
+                                                      const symmetric_eigen4<T>& rows,
+                                                      std::size_t fixed) noexcept {
+    T g[4][4] = {}, h[4][4] = {};
+    for (std::size_t i = 0; i < count; ++i) {
+        const motion_pair<T> pair = matched_pair(a_motions[i], b_motions[i], p);
+        T r[3][4] = {}, d[3][4] = {};
+        daniilidis_block(pair.a.real, pair.b.real, r);
+        daniilidis_block(pair.a.dual, pair.b.dual, d);
+        for (int x = 0; x < 4; ++x)
+            for (int y = 0; y < 4; ++y)
+                for (int k = 0; k < 3; ++k) {
+                    g[x][y] += r[k][x] * d[k][y];
+                    h[x][y] += d[k][x] * d[k][y];
+                }
+    }
+    // w_k = G^T v_k over the fixed directions v_k, so that G^T M^+ G = sum w_k w_k^T / lambda_k.
+    quaternion<T> w[3] = {};
+    for (std::size_t k = 0; k < fixed; ++k) {
+        const quaternion<T>& u = rows.vectors[k];
+        const T v[4] = {u.w, u.x, u.y, u.z};
+        T column[4] = {};
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) column[y] += g[x][y] * v[x];
+        w[k] = {column[0], column[1], column[2], column[3]};
+    }
+    const auto reduced = [&](const quaternion<T>& u, const quaternion<T>& v) {
+        const T uu[4] = {u.w, u.x, u.y, u.z}, vv[4] = {v.w, v.x, v.y, v.z};
+        T sum(0);
+        for (int x = 0; x < 4; ++x)
+            for (int y = 0; y < 4; ++y) sum += uu[x] * h[x][y] * vv[y];
+        for (std::size_t k = 0; k < fixed; ++k) sum -= dot(w[k], u) * dot(w[k], v) / rows.values[k];
+        return sum;
+    };
+    // The reduced matrix in N's coordinates; the unused coordinates get an eigenvalue above any
+    // of N's, so that the smallest eigenvector lies in N.
+    const std::size_t free = 4 - fixed;
+    T c[4][4] = {};
+    for (std::size_t x = 0; x < free; ++x)
+        for (std::size_t y = 0; y < free; ++y)
+            c[x][y] = reduced(rows.vectors[fixed + x], rows.vectors[fixed + y]);
+    scale_to_unit(c);
+    for (std::size_t x = free; x < 4; ++x) c[x][x] = T(8);
+    const symmetric_eigen_n<4, T> e = jacobi_eigen<4>(c);
+    quaternion<T> q{T(0), T(0), T(0), T(0)};
+    for (std::size_t x = 0; x < free; ++x) q += rows.vectors[fixed + x] * e.vectors[3][x];
+    q = normalize(q);
+    quaternion<T> dual{T(0), T(0), T(0), T(0)};
+    for (std::size_t k = 0; k < fixed; ++k)
+        dual -= rows.vectors[k] * (dot(w[k], q) / rows.values[k]);
+    return {q, dual};
+}
+
 template <class T, class A, class B>
 [[nodiscard]] constexpr hand_eye_calibration<T> solve_hand_eye(const A* a_motions,
                                                                const B* b_motions,
@@ -288,24 +413,36 @@ template <class T, class A, class B>
                                                                hand_eye_method method) noexcept {
     const T nan = quiet_nan<T>();
     const quaternion<T> nan_q{nan, nan, nan, nan};
-    if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false};
+    if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false, T(1)};
     // The translations are divided by the power of two of the longest, so that the dual rows
     // weigh like the rotation rows (Daniilidis's matrix mixes both) and nothing overflows.
-    T longest(0);
-    turning_axes<T> axes;
+    T longest(0), motions(0), wa[3][3] = {}, wb[3][3] = {};
     for (std::size_t i = 0; i < count; ++i) {
         const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
         if (!is_finite(a.real) || !is_finite(a.dual) || !is_finite(b.real) || !is_finite(b.dual))
-            return {{nan_q, nan_q}, nan, nan, false};
+            return {{nan_q, nan_q}, nan, nan, false, nan};
         longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
-        axes.add(a.real);
+        motions += T(1);
+        const T va[3] = {a.real.x, a.real.y, a.real.z}, vb[3] = {b.real.x, b.real.y, b.real.z};
+        for (int x = 0; x < 3; ++x)
+            for (int y = 0; y < 3; ++y) {
+                wa[x][y] += va[x] * va[y];
+                wb[x][y] += vb[x] * vb[y];
+            }
     }
     const T p = binade_or_one(longest);
-    // Where the motions leave X free, the rotation rows alone would pick any rotation about the
-    // common axis, which the translations may not accept: Daniilidis's solution meets both.
-    dual_quaternion<T> best = method == hand_eye_method::rotation_first && axes.determine()
-                                  ? rotation_first_mount(a_motions, b_motions, count, p)
+    const symmetric_eigen4<T> rows = rotation_rows_eigen(a_motions, b_motions, count, p);
+    const rotation_fit<T> fit =
+        fit_of(rows, spread_of(wa, motions), spread_of(wb, motions), motions);
+    const bool unique = fit.ambiguity < ambiguity_limit<T>();
+    dual_quaternion<T> best = !unique ? free_mount(a_motions, b_motions, count, p, rows, fit.fixed)
+                              : method == hand_eye_method::rotation_first
+                                  ? rotation_first_mount(a_motions, b_motions, count, p, rows)
                                   : daniilidis_mount(a_motions, b_motions, count, p);
+    // Daniilidis's two smallest eigenvectors hold no rotation only where rounding hides a third
+    // null direction; the free solution is then the one left.
+    if (!(squared_norm(best.real) > T(0)))
+        best = free_mount(a_motions, b_motions, count, p, rows, fit.fixed);
     best.dual = best.dual * p;
     if (best.real.w < T(0)) best = -best;
 
@@ -320,7 +457,7 @@ template <class T, class A, class B>
         angles += angle * angle;
         offsets += dot(offset, offset);
     }
-    return {best, sqrt(angles / n), sqrt(offsets / n) * p, axes.determine()};
+    return {best, sqrt(angles / n), sqrt(offsets / n) * p, unique, fit.ambiguity};
 }
 
 }  // namespace detail
@@ -333,11 +470,22 @@ template <class T, class A, class B>
 /// (a fixed target in the sensor's frame), pair j -> k gives A = H_k^-1 H_j and B = S_k S_j^-1;
 /// X then maps sensor coordinates into hand coordinates. The sign of each B is chosen to match its
 /// A's screw (equal scalar parts), so either sign may be given. The robot-world form AX = YB is not
-/// solved here. unique is false when fewer than two motions turn or all turn about parallel axes
-/// (then X's rotation about that axis and its translation along it are undetermined, and one of the
-/// solutions is returned). No motions: the identity, residuals 0, not unique. A NaN or infinite
-/// component gives NaN in every component; try_hand_eye checks instead. Precondition: unit real
-/// parts (QUAT_ASSERT).
+/// solved here.
+///
+/// unique is false where the motions do not fix X (hand_eye_calibration::ambiguity, reported, at
+/// 1/4 or more): the hand turning about one axis, or not at all, or about axes that differ only by
+/// noise. Then both methods return the same solution: among the rotations the rotation equations
+/// leave free (a turn about the common axis; any rotation where nothing turns), the one that fits
+/// the translations best (for pure translations, t_Ai = R_X t_Bi), and of the translations that
+/// fit it, the least: no slide along the common axis, and none at all without turns. Exact
+/// motions about one axis give that solution to rounding. Noise on the hand's motions as well can,
+/// with few motions, spread one axis into axes that look determined: use more motions, and turns
+/// well above the noise.
+///
+/// No motions: the identity, residuals 0, ambiguity 1, not unique. Lists of different sizes (a
+/// precondition, QUAT_ASSERT) or a NaN or infinite component give NaN in every component,
+/// residuals and ambiguity, and unique false; try_hand_eye checks instead. Finite motions never
+/// give NaN. Precondition: unit real parts (QUAT_ASSERT).
 template <class MotionsA, class MotionsB,
           class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
 [[nodiscard]] constexpr hand_eye_calibration<T> hand_eye(
@@ -347,9 +495,12 @@ template <class MotionsA, class MotionsB,
                 "quat::hand_eye: the two lists of motions differ in size");
     const auto* a = detail::data_of(motions_a);
     const auto* b = detail::data_of(motions_b);
-    const std::size_t count = detail::size_of(motions_a) < detail::size_of(motions_b)
-                                  ? detail::size_of(motions_a)
-                                  : detail::size_of(motions_b);
+    const std::size_t count = detail::size_of(motions_a);
+    if (detail::size_of(motions_b) != count) {
+        const T nan = detail::quiet_nan<T>();
+        const quaternion<T> nan_q{nan, nan, nan, nan};
+        return {{nan_q, nan_q}, nan, nan, false, nan};
+    }
     for (std::size_t i = 0; i < count; ++i)  // an empty loop where QUAT_ASSERT compiles to nothing
         QUAT_ASSERT(detail::is_near_unit(dual_quaternion<T>(a[i]).real) &&
                         detail::is_near_unit(dual_quaternion<T>(b[i]).real),
@@ -357,10 +508,11 @@ template <class MotionsA, class MotionsB,
     return detail::solve_hand_eye<T>(a, b, count, method);
 }
 
-/// hand_eye(motions_a, motions_b, method), or std::nullopt for motions it cannot calibrate from: lists of
-/// different sizes, fewer than two motions, a NaN or infinite component, or a real part that is not
-/// a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined are not bad
-/// input: they give unique = false. Never asserts.
+/// hand_eye(motions_a, motions_b, method), or std::nullopt for motions it cannot calibrate from:
+/// lists of different sizes, fewer than two motions, a NaN or infinite component, or a real part
+/// that is not a unit quaternion (|q|^2 not within 1/4096 of 1). Motions that leave X undetermined
+/// (pure translations, one turning axis) are not bad input: they give hand_eye's solution with
+/// unique = false. Never asserts.
 template <class MotionsA, class MotionsB,
           class T = detail::element_scalar_t<dual_quaternion, MotionsA>>
 [[nodiscard]] constexpr std::optional<hand_eye_calibration<T>> try_hand_eye(

@@ -44,8 +44,9 @@
 //   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
 //   point_alignment{dual_quaternion{...}, 0.25, true}          motion, rms, unique
 //   similarity_alignment{point_alignment{...}, 2}              scale
-//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true} mount, rotation_rms, translation_rms,
-//                                                             unique
+//   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true, 0.01}
+//                                                             mount, rotation_rms, translation_rms,
+//                                                             unique, ambiguity
 // (the last three where align_points.hpp or hand_eye.hpp is included too)
 //   zyx   intrinsic                                           sequence and frame: their names
 //
@@ -79,9 +80,10 @@
 // ---- begin quat/detail/print_layout.hpp ----
 // The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
 // (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
-// for the fixed text and p.value(component) for each scalar; format_printer, value_formatter and
-// name_formatter adapt the layout to std::format and fmt, whose formatters derive from them. No
-// <ostream> and no <format> here: those are the printers' own.
+// for the fixed text and p.value(component) for each scalar; format_printer adapts the layout to
+// std::format and fmt, whose formatters derive from value_formatter and name_formatter (the end of
+// this file says why those two are not keyed). No <ostream> and no <format> here: those are the
+// printers' own.
 #ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 #define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 
@@ -271,7 +273,9 @@ void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
     p.value(c.rotation_rms);
     p.text(", ");
     p.value(c.translation_rms);
-    p.text(c.unique ? ", true}" : ", false}");
+    p.text(c.unique ? ", true, " : ", false, ");
+    p.value(c.ambiguity);
+    p.text("}");
 }
 
 template <class Printer, class T>
@@ -332,48 +336,83 @@ struct format_printer {
     }
 };
 
-// The formatter of a quat value type for std::format and fmt: ComponentFormatter, the scalar's own
-// formatter, parses the spec once and formats every component with it.
-template <class Value, class ComponentFormatter>
-struct value_formatter {
-    ComponentFormatter component_formatter;
+// The work of value_formatter::format (below): the layout of value, each component through
+// component_formatter, which parsed the spec.
+template <class ComponentFormatter, class Value, class Context>
+auto format_value(const ComponentFormatter& component_formatter, const Value& value,
+                  Context& context) {
+    format_printer<ComponentFormatter, Context> printer{component_formatter, context};
+    write_layout(printer, value);
+    return context.out();
+}
 
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return component_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(const Value& value, FormatContext& context) const {
-        format_printer<ComponentFormatter, FormatContext> printer{component_formatter, context};
-        write_layout(printer, value);
-        return context.out();
-    }
-};
-
-// The formatter of sequence and frame: their names through StringFormatter, the formatter of
-// std::basic_string_view<CharT>, so string specs such as width and fill apply.
-template <class Enum, class StringFormatter>
-struct name_formatter {
-    StringFormatter string_formatter;
-
-    template <class ParseContext>
-    constexpr auto parse(ParseContext& context) {
-        return string_formatter.parse(context);
-    }
-    template <class FormatContext>
-    auto format(Enum value, FormatContext& context) const {
-        using CharT = typename FormatContext::char_type;
-        constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
-        const std::string_view ascii = spelling(value);
-        const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
-        CharT name[longest]{};
-        for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
-        return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
-    }
-};
+// The work of name_formatter::format (below): the name of a sequence or frame through
+// string_formatter, the formatter of std::basic_string_view<CharT>, so string specs such as width
+// and fill apply.
+template <class StringFormatter, class Enum, class Context>
+auto format_name(const StringFormatter& string_formatter, Enum value, Context& context) {
+    using CharT = typename Context::char_type;
+    constexpr std::size_t longest = 16;  // "intrinsic" and "extrinsic" have 9 letters
+    const std::string_view ascii = spelling(value);
+    const std::size_t length = ascii.size() < longest ? ascii.size() : longest;
+    CharT name[longest]{};
+    for (std::size_t i = 0; i < length; ++i) name[i] = static_cast<CharT>(ascii[i]);
+    return string_formatter.format(std::basic_string_view<CharT>(name, length), context);
+}
 
 }  // namespace detail
 }  // inline namespace isa_...
+
+// The bases of the std::formatter and fmt::formatter specializations for quat's types (io.hpp,
+// interop/fmt.hpp). Those specializations cannot be keyed: std::formatter<vec3<double>, char> is
+// named by the standard's template and an unkeyed value type, so it is one class in the whole
+// program whichever -m flags a unit is built with. Derived from a keyed class, it would have a
+// different base in each instruction set, one definition broken by construction. So the bases live
+// outside the key too and, like the value types' own members, their member functions are always
+// inlined: no copy of them is emitted for the linker to share between units, and what each unit
+// inlines only calls its own key's detail::format_value or detail::format_name. What the key cannot
+// cover, as for std::vector<vec3<float>>: the functions std::format and fmt instantiate for a quat
+// type (fmt's format_custom_arg, into which these calls are inlined) are theirs, unkeyed, and the
+// linker keeps one copy of each for the whole program.
+
+/// The formatter of a quat value type for std::format and fmt, the base of their specializations:
+/// ComponentFormatter, the scalar's own formatter, parses the spec once and formats every
+/// component with it. Users need not name it.
+template <class Value, class ComponentFormatter>
+struct value_formatter {
+    ComponentFormatter component_formatter;  ///< The scalar's formatter, holding the parsed spec.
+
+    /// Parses the spec as the scalar's formatter does ("{:.3f}", "{:e}", "{:>8}").
+    template <class ParseContext>
+    [[gnu::always_inline]] constexpr auto parse(ParseContext& context) {
+        return component_formatter.parse(context);
+    }
+    /// Writes value's layout (io.hpp), each component with the parsed spec.
+    template <class FormatContext>
+    [[gnu::always_inline]] auto format(const Value& value, FormatContext& context) const {
+        return detail::format_value(component_formatter, value, context);
+    }
+};
+
+/// The formatter of sequence and frame for std::format and fmt, the base of their
+/// specializations: the name through StringFormatter, the formatter of std::basic_string_view of
+/// the context's characters. Users need not name it.
+template <class Enum, class StringFormatter>
+struct name_formatter {
+    StringFormatter string_formatter;  ///< The string's formatter, holding the parsed spec.
+
+    /// Parses the spec as a string's (width, fill, alignment).
+    template <class ParseContext>
+    [[gnu::always_inline]] constexpr auto parse(ParseContext& context) {
+        return string_formatter.parse(context);
+    }
+    /// Writes the name, e.g. zyx or intrinsic, with the parsed spec.
+    template <class FormatContext>
+    [[gnu::always_inline]] auto format(Enum value, FormatContext& context) const {
+        return detail::format_name(string_formatter, value, context);
+    }
+};
+
 }  // namespace quat
 
 #endif  // QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
@@ -535,7 +574,8 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, a);
 }
 
-/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}
+/// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
+/// ambiguity}
 /// (hand_eye.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
@@ -580,105 +620,106 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
 #if defined(__cpp_lib_format) && __has_include(<format>)
 
 // std::format support: the format above, each component formatted by std::formatter<T, CharT> with
-// the spec given ("{}" is the shortest text that reads back exactly).
+// the spec given ("{}" is the shortest text that reads back exactly). Each specialization derives
+// from quat::value_formatter or quat::name_formatter, which are not keyed by instruction set:
+// detail/print_layout.hpp says why.
 
 namespace std {
 
 /// Formats vec3{x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::vec3<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::vec3<T>, std::formatter<T, CharT>> {};
 
 /// Formats quaternion{w, x, y, z}; the spec is T's and applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::quaternion<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::quaternion<T>, std::formatter<T, CharT>> {};
 
 /// Formats rotation_matrix{{m00, m01, m02}, ...} by rows; the spec applies to each element.
 template <class T, class CharT>
 struct formatter<::quat::rotation_matrix<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::rotation_matrix<T>, std::formatter<T, CharT>> {};
 
 /// Formats matrix{{m00, m01, ...}, ...} by rows; the spec applies to each element.
 template <class T, int R, int C, class CharT>
 struct formatter<::quat::matrix<T, R, C>, CharT>
-    : ::quat::detail::value_formatter<::quat::matrix<T, R, C>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::matrix<T, R, C>, std::formatter<T, CharT>> {};
 
 /// Formats axis_angle{vec3{x, y, z}, angle}; the spec applies to each component and the angle.
 template <class T, class CharT>
 struct formatter<::quat::axis_angle<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::axis_angle<T>, std::formatter<T, CharT>> {};
 
 /// Formats euler<S, F>{e[0], e[1], e[2]}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
 struct formatter<::quat::euler<T, S, F>, CharT>
-    : ::quat::detail::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::euler<T, S, F>, std::formatter<T, CharT>> {};
 
 /// Formats euler_extraction{euler<S, F>{...}, gimbal_lock}; the spec applies to each angle.
 template <class T, ::quat::sequence S, ::quat::frame F, class CharT>
 struct formatter<::quat::euler_extraction<T, S, F>, CharT>
-    : ::quat::detail::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {
-};
+    : ::quat::value_formatter<::quat::euler_extraction<T, S, F>, std::formatter<T, CharT>> {};
 
 /// Formats alignment{quaternion{...}, rssd, unique}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::alignment_with_sensitivity<T>,
-                                      std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::alignment_with_sensitivity<T>, std::formatter<T, CharT>> {};
 
 /// Formats point_alignment{dual_quaternion{...}, rms, unique}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::point_alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::point_alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats similarity_alignment{point_alignment{...}, scale}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::similarity_alignment<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique}; the
+/// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
+/// ambiguity}; the
 /// spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::swing_twist_parts<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::swing_twist_parts<T>, std::formatter<T, CharT>> {};
 
 /// Formats dual_quaternion{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>
 struct formatter<::quat::dual_quaternion<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::dual_quaternion<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::dual_quaternion<T>, std::formatter<T, CharT>> {};
 
 /// Formats homogeneous_matrix{{m00, m01, m02, m03}, ...} by rows; the spec applies to each element.
 template <class T, class CharT>
 struct formatter<::quat::homogeneous_matrix<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::homogeneous_matrix<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::homogeneous_matrix<T>, std::formatter<T, CharT>> {};
 
 /// Formats screw{vec3{...}, vec3{...}, angle, displacement}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::screw<T>, CharT>
-    : ::quat::detail::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
+    : ::quat::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
 struct formatter<::quat::sequence, CharT>
-    : ::quat::detail::name_formatter<::quat::sequence,
-                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+    : ::quat::name_formatter<::quat::sequence,
+                             std::formatter<std::basic_string_view<CharT>, CharT>> {};
 
 /// Formats the frame's name; the spec is a string's (width, fill, alignment).
 template <class CharT>
 struct formatter<::quat::frame, CharT>
-    : ::quat::detail::name_formatter<::quat::frame,
-                                     std::formatter<std::basic_string_view<CharT>, CharT>> {};
+    : ::quat::name_formatter<::quat::frame, std::formatter<std::basic_string_view<CharT>, CharT>> {
+};
 
 }  // namespace std
 

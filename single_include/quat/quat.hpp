@@ -1611,7 +1611,8 @@ template <class T>
     const vec3<T> u{p.x, p.y, p.z};
     const T s = norm(u);
     if (s == T(0) && p.w > T(0)) return {{T(1), T(0), T(0)}, T(0)};
-    return {u / s, T(2) * detail::atan2(s, p.w)};
+    // normalize, not u / s: for subnormal x, y, z, s keeps only a few bits and u / s is not unit.
+    return {normalize(u), T(2) * detail::atan2(s, p.w)};
 }
 
 /// The angle in [0, pi] of the rotation q: to_axis_angle(q).angle, q and -q alike, 0 for the
@@ -1657,10 +1658,21 @@ template <class T>
 }
 
 /// Exponential map: the unit quaternion of the rotation by |v| radians about v / |v|.
-/// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle.
+/// Accurate from the zero vector (identity, via a series, no 0/0) up to any angle, for every finite
+/// v: where |v| exceeds max() the half angle |v| / 2 does not, and gives the unit quaternion (an
+/// angle that large is known only to within its rounding, many turns, as already from about 1e16
+/// rad in double). NaN or infinite components give NaN.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_rotation_vector(
     const vec3<T>& rotation_vector) noexcept {
+    if (!(squared_norm(rotation_vector) <= detail::largest<T>())) {
+        // |v|^2 overflowed (or is NaN): the half angle from v / 2, whose norm is at most
+        // sqrt(3) max() / 2, and the axis from normalize, as sin(h) / h falls below the normal
+        // range (losing digits) as h nears max().
+        const T half_angle = norm(rotation_vector * T(0.5)), s = detail::sin(half_angle);
+        const vec3<T> axis = normalize(rotation_vector);
+        return {detail::cos(half_angle), axis.x * s, axis.y * s, axis.z * s};
+    }
     // The half angle's square from the squared norm, not from norm, so that a dual-number scalar
     // gets finite derivatives at the zero vector (norm's square root is only read past the series).
     const detail::cos_and_sinc<T> half =
@@ -2152,6 +2164,20 @@ template <class T, std::size_t N>
     return N;
 }
 
+// Paired containers (docs/conventions.md, "Containers that must match"): whether every container
+// holds as many elements as the first, which the fits and keyframe paths require, and the length
+// all of them hold, the most a batch's container form may read or write.
+template <class First, class... Rest>
+[[nodiscard]] constexpr bool same_size(const First& first, const Rest&... rest) noexcept {
+    return ((detail::size_of(rest) == detail::size_of(first)) && ...);
+}
+template <class First, class... Rest>
+[[nodiscard]] constexpr std::size_t common_size(const First& first, const Rest&... rest) noexcept {
+    std::size_t common = detail::size_of(first);
+    ((common = detail::size_of(rest) < common ? detail::size_of(rest) : common), ...);
+    return common;
+}
+
 // The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
 // way quat's container forms name the scalar type of their elements. Not a type for a container of
 // anything else, so a container form whose default template argument uses it drops out of overload
@@ -2206,25 +2232,26 @@ struct matrix {
     T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
 
     /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
-    [[nodiscard]] constexpr T& operator()(int row, int col) noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
         QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
         return elements[row][col];
     }
     /// Element at (row, col), read-only.
-    [[nodiscard]] constexpr const T& operator()(int row, int col) const noexcept {
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
+                                                                       int col) const noexcept {
         QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
         return elements[row][col];
     }
 
     /// The matrix of zeros.
-    [[nodiscard]] static constexpr matrix zero() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix zero() noexcept {
         matrix m{};
         for (int i = 0; i < Rows; ++i)
             for (int j = 0; j < Cols; ++j) m.elements[i][j] = T(0);
         return m;
     }
     /// The identity (ones on the diagonal, zeros elsewhere; square or not).
-    [[nodiscard]] static constexpr matrix identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix identity() noexcept {
         matrix m = zero();
         for (int i = 0; i < (Rows < Cols ? Rows : Cols); ++i) m.elements[i][i] = T(1);
         return m;
@@ -3304,8 +3331,8 @@ inline namespace isa_generic {
 
 /// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
 /// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
-/// reflection. targets and sources are equally long (QUAT_ASSERT) containers of vec3<T> with data()
-/// and size(), or C arrays; the vectors need not be unit, and longer ones count more, as in scipy.
+/// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
+/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
 /// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
 /// two first). unique is false when other rotations fit as well: when the sources, or the targets,
 /// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
@@ -3317,14 +3344,16 @@ inline namespace isa_generic {
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
                                                    const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources),
                 "quat::align_vectors: targets and sources differ in size");
+    if (!detail::same_size(targets, sources)) return detail::nan_wahba<T>(false).result;
     return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
                                   detail::size_of(sources), [](std::size_t) { return T(1); })
         .result;
 }
 
-/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors):
+/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors;
+/// other lengths as in align_vectors(targets, sources)):
 /// R minimizes sum weights[i] |targets[i] - R sources[i]|^2, and rssd is weighted alike. A zero
 /// weight drops its pair; weights may spread over many orders of magnitude (the rotation is
 /// polished by Newton steps where they leave Davenport's eigenvector coarse). One infinite weight
@@ -3338,9 +3367,9 @@ template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
                                                    const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(targets) == detail::size_of(sources) &&
-                    detail::size_of(weights) == detail::size_of(sources),
+    QUAT_ASSERT(detail::same_size(targets, sources, weights),
                 "quat::align_vectors: targets, sources and weights differ in size");
+    if (!detail::same_size(targets, sources, weights)) return detail::nan_wahba<T>(false).result;
     const auto* w = detail::data_of(weights);
     const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
         detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
@@ -3404,19 +3433,21 @@ template <class Targets, class Sources, class Weights,
 /// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
 /// mean of the targets' error variances (weights inversely proportional to them), it is the
 /// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
-/// elements when a weight is infinite (scipy raises).
+/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
 template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
     const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
     QUAT_ASSERT(
-        detail::size_of(targets) == detail::size_of(sources) &&
-            detail::size_of(weights) == detail::size_of(sources),
+        detail::same_size(targets, sources, weights),
         "quat::align_vectors_with_sensitivity: targets, sources and weights differ in size");
     const auto* w = detail::data_of(weights);
-    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
-        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
-        [w](std::size_t i) { return static_cast<T>(w[i]); });
+    const detail::wahba_solution<T> solution =
+        detail::same_size(targets, sources, weights)
+            ? detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                     detail::size_of(sources),
+                                     [w](std::size_t i) { return static_cast<T>(w[i]); })
+            : detail::nan_wahba<T>(false);
     QUAT_ASSERT(!solution.negative, "quat::align_vectors_with_sensitivity: a weight is negative");
     return {solution.result, detail::wahba_sensitivity(solution, detail::size_of(sources))};
 }
@@ -4954,21 +4985,22 @@ void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>>
 }
 
 /// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
-/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input).
+/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input)
+/// (QUAT_ASSERT); unchecked, the first min(size(input), size(output)) points, never past either.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
-    rotate(q, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    rotate(q, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
 }
-/// Container form of the array-of-structs rotation by m.
+/// Container form of the array-of-structs rotation by m, with the precondition of the one by q.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::rotate: output shorter than input");
-    rotate(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    rotate(m, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
 }
 
 /// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
@@ -5011,7 +5043,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const U* t, quaternion<T>* output,
 
 /// slerp at every t of a contiguous container (of T or another scalar type, which converts) into a
 /// contiguous output of quaternion<T>; a and b may be elements of output. Precondition:
-/// size(output) >= size(t).
+/// size(output) >= size(t) (QUAT_ASSERT); unchecked, the first min(size(t), size(output)).
 template <class T, class Parameters, class Output,
           class = std::enable_if_t<std::is_convertible_v<
               decltype(detail::data_of(std::declval<Output&>())), quaternion<T>*>>>
@@ -5019,7 +5051,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(t),
                 "quat::slerp: output shorter than the parameters");
     slerp(a, b, detail::data_of(t), static_cast<quaternion<T>*>(detail::data_of(output)),
-          detail::size_of(t));
+          detail::common_size(t, output));
 }
 
 }  // inline namespace isa_...
@@ -5041,6 +5073,7 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
 #define QUAT_DUAL_QUATERNION_HPP_INCLUDED
 
 #include <optional>
+#include <type_traits>
 
 
 namespace quat {
@@ -5126,18 +5159,39 @@ template <class T>
     return dq.real;
 }
 
-/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector.
+namespace detail {
+
+/// 2 x, or +-max() where x is within a few units of roundoff of max() / 2 and the doubling alone
+/// would overflow (a value of max() read back with rounding error); infinite beyond that.
+template <class T>
+[[nodiscard]] constexpr T doubled_within_range(T x) noexcept {
+    const T twice = x + x;
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T limit = largest<T>() / T(2) * (T(1) + T(16) * epsilon<T>());
+        if (!is_finite(twice) && abs(x) <= limit) return x < T(0) ? -largest<T>() : largest<T>();
+    }
+    return twice;
+}
+
+}  // namespace detail
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector, for components
+/// up to max(): one that rounding alone carries past max() (as in reading back a translation of
+/// max() through to_dual_quaternion) is +-max(), not infinite.
 /// Precondition: |real| = 1; a real part of norm s gives s^2 t.
 template <class T>
 [[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
     // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
-    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all.
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all. Each
+    // component is a dot product of r with a signed permutation of d, so no partial sum exceeds
+    // |r| |d| = |t| / 2 (at most sqrt(3) max() / 2): only the doubling can overflow.
     const quaternion<T>& r = dq.real;
     const quaternion<T>& d = dq.dual;
     const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
                        r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
                        r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
-    return half + half;
+    return {detail::doubled_within_range(half.x), detail::doubled_within_range(half.y),
+            detail::doubled_within_range(half.z)};
 }
 
 /// Negation: the same rigid motion.
@@ -5344,14 +5398,15 @@ template <class T, class Weight>
 
 /// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
 /// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
-/// Precondition: equal sizes (QUAT_ASSERT).
+/// Precondition: equal sizes (QUAT_ASSERT); unchecked, other sizes blend as count 0: NaN.
 template <class Transforms, class Weights,
           class T = detail::element_scalar_t<dual_quaternion, Transforms>>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
                                                  const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(transforms) == detail::size_of(weights),
+    QUAT_ASSERT(detail::same_size(transforms, weights),
                 "quat::blend: transforms and weights differ in size");
-    return blend(detail::data_of(transforms), detail::data_of(weights), detail::size_of(weights));
+    return blend(detail::data_of(transforms), detail::data_of(weights),
+                 detail::same_size(transforms, weights) ? detail::size_of(weights) : 0);
 }
 }  // inline namespace isa_...
 
@@ -6210,7 +6265,8 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
 }
 
 /// Container form of rotate_each: contiguous rotations (quaternion<T>) and points, any contiguous
-/// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output).
+/// output of vec3<T>. Preconditions: size(rotations) == size(points) <= size(output) (QUAT_ASSERT);
+/// unchecked, the common length of the three, never past any of them.
 template <class Rotations, class Points, class Output,
           class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Points, Output>>
@@ -6220,7 +6276,7 @@ void rotate_each(const Rotations& rotations, const Points& points, Output&& outp
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(points),
                 "quat::rotate_each: output shorter than the input");
     rotate_each(detail::data_of(rotations), detail::data_of(points), detail::data_of(output),
-                detail::size_of(points));
+                detail::common_size(rotations, points, output));
 }
 
 /// output[i] = a[i] * b[i] for i < count: as rotations, b[i] applies first (Hamilton product).
@@ -6237,7 +6293,8 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
     detail::compose_each_loop(a, b, output, count);
 }
 
-/// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output).
+/// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output) (QUAT_ASSERT);
+/// unchecked, the common length of the three, never past any of them.
 template <class A, class B, class Output, class T = detail::element_scalar_t<quaternion, A>,
           class = detail::if_arrays_of<quaternion<T>, quaternion<T>, B, Output>>
 void compose_each(const A& a, const B& b, Output&& output) noexcept {
@@ -6246,7 +6303,7 @@ void compose_each(const A& a, const B& b, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(a),
                 "quat::compose_each: output shorter than the input");
     compose_each(detail::data_of(a), detail::data_of(b), detail::data_of(output),
-                 detail::size_of(a));
+                 detail::common_size(a, b, output));
 }
 
 /// output[i] = to_matrix(q[i]) for i < count, for unit q[i] (unchecked: a non-unit q gives a matrix
@@ -6263,13 +6320,14 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
     }
 }
 
-/// Container form of to_matrix_each. Precondition: size(output) >= size(q).
+/// Container form of to_matrix_each. Precondition: size(output) >= size(q) (QUAT_ASSERT);
+/// unchecked, the first min(size(q), size(output)).
 template <class Rotations, class Output, class T = detail::element_scalar_t<quaternion, Rotations>,
           class = detail::if_arrays_of<quaternion<T>, rotation_matrix<T>, Rotations, Output>>
 void to_matrix_each(const Rotations& q, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(q),
                 "quat::to_matrix_each: output shorter than the input");
-    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::size_of(q));
+    to_matrix_each(detail::data_of(q), detail::data_of(output), detail::common_size(q, output));
 }
 
 /// output[i] = to_quaternion(m[i]) for i < count (w >= 0). Precondition: rotation matrices, as for
@@ -6283,14 +6341,15 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
     for (std::size_t i = 0; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 
-/// Container form of to_quaternion_each. Precondition: size(output) >= size(m).
+/// Container form of to_quaternion_each. Precondition: size(output) >= size(m) (QUAT_ASSERT);
+/// unchecked, the first min(size(m), size(output)).
 template <class Matrices, class Output,
           class T = detail::element_scalar_t<rotation_matrix, Matrices>,
           class = detail::if_arrays_of<rotation_matrix<T>, quaternion<T>, Matrices, Output>>
 void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(m),
                 "quat::to_quaternion_each: output shorter than the input");
-    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::size_of(m));
+    to_quaternion_each(detail::data_of(m), detail::data_of(output), detail::common_size(m, output));
 }
 
 }  // inline namespace isa_...
@@ -7271,13 +7330,14 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 /// The weighted chordal L2 mean: M minimizing the sum of weights[i] |M - R_i|^2. weights is a
 /// container of scalars convertible to T (any finite size, subnormal to max(): only their ratios
 /// count), as long as rotations (QUAT_ASSERT); a zero weight drops that rotation. Precondition:
-/// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, or a weight is
-/// negative, NaN or infinite.
+/// weights >= 0 (QUAT_ASSERT); the result is NaN when no weight is positive, a weight is negative,
+/// NaN or infinite, or the two containers differ in size.
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> mean(const Rotations& rotations,
                                            const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::size_of(weights) == detail::size_of(rotations),
+    QUAT_ASSERT(detail::same_size(rotations, weights),
                 "quat::mean: weights and rotations differ in size");
+    if (!detail::same_size(rotations, weights)) return detail::mean_of(detail::mean_solution<T>{});
     const auto* w = detail::data_of(weights);
     return detail::mean_of(
         detail::solve_mean<false>(detail::data_of(rotations), detail::size_of(rotations),
@@ -7302,7 +7362,7 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr std::optional<quaternion<T>> try_mean(const Rotations& rotations,
                                                               const Weights& weights) noexcept {
-    if (detail::size_of(weights) != detail::size_of(rotations)) return std::nullopt;
+    if (!detail::same_size(rotations, weights)) return std::nullopt;
     const auto* w = detail::data_of(weights);
     return detail::unique_mean_of(
         detail::solve_mean<true>(detail::data_of(rotations), detail::size_of(rotations),
@@ -7521,21 +7581,25 @@ void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_ident
 }
 
 /// Container form of the array-of-structs transform by unit dq: any contiguous input and output
-/// of vec3<T>. Precondition: size(output) >= size(input).
+/// of vec3<T>. Precondition: size(output) >= size(input) (QUAT_ASSERT); unchecked, the first
+/// min(size(input), size(output)) points, never past either container.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
-    transform(dq, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    transform(dq, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
 }
-/// Container form of the array-of-structs transform by the 4x4 matrix m.
+/// Container form of the array-of-structs transform by the 4x4 matrix m, with the precondition of
+/// the one by dq.
 template <class T, class Input, class Output,
           class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
 void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
     QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
                 "quat::transform: output shorter than input");
-    transform(m, detail::data_of(input), detail::data_of(output), detail::size_of(input));
+    transform(m, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
 }
 
 /// The product dq[0] dq[1] ... dq[count - 1] (dq[count - 1] applies first); identity when
@@ -7836,11 +7900,18 @@ template <class T>
     return n_minus_sin_over_cube(n * n, n);
 }
 
+/// quartic_coefficient's closed form, for n >= 2, given a = one_minus_cos_over_square(n2, n) and
+/// sin n.
+template <class T>
+[[nodiscard]] constexpr T quartic_closed_form(T n2, T n, T a, T sin_n) noexcept {
+    return (T(2) * n2 * a - n * sin_n) / (n2 * n2);
+}
+
 /// (2 (1 - cos n) - n sin n) / n^4 = 1/12 - n^2/180 + n^4/6720 - ...
 template <class T>
 [[nodiscard]] constexpr T quartic_coefficient(T n2, T n) noexcept {
     if (n2 >= T(4))
-        return (T(2) * n2 * one_minus_cos_over_square(n2, n) - n * detail::sin(n)) / (n2 * n2);
+        return quartic_closed_form(n2, n, one_minus_cos_over_square(n2, n), detail::sin(n));
     return power_series(T(1) / T(12), [n2](int j) {
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
@@ -7880,25 +7951,75 @@ template <class T>
     });
 }
 
-/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
-template <class T>
-[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
-    const T n = norm(r), n2 = squared_angle(r, n);
-    const vec3<T> c = cross(r, v);
-    return v - c * one_minus_cos_over_square(n2, n) + cross(r, c) * n_minus_sin_over_cube(n2, n);
-}
-
 /// (1 - (n/2) cot(n/2)) / n^2 = 1/n^2 - (1 + cos n) / (2 n sin n) = 1/12 + n^2/720 + ..., the
 /// [r]x^2 coefficient of J(r)^-1, as quartic_coefficient / (2 one_minus_cos_over_square): both
 /// free of cancellation. For n < 2 pi.
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n2, T n) noexcept {
-    return quartic_coefficient(n2, n) / (T(2) * one_minus_cos_over_square(n2, n));
+    // a once: the closed form of the quartic coefficient needs it too (a sine saved past n = 2).
+    const T a = one_minus_cos_over_square(n2, n);
+    const T quartic =
+        n2 >= T(4) ? quartic_closed_form(n2, n, a, detail::sin(n)) : quartic_coefficient(n2, n);
+    return quartic / (T(2) * a);
 }
 /// inverse_jacobian_coefficient(n n, n).
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
     return inverse_jacobian_coefficient(n * n, n);
+}
+
+/// The coefficients of Jr = I - a [r]x + b [r]x^2 and of Jr^-1 = I + [r]x / 2 + c [r]x^2.
+template <class T>
+struct right_jacobian_coefficients {
+    T a, b, c;
+};
+
+/// a, b and c (c only when `inverse` is set) at n = |r|, n2 = n n, for a floating-point T, from
+/// half = cos_sinc(|r|^2 / 4, n / 2), the one sincos that from_rotation_vector computes too: a =
+/// sinc^2 / 2 (one_minus_cos_over_square's form), sin n = n sinc cos in the closed forms past
+/// n = 2, the series below.
+template <class T>
+[[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
+    T n2, T n, const cos_and_sinc<T>& half, bool inverse) noexcept {
+    static_assert(std::is_floating_point_v<T>, "a user scalar takes the series in n^2");
+    const T a = half.sinc * half.sinc / T(2);
+    if (n2 >= T(4)) {
+        const T sin_n = n * half.sinc * half.cos;
+        return {a, (n - sin_n) / (n2 * n),
+                inverse ? quartic_closed_form(n2, n, a, sin_n) / (T(2) * a) : T(0)};
+    }
+    return {a, n_minus_sin_over_cube(n2, n),
+            inverse ? quartic_coefficient(n2, n) / (T(2) * a) : T(0)};
+}
+
+/// The half angle's cosine and sinc of the rotation vector r, from_rotation_vector's expression:
+/// so3::exp and the Jacobians share it, bit for bit.
+template <class T>
+[[nodiscard]] constexpr cos_and_sinc<T> half_angle_of(const vec3<T>& r) noexcept {
+    return cos_sinc(squared_norm(r) * T(0.25), norm(r) * T(0.5));
+}
+
+/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1
+/// of so3.hpp, se3.hpp and rotation_spline.hpp takes. A floating-point T takes the half angle
+/// (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
+template <class T>
+[[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
+    const vec3<T>& r, bool inverse) noexcept {
+    const T n = norm(r), n2 = squared_angle(r, n);
+    if constexpr (std::is_floating_point_v<T>) {
+        return right_jacobian_coefficients_of(n2, n, half_angle_of(r), inverse);
+    } else {
+        if (inverse) return {T(0), T(0), inverse_jacobian_coefficient(n2, n)};
+        return {one_minus_cos_over_square(n2, n), n_minus_sin_over_cube(n2, n), T(0)};
+    }
+}
+
+/// J(r) v: the body angular velocity of R0 exp([r]x) when r changes at the rate v.
+template <class T>
+[[nodiscard]] constexpr vec3<T> right_jacobian(const vec3<T>& r, const vec3<T>& v) noexcept {
+    const right_jacobian_coefficients<T> k = right_jacobian_coefficients_of(r, false);
+    const vec3<T> c = cross(r, v);
+    return v - c * k.a + cross(r, c) * k.b;
 }
 
 /// n_minus_sin_over_cube, quartic_coefficient and quintic_coefficient at one |r|: a solve that
@@ -8014,7 +8135,12 @@ public:
     /// containers with data() and size(), or C arrays, of equal size >= 2. Debug builds check
     /// these preconditions; a release build given fewer than two keyframes or sizes that differ
     /// makes a spline that evaluates to NaN, and unsorted or non-finite input a meaningless (often
-    /// non-finite) one, never undefined behaviour. try_make checks the input instead.
+    /// non-finite) one, never undefined behaviour. try_make checks the input instead. Where
+    /// try_make is empty for valid input (the solve did not converge, or a value would overflow T)
+    /// the constructor keeps the velocities with the smallest jumps: through every keyframe with
+    /// continuous angular velocity, the acceleration jumping at inner keyframes, and the values
+    /// that overflow infinite or NaN. Durations unequal by many orders of magnitude are valid and
+    /// give rates of the short segments' size on the long ones: that is the C2 spline.
     template <class Times, class Rotations>
     rotation_spline(const Times& times, const Rotations& rotations) {
         const std::size_t count = detail::size_of(times);
@@ -8525,8 +8651,10 @@ inline namespace isa_generic {
 /// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
 /// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
 /// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
-/// moment: its axis lies far away. Precondition: unit dq; a NaN or infinite component gives NaN in
-/// the result.
+/// moment: its axis lies far away, and where that is beyond max() (a slide across the axis of more
+/// than about max() times half the angle, as for a subnormal angle) the moment is infinite; a
+/// slide along the axis gives a zero moment at any angle. Precondition: unit dq; a NaN or infinite
+/// component gives NaN in the result.
 template <class T>
 [[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
     const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
@@ -8543,8 +8671,17 @@ template <class T>
     // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
     // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
     // across w / s, not across (w / s): w / s overflows for a tiny angle even where across is 0.
-    const vec3<T> across = t - l * displacement;
-    const vec3<T> moment = (cross(t, l) + across * near.real.w / s) * T(0.5);
+    // across = l x (t x l), from t x v with v and t scaled by powers of two (exact, so v still
+    // lies along the axis) and compensated products: it is exactly zero for a t along v, where
+    // t - l (t . l) keeps |t| eps from the rounding of l, which cot(h) turns into an infinite
+    // moment when the angle is subnormal.
+    const vec3<T> axis = detail::scaled_by_power_of_two(v);
+    const T size = detail::binade_or_one(detail::largest_magnitude(t));
+    const vec3<T> t_cross_axis = detail::accurate_cross(t / size, axis);  // (t x v) / |v| / size
+    const T axis_squared = squared_norm(axis);
+    const vec3<T> across = cross(axis, t_cross_axis) * (size / axis_squared);
+    const vec3<T> moment =
+        (t_cross_axis * (size / detail::sqrt(axis_squared)) + across * near.real.w / s) * T(0.5);
     return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
 }
 

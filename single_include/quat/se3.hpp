@@ -25,7 +25,7 @@
 // Opt-in: keep this file at quat/se3.hpp beside the single quat.hpp, which it
 // includes.
 
-// The rigid motions SE(3) as a Lie group (issue 25): exp and log between unit dual quaternions and
+// The rigid motions SE(3) as a Lie group: exp and log between unit dual quaternions and
 // twists, SE(3)'s Jacobians, and the group operations with their Jacobians, in so3.hpp's convention
 // (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018;
 // manif's): J = d (f(X exp(tau)) (-) f(X)) / d tau at tau = 0 with the right plus and minus,
@@ -253,33 +253,42 @@ template <class T>
 /// The inverse motion of a unit X: both parts conjugated, exact for unit X (dot(real, dual) = 0);
 /// *d = -Ad(X).
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& x,
-                                                   matrix6<T>* d = nullptr) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> inverse(
+    const dual_quaternion<T>& x, quat::detail::type_identity_t<matrix6<T>>* d = nullptr) noexcept {
     if (d != nullptr) *d = -adjoint(x);
     return quat::detail::rigid_inverse(x);
 }
 
 /// exp(t): the motion x -> exp(omega) x + Jl(omega) rho as a unit dual quaternion; *jacobian =
-/// Jr(t). Any finite twist; NaN in gives NaN.
+/// Jr(t). Any finite twist; a NaN or infinite component gives NaN in every component.
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> exp(const twist<T>& t,
-                                               matrix6<T>* jacobian = nullptr) noexcept {
-    // Jl(omega) = Jr(omega)^T ([omega]x is skew, [omega]x^2 symmetric), and so3::exp forms Jr
-    // from the half-angle sine and cosine it computes anyway.
+[[nodiscard]] constexpr dual_quaternion<T> exp(
+    const twist<T>& t, quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
+    // Jl(omega) = Jr(omega)^T ([omega]x is skew, [omega]x^2 symmetric): the translation needs Jr
+    // even when the Jacobian is not asked for.
     matrix3<T> jr{};
     const quaternion<T> rotation = so3::exp(t.angular, &jr);
     if (jacobian != nullptr)
         *jacobian = quat::detail::upper_block_triangular(
             jr, quat::detail::se3_q_block(-t.linear, -t.angular));
-    return to_dual_quaternion(rotation, transpose(jr) * t.linear);
+    const dual_quaternion<T> motion = to_dual_quaternion(rotation, transpose(jr) * t.linear);
+    if constexpr (std::is_floating_point_v<T>) {
+        // A bad linear part leaves the rotation finite; half a result would pass for an answer.
+        if (!quat::detail::is_finite(t.linear) || !quat::detail::is_finite(t.angular)) {
+            const T nan = quat::detail::quiet_nan<T>();
+            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        }
+    }
+    return motion;
 }
 
 /// log(X): the twist with |omega| in [0, pi] whose exp is X (X and -X alike); *jacobian =
 /// Jr(log X)^-1. Precondition: unit X.
 template <class T>
-[[nodiscard]] constexpr twist<T> log(const dual_quaternion<T>& x,
-                                     matrix6<T>* jacobian = nullptr) noexcept {
-    // Jl(omega)^-1 = (Jr(omega)^-1)^T, from so3::log's half-angle coefficients.
+[[nodiscard]] constexpr twist<T> log(
+    const dual_quaternion<T>& x,
+    quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
+    // Jl(omega)^-1 = (Jr(omega)^-1)^T ([omega]x is skew, [omega]x^2 symmetric).
     matrix3<T> a{};
     const vec3<T> omega = so3::log(x.real, &a);
     const twist<T> t{transpose(a) * translation_of(x), omega};
@@ -292,17 +301,18 @@ template <class T>
 /// log of the rigid motion m = [R t; 0 1]: log(to_dual_quaternion(m)), with the same Jacobian (one
 /// group element, two forms; to_homogeneous(exp(t)) is the other way). Precondition: m rigid.
 template <class T>
-[[nodiscard]] constexpr twist<T> log(const homogeneous_matrix<T>& m,
-                                     matrix6<T>* jacobian = nullptr) noexcept {
+[[nodiscard]] constexpr twist<T> log(
+    const homogeneous_matrix<T>& m,
+    quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
     return log(to_dual_quaternion(m), jacobian);
 }
 
 /// a * b (b first); *d_a = Ad(b)^-1, *d_b = I. Precondition: unit a and b.
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>& a,
-                                                   const dual_quaternion<T>& b,
-                                                   matrix6<T>* d_a = nullptr,
-                                                   matrix6<T>* d_b = nullptr) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> compose(
+    const dual_quaternion<T>& a, const dual_quaternion<T>& b,
+    quat::detail::type_identity_t<matrix6<T>>* d_a = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_b = nullptr) noexcept {
     if (d_a != nullptr) *d_a = adjoint(quat::detail::rigid_inverse(b));
     if (d_b != nullptr) *d_b = matrix6<T>::identity();
     return a * b;
@@ -310,9 +320,10 @@ template <class T>
 
 /// transform(X, p) = R p + t; *d_x = [R, -R [p]x] (3x6), *d_p = R. Precondition: unit X.
 template <class T>
-[[nodiscard]] constexpr vec3<T> act(const dual_quaternion<T>& x, const vec3<T>& p,
-                                    matrix<T, 3, 6>* d_x = nullptr,
-                                    matrix3<T>* d_p = nullptr) noexcept {
+[[nodiscard]] constexpr vec3<T> act(
+    const dual_quaternion<T>& x, const vec3<T>& p,
+    quat::detail::type_identity_t<matrix<T, 3, 6>>* d_x = nullptr,
+    quat::detail::type_identity_t<matrix3<T>>* d_p = nullptr) noexcept {
     if (d_x != nullptr || d_p != nullptr) {
         const matrix3<T> r = rotation_matrix_of(x);
         if (d_x != nullptr) {
@@ -326,10 +337,10 @@ template <class T>
 
 /// x^-1 y, the motion from x to y in x's frame; *d_x = -Ad(x^-1 y)^-1, *d_y = I. Unit x and y.
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> between(const dual_quaternion<T>& x,
-                                                   const dual_quaternion<T>& y,
-                                                   matrix6<T>* d_x = nullptr,
-                                                   matrix6<T>* d_y = nullptr) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> between(
+    const dual_quaternion<T>& x, const dual_quaternion<T>& y,
+    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr) noexcept {
     const dual_quaternion<T> d = quat::detail::rigid_inverse(x) * y;
     if (d_x != nullptr) *d_x = -adjoint(quat::detail::rigid_inverse(d));
     if (d_y != nullptr) *d_y = matrix6<T>::identity();
@@ -338,9 +349,10 @@ template <class T>
 
 /// x (+) t = x exp(t); *d_x = Ad(exp t)^-1, *d_t = Jr(t). Precondition: unit x.
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> plus(const dual_quaternion<T>& x, const twist<T>& t,
-                                                matrix6<T>* d_x = nullptr,
-                                                matrix6<T>* d_t = nullptr) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> plus(
+    const dual_quaternion<T>& x, const twist<T>& t,
+    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_t = nullptr) noexcept {
     const dual_quaternion<T> e = exp(t, d_t);
     if (d_x != nullptr) *d_x = adjoint(quat::detail::rigid_inverse(e));
     return x * e;
@@ -348,9 +360,10 @@ template <class T>
 
 /// y (-) x = log(x^-1 y); *d_y = Jr(t)^-1, *d_x = -Jl(t)^-1 for t the result. Unit x and y.
 template <class T>
-[[nodiscard]] constexpr twist<T> minus(const dual_quaternion<T>& y, const dual_quaternion<T>& x,
-                                       matrix6<T>* d_y = nullptr,
-                                       matrix6<T>* d_x = nullptr) noexcept {
+[[nodiscard]] constexpr twist<T> minus(
+    const dual_quaternion<T>& y, const dual_quaternion<T>& x,
+    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
     const twist<T> t = log(quat::detail::rigid_inverse(x) * y, d_y);
     if (d_x != nullptr) *d_x = -left_jacobian_inverse(t);
     return t;
@@ -359,9 +372,10 @@ template <class T>
 /// exp(t) x, the left plus; *d_t = Ad(x)^-1 Jr(t), *d_x = I (right-convention Jacobians, as
 /// everywhere here). Precondition: unit x.
 template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> plus_left(const twist<T>& t, const dual_quaternion<T>& x,
-                                                     matrix6<T>* d_t = nullptr,
-                                                     matrix6<T>* d_x = nullptr) noexcept {
+[[nodiscard]] constexpr dual_quaternion<T> plus_left(
+    const twist<T>& t, const dual_quaternion<T>& x,
+    quat::detail::type_identity_t<matrix6<T>>* d_t = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
     if (d_t != nullptr) *d_t = adjoint(quat::detail::rigid_inverse(x)) * right_jacobian(t);
     if (d_x != nullptr) *d_x = matrix6<T>::identity();
     return exp(t) * x;
@@ -370,9 +384,10 @@ template <class T>
 /// log(y x^-1), the left minus; *d_y = Jr(t)^-1 Ad(x), *d_x = -Jr(t)^-1 Ad(x) for t the result
 /// (right-convention Jacobians). Precondition: unit x and y.
 template <class T>
-[[nodiscard]] constexpr twist<T> minus_left(const dual_quaternion<T>& y,
-                                            const dual_quaternion<T>& x, matrix6<T>* d_y = nullptr,
-                                            matrix6<T>* d_x = nullptr) noexcept {
+[[nodiscard]] constexpr twist<T> minus_left(
+    const dual_quaternion<T>& y, const dual_quaternion<T>& x,
+    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
     const twist<T> t = log(y * quat::detail::rigid_inverse(x));
     if (d_y != nullptr || d_x != nullptr) {
         const matrix6<T> j = right_jacobian_inverse(t) * adjoint(x);

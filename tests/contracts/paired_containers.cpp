@@ -53,7 +53,8 @@ std::vector<vec3<double>> points(std::size_t n) {
 std::vector<quaternion<double>> rotations(std::size_t n) {
     std::vector<quaternion<double>> q;
     for (std::size_t i = 0; i < n; ++i)
-        q.push_back(quat::from_rotation_vector(vec3<double>{0.1 * double(i), 0.3, -0.2 * double(i)}));
+        q.push_back(
+            quat::from_rotation_vector(vec3<double>{0.1 * double(i), 0.3, -0.2 * double(i)}));
     return q;
 }
 
@@ -61,8 +62,8 @@ std::vector<dual_quaternion<double>> motions(std::size_t n) {
     std::vector<dual_quaternion<double>> m;
     const std::vector<quaternion<double>> q = rotations(n);
     for (std::size_t i = 0; i < n; ++i)
-        m.push_back(quat::to_dual_quaternion(
-            q[i], vec3<double>{0.2 * double(i), 1.0, -0.5 * double(i)}));
+        m.push_back(
+            quat::to_dual_quaternion(q[i], vec3<double>{0.2 * double(i), 1.0, -0.5 * double(i)}));
     return m;
 }
 
@@ -100,8 +101,8 @@ void fits(std::size_t a, std::size_t b) {
     static_cast<void>(weights_a);
 
     const auto hand = motions(a), eye = motions(b);
-    for (const auto method : {quat::hand_eye_method::daniilidis,
-                              quat::hand_eye_method::rotation_first}) {
+    for (const auto method :
+         {quat::hand_eye_method::daniilidis, quat::hand_eye_method::rotation_first}) {
         const auto h = quat::hand_eye(hand, eye, method);
         check(is_nan(h.mount) && std::isnan(h.rotation_rms) && std::isnan(h.translation_rms) &&
                   !h.unique,
@@ -188,7 +189,8 @@ void batches(std::size_t a, std::size_t b) {
     }
     const auto r = rotations(a);
     const double u = untouched;
-    std::vector<rotation_matrix<double>> matrices(b, rotation_matrix<double>{{{u, u, u}, {u, u, u}, {u, u, u}}});
+    std::vector<rotation_matrix<double>> matrices(
+        b, rotation_matrix<double>{{{u, u, u}, {u, u, u}, {u, u, u}}});
     quat::to_matrix_each(r, matrices);
     bool kept = true;
     for (std::size_t i = common; i < b; ++i) kept = kept && matrices[i](0, 0) == untouched;

@@ -38,16 +38,21 @@
 //
 // Both manifolds perturb on the right, as quat's so3/se3 functions (Sola et al., "A micro Lie
 // theory for state estimation in robotics", 2018): Plus(x, d) = x exp(d), Minus(y, x) = log(x^-1 y),
-// so a tangent step is expressed in the body frame of x. ceres::QuaternionManifold perturbs on the
-// left with half the angle, exp(d) * x: the same manifold with the same minima, its tangent
-// d_ceres = R(x) d / 2 for quaternion_manifold's d.
+// so a tangent step is expressed in the body frame of x. Minus keeps the sign of the quaternion
+// x^-1 y (angle up to 2 pi), so that Plus(x, Minus(y, x)) is the block y itself, as Ceres's
+// manifold invariants require; so3::minus and se3::minus take the shortest path instead.
+// ceres::QuaternionManifold perturbs on the left with half the angle, exp(d) * x: the same
+// manifold with the same minima, its tangent d_ceres = R(x) d / 2 for quaternion_manifold's d.
 #ifndef QUAT_INTEROP_CERES_HPP_INCLUDED
 #define QUAT_INTEROP_CERES_HPP_INCLUDED
+
+#include <cmath>
 
 #include <ceres/manifold.h>
 
 #include "../quat.hpp"
 #include "../se3.hpp"
+#include "../so3.hpp"
 
 namespace quat {
 
@@ -155,10 +160,40 @@ inline void quaternion_minus_jacobian(const double* q, double* j) noexcept {
         for (int c = 0; c < 4; ++c) j[r * 4 + c] = rows[r][c];
 }
 
+/// The rotation vector whose exp is q itself, not -q: log(q) with q's sign kept, angle in
+/// [0, 2 pi] (to_rotation_vector's for w >= 0). The manifolds' Minus needs it so that
+/// Plus(x, Minus(y, x)) is y and not -y, which Ceres's manifold tests require of a Minus (the
+/// shortest path, so3::minus, reaches -y when dot(x, y) < 0). Any non-zero scale of q; q = -1
+/// gives 2 pi about the x axis (every axis reaches -1).
+inline vec3<double> log_keeping_sign(const quaternion<double>& q) noexcept {
+    if (!(q.w < 0)) return to_rotation_vector(q);
+    const vec3<double> v{q.x, q.y, q.z};
+    const double s = norm(v);
+    if (s == 0) return {2 * numbers::pi_v<double>, 0, 0};
+    return v * (2 * std::atan2(s, q.w) / s);
+}
+
+/// The twist whose exp is x itself, not -x: se3::log with the sign of x's rotation kept (angle in
+/// [0, 2 pi]), rho = Jl(omega)^-1 t. Jl(omega) is singular at 2 pi, where only translations along
+/// the axis are reached: for a rotation part of exactly -1, omega = 2 pi t / |t| (Jl = the
+/// projection on t) and rho = t. Near 2 pi rho grows as 1/(2 pi - |omega|), and Plus loses as many
+/// digits. Precondition: unit x.
+inline se3::twist<double> log_keeping_sign(const dual_quaternion<double>& x) noexcept {
+    if (!(x.real.w < 0)) return se3::log(x);
+    const vec3<double> t = translation_of(x), v{x.real.x, x.real.y, x.real.z};
+    if (norm(v) == 0) {
+        const double length = norm(t);
+        const vec3<double> axis = length > 0 ? t / length : vec3<double>{1, 0, 0};
+        return {t, axis * (2 * numbers::pi_v<double>)};
+    }
+    const vec3<double> omega = log_keeping_sign(x.real);
+    return {so3::left_jacobian_inverse(omega) * t, omega};
+}
+
 }  // namespace detail
 
 /// SO(3) as unit quaternions w, x, y, z (4 numbers) with rotation-vector tangents (3 numbers):
-/// Plus(x, d) = x * from_rotation_vector(d), Minus(y, x) = to_rotation_vector(x^-1 y), both on the
+/// Plus(x, d) = x * from_rotation_vector(d), Minus(y, x) = log(x^-1 y) keeping its sign, both on the
 /// right (d turns x about an axis of its own frame). ceres::QuaternionManifold stores the same 4
 /// numbers and has the same minima, with tangent d_ceres = R(x) d / 2 (it computes exp(d_ceres) x
 /// with exp(d_ceres) rotating by 2 |d_ceres|). Precondition: unit quaternions in x and y; Plus
@@ -184,10 +219,12 @@ public:
         return true;
     }
 
-    /// log(x^-1 y): the rotation vector (angle in [0, pi]) that Plus adds to x to reach y (or -y).
+    /// log(x^-1 y) with the sign of x^-1 y kept (angle in [0, 2 pi]): the rotation vector that
+    /// Plus adds to x to reach y itself, not -y. Not so3::minus, the shortest path (angle in
+    /// [0, pi]), which reaches -y when dot(x, y) < 0; the two agree where dot(x, y) >= 0.
     bool Minus(const double* y, const double* x, double* y_minus_x) const override {
-        write_parameters(to_rotation_vector(conjugate(quaternion_from_parameters(x)) *
-                                            quaternion_from_parameters(y)),
+        write_parameters(detail::log_keeping_sign(conjugate(quaternion_from_parameters(x)) *
+                                                  quaternion_from_parameters(y)),
                          y_minus_x);
         return true;
     }
@@ -201,7 +238,7 @@ public:
 
 /// SE(3) as poses w, x, y, z, tx, ty, tz (7 numbers: unit quaternion, then translation) with twist
 /// tangents, linear part first (6 numbers, se3::twist): Plus(X, tau) = X se3::exp(tau) and
-/// Minus(Y, X) = se3::log(X^-1 Y), on the right. This is SE(3), not SO(3) x R^3: a step turns and
+/// Minus(Y, X) = log(X^-1 Y) keeping its sign, on the right. This is SE(3), not SO(3) x R^3: a step turns and
 /// moves along a screw in the frame of X, as the residuals of a pose graph do. Precondition: unit
 /// quaternions; Plus keeps them unit to rounding.
 class pose_manifold final : public ::ceres::Manifold {
@@ -233,9 +270,14 @@ public:
         return true;
     }
 
-    /// log(X^-1 Y): the twist (rotation angle in [0, pi]) that Plus adds to X to reach Y.
+    /// log(X^-1 Y) with the sign of the rotation of X^-1 Y kept (angle in [0, 2 pi]): the twist
+    /// that Plus adds to X to reach the block Y itself, not the same motion with its quaternion
+    /// negated. se3::minus (angle in [0, pi]) where the rotations' dot product is >= 0.
     bool Minus(const double* y, const double* x, double* y_minus_x) const override {
-        write_parameters(se3::minus(pose_from_parameters(y), pose_from_parameters(x)), y_minus_x);
+        write_parameters(
+            detail::log_keeping_sign(quat::detail::rigid_inverse(pose_from_parameters(x)) *
+                                     pose_from_parameters(y)),
+            y_minus_x);
         return true;
     }
 
