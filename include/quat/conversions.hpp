@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "axis_angle.hpp"
 #include "config.hpp"
@@ -154,13 +155,17 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr quaternion<T> from_rotation_vector(
     const vec3<T>& rotation_vector) noexcept {
-    if (!(squared_norm(rotation_vector) <= detail::largest<T>())) {
-        // |v|^2 overflowed (or is NaN): the half angle from v / 2, whose norm is at most
-        // sqrt(3) max() / 2, and the axis from normalize, as sin(h) / h falls below the normal
-        // range (losing digits) as h nears max().
-        const T half_angle = norm(rotation_vector * T(0.5)), s = detail::sin(half_angle);
-        const vec3<T> axis = normalize(rotation_vector);
-        return {detail::cos(half_angle), axis.x * s, axis.y * s, axis.z * s};
+    if constexpr (std::is_floating_point_v<T>) {
+        // Only for floating point: a user scalar (an autodiff Jet) would pay for the test with
+        // derivatives on every call, for magnitudes no such program reaches.
+        if (!(squared_norm(rotation_vector) <= detail::largest<T>())) {
+            // |v|^2 overflowed (or is NaN): the half angle from v / 2, whose norm is at most
+            // sqrt(3) max() / 2, and the axis from normalize, as sin(h) / h falls below the
+            // normal range (losing digits) as h nears max().
+            const T half_angle = norm(rotation_vector * T(0.5)), s = detail::sin(half_angle);
+            const vec3<T> axis = normalize(rotation_vector);
+            return {detail::cos(half_angle), axis.x * s, axis.y * s, axis.z * s};
+        }
     }
     // The half angle's square from the squared norm, not from norm, so that a dual-number scalar
     // gets finite derivatives at the zero vector (norm's square root is only read past the series).
