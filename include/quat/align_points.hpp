@@ -68,8 +68,7 @@ template <class T, class Targets, class Sources, class Weight>
                                                                 bool paired) noexcept {
     if (!paired) {
         const T nan = quiet_nan<T>();
-        const quaternion<T> nan_q{nan, nan, nan, nan};
-        return {{{nan_q, nan_q}, nan, false}, nan};
+        return {{{nan_quaternion<T>(), nan_quaternion<T>()}, nan, false}, nan};
     }
     const auto* t = detail::data_of(targets);
     const auto* s = detail::data_of(sources);

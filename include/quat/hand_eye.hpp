@@ -364,13 +364,18 @@ template <class T, class A, class B>
     return {q, dual};
 }
 
+/// The documented NaN result: NaN in the mount, the residuals and the ambiguity; not unique.
+template <class T>
+[[nodiscard]] constexpr hand_eye_calibration<T> nan_calibration() noexcept {
+    const T nan = quiet_nan<T>();
+    return {{nan_quaternion<T>(), nan_quaternion<T>()}, nan, nan, false, nan};
+}
+
 template <class T, class A, class B>
 [[nodiscard]] constexpr hand_eye_calibration<T> solve_hand_eye(const A* a_motions,
                                                                const B* b_motions,
                                                                std::size_t count,
                                                                hand_eye_method method) noexcept {
-    const T nan = quiet_nan<T>();
-    const quaternion<T> nan_q{nan, nan, nan, nan};
     if (count == 0) return {dual_quaternion<T>::identity(), T(0), T(0), false, T(1)};
     // The translations are divided by the power of two of the longest, so that the dual rows
     // weigh like the rotation rows (Daniilidis's matrix mixes both) and nothing overflows.
@@ -378,7 +383,7 @@ template <class T, class A, class B>
     for (std::size_t i = 0; i < count; ++i) {
         const dual_quaternion<T> a(a_motions[i]), b(b_motions[i]);
         if (!is_finite(a.real) || !is_finite(a.dual) || !is_finite(b.real) || !is_finite(b.dual))
-            return {{nan_q, nan_q}, nan, nan, false, nan};
+            return nan_calibration<T>();
         longest = max(longest, max(largest_magnitude(a.dual), largest_magnitude(b.dual)));
         motions += T(1);
         const T va[3] = {a.real.x, a.real.y, a.real.z}, vb[3] = {b.real.x, b.real.y, b.real.z};
@@ -449,16 +454,12 @@ template <class MotionsA, class MotionsB,
 [[nodiscard]] constexpr hand_eye_calibration<T> hand_eye(
     const MotionsA& motions_a, const MotionsB& motions_b,
     hand_eye_method method = hand_eye_method::daniilidis) noexcept {
-    QUAT_ASSERT(detail::size_of(motions_a) == detail::size_of(motions_b),
+    QUAT_ASSERT(detail::same_size(motions_a, motions_b),
                 "quat::hand_eye: the two lists of motions differ in size");
+    if (!detail::same_size(motions_a, motions_b)) return detail::nan_calibration<T>();
     const auto* a = detail::data_of(motions_a);
     const auto* b = detail::data_of(motions_b);
     const std::size_t count = detail::size_of(motions_a);
-    if (detail::size_of(motions_b) != count) {
-        const T nan = detail::quiet_nan<T>();
-        const quaternion<T> nan_q{nan, nan, nan, nan};
-        return {{nan_q, nan_q}, nan, nan, false, nan};
-    }
     for (std::size_t i = 0; i < count; ++i)  // an empty loop where QUAT_ASSERT compiles to nothing
         QUAT_ASSERT(detail::is_near_unit(dual_quaternion<T>(a[i]).real) &&
                         detail::is_near_unit(dual_quaternion<T>(b[i]).real),

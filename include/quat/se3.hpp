@@ -208,10 +208,8 @@ template <class T>
     const dual_quaternion<T> motion = to_dual_quaternion(rotation, transpose(jr) * t.linear);
     if constexpr (std::is_floating_point_v<T>) {
         // A bad linear part leaves the rotation finite; half a result would pass for an answer.
-        if (!quat::detail::is_finite(t.linear) || !quat::detail::is_finite(t.angular)) {
-            const T nan = quat::detail::quiet_nan<T>();
-            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
-        }
+        if (!quat::detail::is_finite(t.linear) || !quat::detail::is_finite(t.angular))
+            return {quat::detail::nan_quaternion<T>(), quat::detail::nan_quaternion<T>()};
     }
     return motion;
 }

@@ -259,8 +259,7 @@ template <bool checked, class T, class Weight>
     // A NaN or infinite translation leaves the rotations' mean finite; a finite rotation beside a
     // NaN translation would pass for half a result, so the whole mean is NaN, as documented.
     if (!is_finite(outcome.mean.real) || !is_finite(outcome.mean.dual)) {
-        const T nan = quiet_nan<T>();
-        outcome.mean = {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        outcome.mean = {nan_quaternion<T>(), nan_quaternion<T>()};
         outcome.converged = false;
     }
     T spread = T(0);
