@@ -1,4 +1,4 @@
-// Per-element batches (quat/elementwise.hpp): rotate_each (point i by rotation i), compose_each
+// Per-element batches (quat/batch/elementwise.hpp): rotate_each (point i by rotation i), compose_each
 // (a[i] * b[i]), to_matrix_each and to_quaternion_each. GLM and Eigen run the loops their users
 // write, out[i] = q[i] * p[i] and so on, which g++ vectorizes too. One iteration is a whole batch;
 // items are elements.
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <quat/elementwise.hpp>
+#include <quat/batch/elementwise.hpp>
 
 #include "common.hpp"
 

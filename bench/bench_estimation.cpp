@@ -13,9 +13,9 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include <Eigen/Geometry>
-#include <quat/align_points.hpp>
-#include <quat/align_vectors.hpp>
-#include <quat/mean.hpp>
+#include <quat/fitting/align_vectors.hpp>
+#include <quat/fitting/mean.hpp>
+#include <quat/registration/align_points.hpp>
 
 #include "common.hpp"
 

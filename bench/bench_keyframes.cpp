@@ -10,10 +10,10 @@
 
 #include <glm/gtx/quaternion.hpp>
 
-#include <quat/keyframe_slerp.hpp>
-#include <quat/keyframe_squad.hpp>
-#include <quat/rotation_spline.hpp>
-#include <quat/squad.hpp>
+#include <quat/paths/keyframe_slerp.hpp>
+#include <quat/paths/keyframe_squad.hpp>
+#include <quat/paths/rotation_spline.hpp>
+#include <quat/paths/squad.hpp>
 
 #include "common.hpp"
 

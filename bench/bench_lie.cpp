@@ -10,8 +10,8 @@
 
 #include <ceres/jet.h>
 
-#include <quat/se3.hpp>
-#include <quat/so3.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/lie/so3.hpp>
 
 #include "common.hpp"
 

@@ -6,8 +6,8 @@
 
 #include <glm/gtx/quaternion.hpp>
 
-#include <quat/interpolation.hpp>
 #include <quat/kinematics.hpp>
+#include <quat/paths/interpolation.hpp>
 #include <quat/random.hpp>
 #include <quat/swing_twist.hpp>
 

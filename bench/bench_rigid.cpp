@@ -14,11 +14,11 @@
 #endif
 #include <glm/gtx/dual_quaternion.hpp>
 
-#include <quat/blend.hpp>
-#include <quat/dual_quaternion.hpp>
-#include <quat/homogeneous_matrix.hpp>
-#include <quat/rigid_batch.hpp>
-#include <quat/sclerp.hpp>
+#include <quat/batch/rigid_motions.hpp>
+#include <quat/rigid/blend.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/sclerp.hpp>
 
 #include "common.hpp"
 

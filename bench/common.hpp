@@ -16,9 +16,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include <quat/batch.hpp>
+#include <quat/batch/rotations.hpp>
+#include <quat/paths/slerp_fast.hpp>
 #include <quat/quat.hpp>
-#include <quat/slerp_fast.hpp>
 
 namespace bench {
 

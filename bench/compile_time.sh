@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Compile time of one translation unit using the common rotation operations, written once with quat
 # and once with GLM (glm/glm.hpp + glm/gtc/quaternion.hpp); prints both and the ratio quat / GLM.
-# Usage: bench/compile_time.sh [compiler] [runs]   (defaults: g++, 5 runs; best of the runs counts)
+# Usage: bench/compile_time.sh [compiler] [runs]   (defaults: g++, 7 runs; the median counts)
 set -euo pipefail
 cxx=${1:-g++}
-runs=${2:-5}
+runs=${2:-7}
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -37,19 +37,29 @@ float use(float a, float b, float c, float t) {
 }
 CPP
 
-best() {  # best wall time in seconds of compiling $1 with -O2
-    local file=$1 best_time=1e9
+# The two units are compiled alternately, so that a change in the machine's load falls on both alike;
+# the median of the runs counts. Both code generation (-O2) and parsing alone (-fsyntax-only) are
+# reported: the first is what a build pays, the second isolates the include graph.
+measure() {  # measure FLAGS: prints "quat_median glm_median"
+    local flags=$1 quat_times=() glm_times=()
     for _ in $(seq "$runs"); do
-        local start end
-        start=$(date +%s.%N)
-        "$cxx" -std=c++17 -O2 -I"$root/include" -c "$file" -o "$work/out.o"
-        end=$(date +%s.%N)
-        best_time=$(echo "$end $start $best_time" | awk '{d = $1 - $2; print (d < $3 ? d : $3)}')
+        for unit in quat glm; do
+            local start end
+            start=$(date +%s.%N)
+            # shellcheck disable=SC2086
+            "$cxx" -std=c++17 $flags -I"$root/include" -c "$work/with_$unit.cpp" -o "$work/out.o"
+            end=$(date +%s.%N)
+            local elapsed
+            elapsed=$(awk -v a="$end" -v b="$start" 'BEGIN {print a - b}')
+            if [ "$unit" = quat ]; then quat_times+=("$elapsed"); else glm_times+=("$elapsed"); fi
+        done
     done
-    echo "$best_time"
+    median() { printf '%s\n' "$@" | sort -g | awk '{a[NR] = $1} END {print (NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2)}'; }
+    echo "$(median "${quat_times[@]}") $(median "${glm_times[@]}")"
 }
-quat_time=$(best "$work/with_quat.cpp")
-glm_time=$(best "$work/with_glm.cpp")
 echo "compiler: $("$cxx" --version | head -1)"
-echo "quat TU: ${quat_time} s   GLM TU: ${glm_time} s   (best of $runs, -std=c++17 -O2)"
-echo "ratio quat / GLM: $(echo "$quat_time $glm_time" | awk '{printf "%.2f", $1 / $2}')"
+for flags in "-O2" "-fsyntax-only"; do
+    read -r quat_time glm_time <<<"$(measure "$flags")"
+    echo "$flags: quat TU ${quat_time} s, GLM TU ${glm_time} s (median of $runs, alternated, -std=c++17)," \
+        "ratio quat / GLM $(echo "$quat_time $glm_time" | awk '{printf "%.2f", $1 / $2}')"
+done

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <quat/batch.hpp>
+#include <quat/batch/rotations.hpp>
 #include <quat/quat.hpp>
 
 #include "counted.hpp"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fits the coefficients of quat::corrected_nlerp (include/quat/slerp_fast.hpp).
+"""Fits the coefficients of quat::corrected_nlerp (include/quat/paths/slerp_fast.hpp).
 
 nlerp at parameter tau moves along the slerp arc, but not at constant speed; slerp's point at t is
 nlerp's point at

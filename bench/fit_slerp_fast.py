@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fits the coefficients of quat::slerp_fast (include/quat/slerp_fast.hpp).
+"""Fits the coefficients of quat::slerp_fast (include/quat/paths/slerp_fast.hpp).
 
 With theta the 4D angle between unit a and the nearer of b, -b (so theta <= pi/2), psi = theta / 2,
 c = cos psi = sqrt((1 + |a . b|) / 2) and alpha = 2t - 1, the slerp weights of a and b are E - O and

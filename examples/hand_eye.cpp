@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "check.hpp"
 #include "plot.hpp"

@@ -22,8 +22,8 @@
 #include <ceres/sized_cost_function.h>
 #include <ceres/solver.h>
 #include <quat/interop/ceres.hpp>
+#include <quat/lie/se3.hpp>
 #include <quat/quat.hpp>
-#include <quat/se3.hpp>
 
 #include "check.hpp"
 #include "svg.hpp"

@@ -14,8 +14,8 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include <Eigen/Geometry>
-#include <quat/align_points.hpp>
-#include <quat/homogeneous_matrix.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

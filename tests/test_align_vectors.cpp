@@ -10,7 +10,7 @@
 
 #include <Eigen/Dense>
 #include <quat/align.hpp>
-#include <quat/align_vectors.hpp>
+#include <quat/fitting/align_vectors.hpp>
 
 #include "data/scipy_reference.hpp"
 #include "support/catch.hpp"

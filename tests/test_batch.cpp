@@ -1,4 +1,4 @@
-// Batch operations (quat/batch.hpp) give the scalar results: rotate over arrays of structs and
+// Batch operations (quat/batch/rotations.hpp) give the scalar results: rotate over arrays of structs and
 // structs of arrays, compose over a span, slerp at many parameters.
 #include <array>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include <quat/batch.hpp>
+#include <quat/batch/rotations.hpp>
 #include <quat/quat.hpp>
 
 #include "support/catch.hpp"

@@ -4,9 +4,9 @@
 #include <limits>
 #include <vector>
 
-#include <quat/blend.hpp>
-#include <quat/homogeneous_matrix.hpp>
-#include <quat/screw.hpp>
+#include <quat/rigid/blend.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/screw.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -25,9 +25,9 @@
 #include <utility>
 
 #include <ceres/jet.h>
+#include <quat/lie/se3.hpp>
+#include <quat/lie/so3.hpp>
 #include <quat/quat.hpp>
-#include <quat/se3.hpp>
-#include <quat/so3.hpp>
 
 #include "support/catch.hpp"
 #include "support/dual_number.hpp"

@@ -8,8 +8,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/dual_quaternion.hpp>
-#include <quat/dual_quaternion.hpp>
 #include <quat/interop/glm.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

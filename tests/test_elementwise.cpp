@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include <quat/elementwise.hpp>
+#include <quat/batch/elementwise.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

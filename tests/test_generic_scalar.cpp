@@ -13,9 +13,9 @@
 #include <limits>
 #include <vector>
 
-#include <quat/align_points.hpp>
-#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "support/catch.hpp"
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include <quat/conversions.hpp>
-#include <quat/geodesic_mean.hpp>
-#include <quat/interpolation.hpp>
-#include <quat/sclerp.hpp>
-#include <quat/se3.hpp>
+#include <quat/lie/geodesic_mean.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/paths/interpolation.hpp>
+#include <quat/rigid/sclerp.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

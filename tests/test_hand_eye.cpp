@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include <quat/hand_eye.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

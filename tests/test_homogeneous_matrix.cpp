@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <quat/homogeneous_matrix.hpp>
 #include <quat/interop/glm.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include <quat/align_points.hpp>
-#include <quat/geodesic_mean.hpp>
-#include <quat/hand_eye.hpp>
+#include <quat/lie/geodesic_mean.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/lie/so3.hpp>
 #include <quat/quat.hpp>
-#include <quat/se3.hpp>
-#include <quat/so3.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "support/catch.hpp"
 #include "support/hostile.hpp"

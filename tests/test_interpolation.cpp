@@ -9,7 +9,7 @@
 #include <glm/gtx/quaternion.hpp>
 #include <quat/conversions.hpp>
 #include <quat/interop/glm.hpp>
-#include <quat/interpolation.hpp>
+#include <quat/paths/interpolation.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include <quat/align_points.hpp>
-#include <quat/hand_eye.hpp>
 #include <quat/io.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "support/catch.hpp"
 #include "support/read_back.hpp"

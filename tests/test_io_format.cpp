@@ -2,9 +2,9 @@
 // std::format("{}", component) does, the shortest text that reads back exactly, and a format spec
 // applies to each component. Compiled where the standard library has <format> (__cpp_lib_format):
 // not g++ 12's libstdc++, so CTest runs these under clang++-19 with libc++ (tests/io/libcxx).
-#include <quat/align_points.hpp>
-#include <quat/hand_eye.hpp>
 #include <quat/io.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #if defined(__cpp_lib_format)
 

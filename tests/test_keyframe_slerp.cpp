@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include <quat/keyframe_slerp.hpp>
+#include <quat/paths/keyframe_slerp.hpp>
 
 #include "data/scipy_spline_reference.hpp"
 #include "support/catch.hpp"

@@ -9,10 +9,10 @@
 #include <type_traits>
 #include <vector>
 
-#include <quat/keyframe_slerp.hpp>
-#include <quat/keyframe_squad.hpp>
 #include <quat/kinematics.hpp>
-#include <quat/squad.hpp>
+#include <quat/paths/keyframe_slerp.hpp>
+#include <quat/paths/keyframe_squad.hpp>
+#include <quat/paths/squad.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -10,7 +10,7 @@
 
 #include <Eigen/Dense>
 #include <quat/conversions.hpp>
-#include <quat/mean.hpp>
+#include <quat/fitting/mean.hpp>
 
 #include "data/scipy_reference.hpp"
 #include "support/catch.hpp"

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include <Eigen/Dense>
-#include <quat/nearest_rotation.hpp>
+#include <quat/fitting/nearest_rotation.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include <quat/rigid_batch.hpp>
+#include <quat/batch/rigid_motions.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

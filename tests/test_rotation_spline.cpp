@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include <quat/interpolation.hpp>
 #include <quat/kinematics.hpp>
+#include <quat/paths/interpolation.hpp>
+#include <quat/paths/rotation_spline.hpp>
 #include <quat/quaternion.hpp>
-#include <quat/rotation_spline.hpp>
 
 #include "data/scipy_spline_reference.hpp"
 #include "support/catch.hpp"

@@ -6,9 +6,9 @@
 #include <limits>
 
 #include <quat/conversions.hpp>
-#include <quat/dual_quaternion.hpp>
-#include <quat/sclerp.hpp>
-#include <quat/screw.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/sclerp.hpp>
+#include <quat/rigid/screw.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include <quat/constants.hpp>
-#include <quat/screw.hpp>
+#include <quat/rigid/screw.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

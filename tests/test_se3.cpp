@@ -1,4 +1,4 @@
-// SE(3) as a Lie group (quat/se3.hpp): exp against the matrix exponential of the 4x4 twist (its
+// SE(3) as a Lie group (quat/lie/se3.hpp): exp against the matrix exponential of the 4x4 twist (its
 // series in long double), log against to_screw and sclerp, and every analytic Jacobian against
 // central differences of the same function in long double through the right plus and minus
 // (J = d (f(X exp(d)) (-) f(X)) / d d at d = 0), at fixed-seed random points, the identity, zero
@@ -18,8 +18,8 @@
 #include <string>
 
 #include <ceres/jet.h>
+#include <quat/lie/se3.hpp>
 #include <quat/quat.hpp>
-#include <quat/se3.hpp>
 
 #include "support/catch.hpp"
 #include "support/jacobian_check.hpp"

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <quat/paths/slerp_fast.hpp>
 #include <quat/quat.hpp>
-#include <quat/slerp_fast.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"
@@ -13,7 +13,7 @@
 
 namespace {
 
-// The documented bounds in radians (include/quat/slerp_fast.hpp); the benchmark labels
+// The documented bounds in radians (include/quat/paths/slerp_fast.hpp); the benchmark labels
 // (bench/bench_other.cpp) and `quat_accuracy --slerp-fast` (tools/accuracy/measure_slerp_fast.hpp)
 // repeat them. The largest errors over 1.3 million samples there: nlerp 0.142 (its supremum, at a
 // half turn); corrected_nlerp 5.83e-4 (the fitted polynomial's); slerp_fast 2.7e-7 in float, where

@@ -1,4 +1,4 @@
-// SO(3) as a Lie group (quat/so3.hpp): every analytic Jacobian against central differences of the
+// SO(3) as a Lie group (quat/lie/so3.hpp): every analytic Jacobian against central differences of the
 // same function in long double, taken through the right plus and minus (the convention of the
 // header: J = d (f(X exp(d)) (-) f(X)) / d d at d = 0), at fixed-seed random points, the identity,
 // zero tangents, 1e-12 rad, around 1/4, both sides of the coefficients' switches (|w| = 2, 3) and
@@ -23,7 +23,7 @@
 #include <utility>
 
 #include <ceres/jet.h>
-#include <quat/so3.hpp>
+#include <quat/lie/so3.hpp>
 
 #include "support/catch.hpp"
 #include "support/jacobian_check.hpp"

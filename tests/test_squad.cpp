@@ -10,7 +10,7 @@
 #include <glm/gtx/quaternion.hpp>
 #include <quat/interop/glm.hpp>
 #include <quat/kinematics.hpp>
-#include <quat/squad.hpp>
+#include <quat/paths/squad.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -3,15 +3,17 @@
 
 quat.hpp: follows the includes of include/quat/quat.hpp depth-first and inlines every quat header
 once, at its first inclusion, the way #pragma once would; standard headers stay #include lines.
-The opt-in headers that quat.hpp does not include (io.hpp, interop/glm.hpp, interop/eigen.hpp,
-interop/fmt.hpp, interop/ceres.hpp, and the estimation families align_points.hpp, hand_eye.hpp,
-so3.hpp, se3.hpp and geodesic_mean.hpp) are generated at the same relative paths, so a user's #include <quat/io.hpp> or
-<quat/interop/glm.hpp> works with single_include/ as with include/. Each is its own text with
-every include of a header that quat.hpp holds replaced by one include of the single quat.hpp
-(#include "../quat.hpp" from interop/), every include of a header an earlier opt-in output holds
-replaced by one include of that output (interop/fmt.hpp's ../io.hpp), and anything else of quat's
-inlined. The output depends only on the input files (no dates, no absolute paths), so the
-committed copies can be compared with a fresh generation:
+Every other public header that brings something quat.hpp does not hold (io.hpp, interop/, the
+opt-in families lie/ and registration/ with their umbrella headers, and the old include paths
+that forward to them) is generated at the same relative path, so single_include/ has the shape
+of include/ for everything beyond quat.hpp: a user's #include <quat/io.hpp> or
+<quat/lie/so3.hpp> works with single_include/ as with include/. The list is computed from the
+include graph, not written here. Each is its own text with every include of a header that
+quat.hpp holds replaced by one include of the single quat.hpp ("../quat.hpp" from a folder),
+every include of a header an earlier output holds replaced by one include of that output
+(interop/fmt.hpp's ../io.hpp), and anything else of quat's inlined. The output depends only on
+the input files (no dates, no absolute paths), so the committed copies can be compared with a
+fresh generation:
 
     python3 tools/amalgamate.py           write single_include/quat/quat.hpp and the opt-in headers
     python3 tools/amalgamate.py --check   exit 1 if a committed file is out of date
@@ -25,20 +27,6 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 INCLUDE_DIR = ROOT / "include"
 ENTRY = INCLUDE_DIR / "quat" / "quat.hpp"
-# The opt-in headers, relative to include/quat, with the title of their generated copy. A header
-# that includes another of them comes after it.
-OPT_IN = {
-    "io.hpp": "printing (operator<<, std::formatter), single-header edition.",
-    "interop/glm.hpp": "conversions to and from GLM, single-header edition.",
-    "interop/eigen.hpp": "conversions to and from Eigen, single-header edition.",
-    "interop/fmt.hpp": "{fmt} formatters, single-header edition.",
-    "align_points.hpp": "point-set registration (Kabsch-Umeyama), single-header edition.",
-    "hand_eye.hpp": "hand-eye calibration (Daniilidis), single-header edition.",
-    "so3.hpp": "SO(3) calculus with Jacobians, single-header edition.",
-    "se3.hpp": "SE(3) calculus with Jacobians, single-header edition.",
-    "geodesic_mean.hpp": "geodesic (Karcher) means, single-header edition.",
-    "interop/ceres.hpp": "Ceres manifolds and parameter blocks, single-header edition.",
-}
 OUTPUT_DIR = ROOT / "single_include" / "quat"
 
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
@@ -130,15 +118,66 @@ def generate_opt_in(name: str, title: str, external: dict) -> tuple:
     out = preamble(title)
     out += [f"// Opt-in: keep this file at quat/{name} beside the single quat.hpp, which it",
             "// includes.", ""]
-    # From interop/, the files of single_include/quat are one directory up.
+    # From a folder (interop/, lie/), the files of single_include/quat are one directory up.
     up = "../" * name.count("/")
     local = {header: line.replace('#include "', '#include "' + up, 1)
              for header, line in external.items()}
     seen, emitted = set(), set()
     inline((INCLUDE_DIR / "quat" / name).resolve(), seen, out, local, emitted, markers=False)
     if not emitted:
-        sys.exit(f"amalgamate.py: include/quat/{name} includes no header of quat.hpp or io.hpp")
+        sys.exit(f"amalgamate.py: include/quat/{name} includes no header of quat.hpp or another output")
     return "\n".join(out) + "\n", seen
+
+
+def includes_of(path: Path) -> list:
+    """The quat headers path includes, in the order it includes them."""
+    found = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        match = INCLUDE_RE.match(line)
+        target = resolve(match.group(2), match.group(1), path) if match else None
+        if target is not None and target.suffix == ".hpp":
+            found.append(target)
+    return found
+
+
+def only_includes(path: Path) -> bool:
+    """True for a header that holds nothing but includes: an umbrella or an old path's forwarder."""
+    for line in path.read_text(encoding="utf-8").splitlines():
+        text = line.split("//")[0].strip()
+        if text and not text.startswith("#"):
+            return False
+    return True
+
+
+def opt_in_headers(held: set) -> list:
+    """The public headers (not detail/) that bring something quat.hpp does not hold, each after
+    every one of them it includes, by their paths relative to include/quat."""
+    quat_dir = INCLUDE_DIR / "quat"
+    public = sorted(p.resolve() for p in quat_dir.rglob("*.hpp") if "detail" not in p.parts)
+    closure = {}
+
+    def reach(path: Path) -> set:
+        if path not in closure:
+            closure[path] = {path}
+            for target in includes_of(path):
+                closure[path] |= reach(target)
+        return closure[path]
+
+    ordered, visited = [], set()
+
+    def visit(path: Path) -> None:
+        if path in visited:
+            return
+        visited.add(path)
+        for target in includes_of(path):
+            visit(target)
+        if path in public and path != ENTRY.resolve() and any(
+                not only_includes(header) for header in reach(path) - held):
+            ordered.append(path.relative_to(quat_dir.resolve()).as_posix())
+
+    for path in public:
+        visit(path)
+    return ordered
 
 
 def generate_all() -> dict:
@@ -146,7 +185,8 @@ def generate_all() -> dict:
     text, held = generate()
     outputs = {"quat.hpp": text}
     external = {header: '#include "quat.hpp"' for header in held}
-    for name, title in OPT_IN.items():
+    for name in opt_in_headers(held):
+        title = f"quat/{name}, single-header edition."
         text, held = generate_opt_in(name, title, external)
         outputs[name] = text
         for header in held:

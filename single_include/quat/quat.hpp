@@ -57,12 +57,6 @@
 
 #include <optional>
 
-// ---- begin quat/detail/shortest_arc.hpp ----
-// The work behind align.hpp's rotation_between and look_rotation: the shortest-arc formulas for
-// lengths in range, the float path computed in double, and the camera frame before its fallback.
-#ifndef QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
-#define QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
-
 // ---- begin quat/conversions.hpp ----
 // Conversions among quaternions, rotation matrices, axis-angle pairs, rotation vectors and modified
 // Rodrigues parameters.
@@ -1830,16 +1824,18 @@ template <class T>
 
 /// v divided by the power of two that brings its largest |component| into [1, 2): the same
 /// direction exactly, whatever v's length. Precondition: has_direction(v).
-template <class T>
-[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(const vec3<T>& v) noexcept {
-    return v / binade_of(largest_magnitude(v));
+/// Written for any vector with x, y and z (vec3 and autodiff vectors alike), so that this
+/// foundation header knows no type of quat's.
+template <class Vector>
+[[nodiscard]] constexpr Vector scaled_by_power_of_two(const Vector& v) noexcept {
+    return v / binade_of(max(max(abs(v.x), abs(v.y)), abs(v.z)));
 }
 
 /// a x b with each component from difference_of_products: relative error at most 2 units of
 /// roundoff per component, also where a and b are nearly parallel or opposite and the naive
 /// cross product keeps only rounding noise.
-template <class T>
-[[nodiscard]] constexpr vec3<T> accurate_cross(const vec3<T>& a, const vec3<T>& b) noexcept {
+template <class Vector>
+[[nodiscard]] constexpr Vector accurate_cross(const Vector& a, const Vector& b) noexcept {
     return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
             difference_of_products(a.x, b.y, a.y, b.x)};
 }
@@ -1878,6 +1874,9 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
+
+// The work behind rotation_between and look_rotation: the shortest-arc formulas for lengths in
+// range, the float path computed in double, and the camera frame before its fallback.
 namespace detail {
 
 /// The half turn rotation_between picks for exactly opposite directions: about
@@ -2000,39 +1999,6 @@ template <class T>
 }
 
 }  // namespace detail
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_SHORTEST_ARC_HPP_INCLUDED
-// ---- end quat/detail/shortest_arc.hpp ----
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
 
 /// The shortest-arc unit quaternion turning the direction of `from` into the direction of `to`:
 /// the rotation by the angle between them about from x to. Any non-zero finite lengths (scaled by
@@ -2103,3322 +2069,6 @@ template <class T>
 
 #endif  // QUAT_ALIGN_HPP_INCLUDED
 // ---- end quat/align.hpp ----
-// ---- begin quat/align_vectors.hpp ----
-// Wahba's problem: the rotation that best aligns one set of vectors with another, as scipy's
-// Rotation.align_vectors finds it, with the residual and scipy's sensitivity matrix.
-#ifndef QUAT_ALIGN_VECTORS_HPP_INCLUDED
-#define QUAT_ALIGN_VECTORS_HPP_INCLUDED
-
-#include <cstddef>
-#include <optional>
-
-// ---- begin quat/detail/containers.hpp ----
-// The arrays quat's functions over many elements accept: any contiguous container or view with
-// data() and size() members (std::vector, std::array, std::span), and C arrays.
-#ifndef QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
-#define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
-
-#include <cstddef>
-#include <type_traits>
-#include <utility>
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
-// translation unit that includes quat.hpp: half its compile time.
-template <class Container>
-[[nodiscard]] constexpr auto data_of(Container& c) noexcept -> decltype(c.data()) {
-    return c.data();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr T* data_of(T (&array)[N]) noexcept {
-    return array;
-}
-template <class Container>
-[[nodiscard]] constexpr auto size_of(const Container& c) noexcept -> decltype(c.size()) {
-    return c.size();
-}
-template <class T, std::size_t N>
-[[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
-    return N;
-}
-
-// Paired containers (docs/conventions.md, "Containers that must match"): whether every container
-// holds as many elements as the first, which the fits and keyframe paths require, and the length
-// all of them hold, the most a batch's container form may read or write.
-template <class First, class... Rest>
-[[nodiscard]] constexpr bool same_size(const First& first, const Rest&... rest) noexcept {
-    return ((detail::size_of(rest) == detail::size_of(first)) && ...);
-}
-template <class First, class... Rest>
-[[nodiscard]] constexpr std::size_t common_size(const First& first, const Rest&... rest) noexcept {
-    std::size_t common = detail::size_of(first);
-    ((common = detail::size_of(rest) < common ? detail::size_of(rest) : common), ...);
-    return common;
-}
-
-// The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
-// way quat's container forms name the scalar type of their elements. Not a type for a container of
-// anything else, so a container form whose default template argument uses it drops out of overload
-// resolution. element_scalar is declared only, for the type of its result.
-template <template <class> class Value, class T>
-T element_scalar(const Value<T>*) noexcept;
-template <template <class> class Value, class Container>
-using element_scalar_t =
-    decltype(detail::element_scalar<Value>(detail::data_of(std::declval<const Container&>())));
-
-// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
-template <class In, class Out, class Input, class Output>
-using if_arrays_of = std::enable_if_t<
-    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
-    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
-// ---- end quat/detail/containers.hpp ----
-// ---- begin quat/detail/wahba.hpp ----
-// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights,
-// with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
-// weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
-// arrays; align_points.hpp on the points less their centroids.
-#ifndef QUAT_DETAIL_WAHBA_HPP_INCLUDED
-#define QUAT_DETAIL_WAHBA_HPP_INCLUDED
-
-#include <cstddef>
-
-// ---- begin quat/matrix.hpp ----
-// Small fixed-size matrices for Jacobians and covariances: matrix<T, Rows, Cols>. Not a linear
-// algebra library: products, sums, transposes and blocks, enough to chain the Jacobians of the
-// Lie-group functions (so3.hpp, se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or Ceres.
-#ifndef QUAT_MATRIX_HPP_INCLUDED
-#define QUAT_MATRIX_HPP_INCLUDED
-
-#include <cstddef>
-
-
-namespace quat {
-
-/// A Rows x Cols matrix stored row-major; vectors multiply it as columns, v' = M v. Any scalar the
-/// rest of quat accepts, automatic-differentiation scalars included.
-template <class T, int Rows, int Cols>
-struct matrix {
-    static_assert(Rows > 0 && Cols > 0, "quat::matrix: empty matrices are not supported");
-    /// Row-major: elements[row][col]. matrix<T, R, C>{} is zero; matrix<T, R, C> m; leaves the
-    /// elements uninitialized, as in a plain struct.
-    T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
-
-    /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
-    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
-        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
-        return elements[row][col];
-    }
-    /// Element at (row, col), read-only.
-    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
-                                                                       int col) const noexcept {
-        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
-        return elements[row][col];
-    }
-
-    /// The matrix of zeros.
-    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix zero() noexcept {
-        matrix m{};
-        for (int i = 0; i < Rows; ++i)
-            for (int j = 0; j < Cols; ++j) m.elements[i][j] = T(0);
-        return m;
-    }
-    /// The identity (ones on the diagonal, zeros elsewhere; square or not).
-    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix identity() noexcept {
-        matrix m = zero();
-        for (int i = 0; i < (Rows < Cols ? Rows : Cols); ++i) m.elements[i][i] = T(1);
-        return m;
-    }
-};
-
-/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
-template <class T>
-using matrix3 = matrix<T, 3, 3>;
-/// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
-template <class T>
-using matrix6 = matrix<T, 6, 6>;
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians.
-template <class T>
-[[nodiscard]] constexpr matrix3<T> to_matrix3(const rotation_matrix<T>& m) noexcept {
-    matrix3<T> out{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out(i, j) = m(i, j);
-    return out;
-}
-
-/// Element-wise sum.
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator+(const matrix<T, R, C>& a,
-                                                  const matrix<T, R, C>& b) noexcept {
-    matrix<T, R, C> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) + b(i, j);
-    return out;
-}
-
-/// Element-wise difference.
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a,
-                                                  const matrix<T, R, C>& b) noexcept {
-    matrix<T, R, C> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) - b(i, j);
-    return out;
-}
-
-/// Element-wise negation.
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a) noexcept {
-    matrix<T, R, C> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out(i, j) = -a(i, j);
-    return out;
-}
-
-/// Every element times s.
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, C>& a,
-                                                  detail::type_identity_t<T> s) noexcept {
-    matrix<T, R, C> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) * s;
-    return out;
-}
-
-/// Every element times s.
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator*(detail::type_identity_t<T> s,
-                                                  const matrix<T, R, C>& a) noexcept {
-    return a * s;
-}
-
-/// Matrix product: (a b) v = a (b v).
-template <class T, int R, int K, int C>
-[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, K>& a,
-                                                  const matrix<T, K, C>& b) noexcept {
-    matrix<T, R, C> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) {
-            T sum = a(i, 0) * b(0, j);
-            for (int k = 1; k < K; ++k) sum = sum + a(i, k) * b(k, j);
-            out(i, j) = sum;
-        }
-    return out;
-}
-
-/// M v for a 3x3 matrix.
-template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& m, const vec3<T>& v) noexcept {
-    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
-            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
-            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
-}
-
-/// a = a + b.
-template <class T, int R, int C>
-constexpr matrix<T, R, C>& operator+=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
-    return a = a + b;
-}
-
-/// a = a - b.
-template <class T, int R, int C>
-constexpr matrix<T, R, C>& operator-=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
-    return a = a - b;
-}
-
-/// Exact element-wise equality.
-template <class T, int R, int C>
-[[nodiscard]] constexpr bool operator==(const matrix<T, R, C>& a,
-                                        const matrix<T, R, C>& b) noexcept {
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j)
-            if (!(a(i, j) == b(i, j))) return false;
-    return true;
-}
-
-/// Negation of ==.
-template <class T, int R, int C>
-[[nodiscard]] constexpr bool operator!=(const matrix<T, R, C>& a,
-                                        const matrix<T, R, C>& b) noexcept {
-    return !(a == b);
-}
-
-/// The transpose: element (i, j) moves to (j, i).
-template <class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, C, R> transpose(const matrix<T, R, C>& m) noexcept {
-    matrix<T, C, R> out{};
-    for (int i = 0; i < R; ++i)
-        for (int j = 0; j < C; ++j) out(j, i) = m(i, j);
-    return out;
-}
-
-/// The BR x BC block of m whose top-left element is m(row, col). Precondition: the block lies
-/// inside m (checked when both are constants, otherwise debug-checked).
-template <int BR, int BC, class T, int R, int C>
-[[nodiscard]] constexpr matrix<T, BR, BC> block(const matrix<T, R, C>& m, int row,
-                                                int col) noexcept {
-    static_assert(BR <= R && BC <= C, "quat::block: the block is larger than the matrix");
-    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
-                "quat::block: the block does not lie inside the matrix");
-    matrix<T, BR, BC> out{};
-    for (int i = 0; i < BR; ++i)
-        for (int j = 0; j < BC; ++j) out(i, j) = m(row + i, col + j);
-    return out;
-}
-
-/// Writes b into m with b's top-left element at m(row, col). Precondition: as for block.
-template <class T, int R, int C, int BR, int BC>
-constexpr void set_block(matrix<T, R, C>& m, int row, int col,
-                         const matrix<T, BR, BC>& b) noexcept {
-    static_assert(BR <= R && BC <= C, "quat::set_block: the block is larger than the matrix");
-    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
-                "quat::set_block: the block does not lie inside the matrix");
-    for (int i = 0; i < BR; ++i)
-        for (int j = 0; j < BC; ++j) m(row + i, col + j) = b(i, j);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_MATRIX_HPP_INCLUDED
-// ---- end quat/matrix.hpp ----
-// ---- begin quat/nearest_rotation.hpp ----
-// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
-#ifndef QUAT_NEAREST_ROTATION_HPP_INCLUDED
-#define QUAT_NEAREST_ROTATION_HPP_INCLUDED
-
-#include <limits>
-#include <optional>
-
-// ---- begin quat/detail/symmetric_eigen.hpp ----
-// Eigenvalues and eigenvectors of a symmetric N x N matrix: the one solver behind nearest_rotation,
-// align_vectors and mean, whose answers are eigenvectors of a 4x4 read as quaternions, and
-// hand_eye's 8x8; and the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
-#ifndef QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
-#define QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
-
-#include <cstddef>
-#include <limits>
-
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// align_vectors and mean sum their matrices over the input in blocks of this many elements, each
-// block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
-// number of blocks instead of with the count.
-inline constexpr std::size_t summation_block = 256;
-
-// Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
-// sweeps), each with its unit eigenvector: vectors[n] belongs to values[n].
-template <std::size_t N, class T>
-struct symmetric_eigen_n {
-    T values[N];
-    T vectors[N][N];
-};
-
-// Cyclic Jacobi rotations (Golub & Van Loan, Matrix Computations, 8.5): unconditionally
-// convergent, quadratically at the end, a handful of sweeps for N up to 8; each eigenvalue comes
-// out within a few eps of the matrix's norm. Expects finite elements of moderate size (callers
-// scale so the largest is about 1: the sums of squares below would overflow near sqrt(max)); a
-// non-finite element gives NaN values and vectors.
-template <std::size_t N, class T>
-[[nodiscard]] constexpr symmetric_eigen_n<N, T> jacobi_eigen(const T (&matrix)[N][N]) noexcept {
-    symmetric_eigen_n<N, T> result{};
-    T k[N][N] = {}, v[N][N] = {};
-    for (std::size_t p = 0; p < N; ++p)
-        for (std::size_t q = 0; q < N; ++q) {
-            if (!detail::is_finite(matrix[p][q])) {
-                const T nan = detail::quiet_nan<T>();
-                for (std::size_t i = 0; i < N; ++i) {
-                    result.values[i] = nan;
-                    for (std::size_t j = 0; j < N; ++j) result.vectors[i][j] = nan;
-                }
-                return result;
-            }
-            k[p][q] = matrix[p][q];
-            v[p][q] = p == q ? T(1) : T(0);
-        }
-    for (std::size_t sweep = 0; sweep < 32; ++sweep) {
-        T off = T(0), total = T(0);
-        for (std::size_t p = 0; p < N; ++p)
-            for (std::size_t q = 0; q < N; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
-        if (!(off > detail::epsilon<T>() * detail::epsilon<T>() * total)) break;
-        for (std::size_t p = 0; p < N - 1; ++p)
-            for (std::size_t q = p + 1; q < N; ++q) {
-                if (k[p][q] == T(0)) continue;
-                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
-                const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
-                const T t = (theta < T(0) ? T(-1) : T(1)) /
-                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
-                const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
-                for (std::size_t r = 0; r < N; ++r) {  // k <- k J
-                    const T kp = k[r][p], kq = k[r][q];
-                    k[r][p] = c * kp - s * kq;
-                    k[r][q] = s * kp + c * kq;
-                }
-                for (std::size_t r = 0; r < N; ++r) {  // k <- J^T k
-                    const T kp = k[p][r], kq = k[q][r];
-                    k[p][r] = c * kp - s * kq;
-                    k[q][r] = s * kp + c * kq;
-                }
-                for (std::size_t r = 0; r < N; ++r) {  // v <- v J: columns are the eigenvectors
-                    const T vp = v[r][p], vq = v[r][q];
-                    v[r][p] = c * vp - s * vq;
-                    v[r][q] = s * vp + c * vq;
-                }
-            }
-    }
-    // Insertion sort, descending; a strict comparison keeps equal eigenvalues in diagonal order.
-    std::size_t order[N] = {};
-    for (std::size_t i = 0; i < N; ++i) order[i] = i;
-    for (std::size_t i = 1; i < N; ++i)
-        for (std::size_t j = i; j > 0 && k[order[j]][order[j]] > k[order[j - 1]][order[j - 1]];
-             --j) {
-            const std::size_t swapped = order[j];
-            order[j] = order[j - 1];
-            order[j - 1] = swapped;
-        }
-    for (std::size_t n = 0; n < N; ++n) {
-        const std::size_t column = order[n];
-        result.values[n] = k[column][column];
-        for (std::size_t r = 0; r < N; ++r) result.vectors[n][r] = v[r][column];
-    }
-    return result;
-}
-
-// Eigenvalues in descending order, each with its unit eigenvector read as a quaternion
-// (components w, x, y, z are rows 0 to 3 of the matrix).
-template <class T>
-struct symmetric_eigen4 {
-    T values[4];
-    quaternion<T> vectors[4];
-};
-
-// jacobi_eigen of a 4x4, the eigenvectors as quaternions.
-template <class T>
-[[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
-    const symmetric_eigen_n<4, T> e = jacobi_eigen<4>(matrix);
-    symmetric_eigen4<T> result{};
-    for (std::size_t n = 0; n < 4; ++n) {
-        result.values[n] = e.values[n];
-        result.vectors[n] = {e.vectors[n][0], e.vectors[n][1], e.vectors[n][2], e.vectors[n][3]};
-    }
-    return result;
-}
-
-// Solves h x = g for a symmetric positive definite 3x3 h: LDL^T elimination, each step on the
-// largest remaining diagonal element (symmetric complete pivoting, stable for positive definite
-// matrices however graded: Higham, Accuracy and Stability of Numerical Algorithms, 2002, 10.3).
-// False, x untouched, when a pivot is not positive (h not positive definite, or NaN).
-template <class T>
-[[nodiscard]] constexpr bool solve_positive_definite3(const T (&h)[3][3], const T (&g)[3],
-                                                      T (&x)[3]) noexcept {
-    T m[3][3] = {}, r[3] = {};
-    int order[3] = {0, 1, 2};
-    for (int i = 0; i < 3; ++i) {
-        r[i] = g[i];
-        for (int j = 0; j < 3; ++j) m[i][j] = h[i][j];
-    }
-    for (int k = 0; k < 3; ++k) {
-        int p = k;
-        for (int i = k + 1; i < 3; ++i)
-            if (m[i][i] > m[p][p]) p = i;
-        if (p != k) {  // swap row and column k with p
-            for (int j = 0; j < 3; ++j) {
-                const T row = m[k][j];
-                m[k][j] = m[p][j];
-                m[p][j] = row;
-            }
-            for (int i = 0; i < 3; ++i) {
-                const T column = m[i][k];
-                m[i][k] = m[i][p];
-                m[i][p] = column;
-            }
-            const T value = r[k];
-            r[k] = r[p];
-            r[p] = value;
-            const int index = order[k];
-            order[k] = order[p];
-            order[p] = index;
-        }
-        if (!(m[k][k] > T(0)) || !detail::is_finite(m[k][k])) return false;
-        for (int i = k + 1; i < 3; ++i) {
-            const T l = m[i][k] / m[k][k];
-            for (int j = k + 1; j < 3; ++j) m[i][j] -= l * m[k][j];
-            r[i] -= l * r[k];
-        }
-    }
-    T y[3] = {};
-    for (int k = 2; k >= 0; --k) {
-        T value = r[k];
-        for (int j = k + 1; j < 3; ++j) value -= m[k][j] * y[j];
-        y[k] = value / m[k][k];
-    }
-    for (int k = 0; k < 3; ++k) x[order[k]] = y[k];
-    return true;
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
-// ---- end quat/detail/symmetric_eigen.hpp ----
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
-// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique), or
-// a lower bound of that gap where it was not computed.
-template <class T>
-struct horn_solution {
-    quaternion<T> rotation;
-    T eigenvalue_gap;
-};
-
-// Above this relative eigen-gap the best rotation is well separated from the others: FOAM below
-// finds it, and its eigenvector is accurate without a polish (align_vectors' Newton steps).
-template <class T>
-[[nodiscard]] constexpr T separated_gap() noexcept {
-    return T(1) / T(4);
-}
-
-// m / max |m(i, j)| (m itself for the zero matrix): the matrices below are then of size about 1.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> unit_scaled(const rotation_matrix<T>& m) noexcept {
-    T scale = T(0);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(m(i, j)));
-    if (!(scale > T(0))) return m;
-    rotation_matrix<T> scaled{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) scaled(i, j) = m(i, j) / scale;
-    return scaled;
-}
-
-// trace(R(q)^T m) = q^T K q for the symmetric 4x4 K below (Horn, J. Opt. Soc. Am. A 4(4), 1987;
-// Bar-Itzhack, J. Guidance 23(6), 2000), so the best q is the eigenvector of K's largest
-// eigenvalue. m is unit_scaled, so K's eigenvalues are relative to its largest element; a
-// non-finite element gives NaN.
-template <class T>
-[[nodiscard]] constexpr symmetric_eigen4<T> horn_eigen(const rotation_matrix<T>& m) noexcept {
-    const T k[4][4] = {
-        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
-        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
-        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
-        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
-    return detail::symmetric_eigen(k);
-}
-
-// The best rotation without an eigen-solve, after Markley's FOAM ("Attitude determination using
-// vector observations: a fast optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). For m's
-// singular values s0 >= s1 >= |s2| (s2 < 0 when det m < 0) K's largest eigenvalue is
-// lambda = s0 + s1 + s2, the largest root of (l^2 - |m|^2)^2 - 8 l det m - 4 |adj m|^2; Newton's
-// method from sqrt(3) |m| >= lambda descends to it monotonically (all four roots are real). Then
-// R = ((kappa + |m|^2) m + lambda cof(m) - m m^T m) / zeta, kappa = (lambda^2 - |m|^2) / 2,
-// zeta = lambda kappa - det m = (s0 + s1)(s1 + s2)(s2 + s0). The eigen-gap 2 (s1 + s2) is at least
-// zeta / (2 |m|^2), the returned bound: only where that is separated_gap() or more is the rotation
-// used (K's eigenvector would be as accurate: FOAM measures 3.6 eps at worst, Jacobi's 10.7, over
-// 18,000 noisy point sets); elsewhere zeta's cancellation spoils R. m is unit_scaled.
-template <class T>
-[[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m) noexcept {
-    // cof(m), row by row: the cross products of the other two rows.
-    const rotation_matrix<T> cofactor = rotation_matrix<T>::from_rows(
-        cross(row(m, 1), row(m, 2)), cross(row(m, 2), row(m, 0)), cross(row(m, 0), row(m, 1)));
-    T square = T(0), adjugate_square = T(0);  // |m|^2 and |adj m|^2
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            square += m(i, j) * m(i, j);
-            adjugate_square += cofactor(i, j) * cofactor(i, j);
-        }
-    const T det = determinant(m);
-    T lambda = detail::sqrt(T(3) * square);
-    for (int step = 0; step < 32; ++step) {
-        const T u = lambda * lambda - square;
-        const T value = u * u - T(8) * lambda * det - T(4) * adjugate_square;
-        if (!(value > T(0))) break;  // at the root to rounding (or NaN)
-        const T change = value / (T(4) * lambda * u - T(8) * det);
-        if (!(change > T(0))) break;  // a slope rounded to 0 or below, near a double root
-        lambda -= change;
-        if (!(change > T(4) * detail::epsilon<T>() * lambda)) break;
-    }
-    const T kappa = (lambda * lambda - square) / T(2);
-    const T zeta = lambda * kappa - det;
-    const T bound = zeta / (T(2) * square);
-    if (!(bound >= separated_gap<T>())) return {quaternion<T>::identity(), T(0)};
-    const rotation_matrix<T> cubic = m * transpose(m) * m;
-    rotation_matrix<T> r{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic(i, j)) / zeta;
-    return {to_quaternion(r), bound};
-}
-
-// FOAM where the answer is well separated, Horn's eigenvector otherwise. m is unit_scaled.
-template <class T>
-[[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& m) noexcept {
-    const horn_solution<T> separated = detail::foam(m);
-    if (separated.eigenvalue_gap >= separated_gap<T>()) return separated;
-    const symmetric_eigen4<T> eigen = detail::horn_eigen(m);
-    const quaternion<T>& q = eigen.vectors[0];
-    return {normalize(q.w < T(0) ? -q : q), eigen.values[0] - eigen.values[1]};
-}
-
-}  // namespace detail
-
-/// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
-/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
-/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
-/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
-/// reports it. Non-finite m gives NaN elements.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
-    return to_matrix(detail::solve_horn(detail::unit_scaled(m)).rotation);
-}
-
-/// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
-/// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
-template <class T>
-[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
-    const rotation_matrix<T>& m) noexcept {
-    const detail::horn_solution<T> result = detail::solve_horn(detail::unit_scaled(m));
-    if (!(result.eigenvalue_gap > detail::sqrt(detail::epsilon<T>()))) return std::nullopt;
-    return to_matrix(result.rotation);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_NEAREST_ROTATION_HPP_INCLUDED
-// ---- end quat/nearest_rotation.hpp ----
-
-namespace quat {
-
-template <class T>
-struct alignment;  // align_vectors.hpp; complete wherever a solution is made
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-template <class T>
-struct wahba_solution {
-    alignment<T> result;
-    rotation_matrix<T> profile;    // Davenport's B = sum w_i t_i s_i^T of the scaled data
-    T total_weight;                // sum w_i of the scaled weights
-    T target_scale, source_scale;  // B of the data: profile times these and the weights' scale
-    bool infinite;                 // a weight was infinite (no sensitivity matrix)
-    bool negative;                 // a weight was negative (the callers' debug check)
-};
-
-// 1 where x is zero or lies within [min()^(1/4), max()^(1/4)], where every product of three such
-// sizes stays a normal number; otherwise a power of two p with x / p in [1, 2). Dividing by a power
-// of two is exact, so scaled data is the same data (bar what underflows beside the largest).
-template <class T>
-[[nodiscard]] constexpr T scale_of(T x) noexcept {
-    const T high = detail::sqrt(detail::sqrt(detail::largest<T>()));
-    const T low = detail::sqrt(detail::sqrt(detail::smallest_normal<T>()));
-    if (!(x > high || (x < low && x > T(0)))) return T(1);
-    return binade_of(x);
-}
-
-// max |component|, or infinity for a NaN or infinite component.
-template <class T>
-[[nodiscard]] constexpr T largest_component(const vec3<T>& v) noexcept {
-    if (!detail::is_finite(v)) return detail::infinity<T>();
-    return detail::largest_magnitude(v);
-}
-
-// Whether the non-zero vectors v(i) of the pairs used(i) all lie within `tolerance` radians of one
-// line through 0 (true for none or one): B's rank is then at most one.
-template <class T, class Vector, class Used>
-[[nodiscard]] constexpr bool collinear(std::size_t count, Vector v, Used used) noexcept {
-    vec3<T> reference{T(0), T(0), T(0)};
-    T reference_norm = T(0);
-    for (std::size_t i = 0; i < count; ++i)
-        if (used(i) && norm(v(i)) > reference_norm) {
-            reference = v(i);
-            reference_norm = norm(reference);
-        }
-    const T tolerance = T(64) * detail::epsilon<T>();
-    for (std::size_t i = 0; i < count; ++i)
-        if (used(i) && norm(cross(v(i), reference)) > tolerance * norm(v(i)) * reference_norm)
-            return false;
-    return true;
-}
-
-// Newton's method on the rotation: with c_i = R s_i and R <- exp(phi) R, sum w t . exp(phi) c is
-// sum w t . c + phi . g - phi^T H phi / 2 to second order, g = sum w c x t and
-// H = sum w ((t . c) I - (t c^T + c t^T) / 2), so the step is phi = H^-1 g. The eigenvector of K
-// is only as accurate as eps over K's relative eigen-gap 2 (s1 + s2) / max |B(i, j)|: weights
-// spread over 1e10 leave the rotation about the heavy pairs' direction to about 1e-6. Each step
-// divides that error by about 1 / (eps spread) (H's rounding relative to its smallest eigenvalue),
-// because g is summed from cross products accurate to their own size, not B's. A step that is not
-// a descent (H not positive definite) or implausibly large is not taken.
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr quaternion<T> newton_refine(quaternion<T> q, std::size_t count,
-                                                    Target target, Source source,
-                                                    Weight weight) noexcept {
-    for (int step = 0; step < 8; ++step) {
-        const rotation_matrix<T> r = to_matrix(q);
-        T g[3] = {}, h[3][3] = {}, tau = T(0);
-        for (std::size_t start = 0; start < count; start += summation_block) {
-            const std::size_t end =
-                count - start < summation_block ? count : start + summation_block;
-            T block_g[3] = {}, block_s[3][3] = {}, block_tau = T(0);
-            for (std::size_t i = start; i < end; ++i) {
-                const T w = weight(i);
-                if (!(w > T(0))) continue;
-                const vec3<T> t = target(i), c = rotate(r, source(i));
-                // c x t accurate to its own size (align.hpp): for a pair already aligned it is
-                // tiny, and the plain formula's rounding (eps |c| |t| in every direction) times a
-                // large weight would swamp the small weights' pull about that pair.
-                const vec3<T> gradient = accurate_cross(c, t) * w, wt = t * w;
-                const T tc[3] = {wt.x, wt.y, wt.z}, cc[3] = {c.x, c.y, c.z};
-                block_g[0] += gradient.x;
-                block_g[1] += gradient.y;
-                block_g[2] += gradient.z;
-                block_tau += dot(wt, c);
-                for (int a = 0; a < 3; ++a)
-                    for (int b = 0; b < 3; ++b) block_s[a][b] += tc[a] * cc[b] + tc[b] * cc[a];
-            }
-            tau += block_tau;
-            for (int a = 0; a < 3; ++a) {
-                g[a] += block_g[a];
-                for (int b = 0; b < 3; ++b) h[a][b] -= block_s[a][b] / T(2);
-            }
-        }
-        for (int a = 0; a < 3; ++a) h[a][a] += tau;
-        T phi[3] = {};
-        if (!detail::solve_positive_definite3(h, g, phi)) break;
-        const vec3<T> turn{phi[0], phi[1], phi[2]};
-        const T size = norm(turn);
-        if (!(size <= T(0.125))) break;
-        q = normalize(from_rotation_vector(turn) * q);
-        if (size <= detail::epsilon<T>()) break;
-    }
-    return q.w < T(0) ? -q : q;
-}
-
-// One Newton step of newton_refine's kind from B alone: with N = B R^T = sum w t (R s)^T,
-// g = vee(N - N^T) and H = trace(N) I - (N + N^T) / 2. The eigenvector (or FOAM's closed form) is
-// good to about eps / gap in relative terms, an error the step removes down to B's own rounding,
-// which is where an SVD's answer lies too (measured by quat_accuracy's align_points rows).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> polish_with_profile(const quaternion<T>& q,
-                                                          const T (&b)[3][3]) noexcept {
-    const rotation_matrix<T> n = rotation_matrix<T>{b} * transpose(to_matrix(q));
-    const T g[3] = {n(2, 1) - n(1, 2), n(0, 2) - n(2, 0), n(1, 0) - n(0, 1)};
-    const T trace = n(0, 0) + n(1, 1) + n(2, 2);
-    T h[3][3] = {};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n(i, j) + n(j, i)) / T(2);
-    T phi[3] = {};
-    if (!detail::solve_positive_definite3(h, g, phi)) return q;
-    const quaternion<T> p = normalize(from_rotation_vector(vec3<T>{phi[0], phi[1], phi[2]}) * q);
-    return p.w < T(0) ? -p : p;
-}
-
-// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs
-// with w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x)
-// (1 - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and
-// A = sum w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest
-// at atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds
-// only its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
-template <class T>
-struct turn {
-    T angle;
-    bool unique;
-};
-
-template <class T, class X, class Y, class Weight>
-[[nodiscard]] constexpr turn<T> best_turn(const vec3<T>& axis, std::size_t count, std::size_t skip,
-                                          X x, Y y, Weight weight) noexcept {
-    T sine = T(0), cosine = T(0), size = T(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        const T w = weight(i);
-        if (i == skip || !(w > T(0))) continue;
-        const vec3<T> xi = x(i), yi = y(i);
-        const vec3<T> x_across = accurate_cross(xi, axis), y_across = accurate_cross(yi, axis);
-        sine += w * dot(axis, accurate_cross(xi, yi));
-        cosine += w * dot(x_across, y_across);
-        size += w * norm(x_across) * norm(y_across);
-    }
-    // max(|A|, |S|), not their hypotenuse: squares of tiny sums (weights 1e-300 beside one
-    // of 1) would underflow.
-    const bool unique =
-        detail::max(detail::abs(sine), detail::abs(cosine)) > T(64) * detail::epsilon<T>() * size;
-    return {unique ? detail::atan2(sine, cosine) : T(0), unique};
-}
-
-template <class T>
-[[nodiscard]] constexpr wahba_solution<T> nan_wahba(bool negative) noexcept {
-    const T nan = detail::quiet_nan<T>();
-    const rotation_matrix<T> profile{{{nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}}};
-    return {{{nan, nan, nan, nan}, nan, false}, profile, nan, T(1), T(1), false, negative};
-}
-
-// One pair with infinite weight (scipy >= 1.11's "primary" pair): it is aligned exactly in
-// direction, by the shortest arc P, then the finite pairs choose the turn about its target's
-// direction (best_turn of P s_i onto t_i). Not unique when they have no pull about it.
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr alignment<T> align_with_primary(std::size_t count, std::size_t primary,
-                                                        Target target, Source source,
-                                                        Weight weight) noexcept {
-    const vec3<T> tp = target(primary), sp = source(primary);
-    const T nan = detail::quiet_nan<T>();
-    if (!(squared_norm(tp) > T(0)) || !(squared_norm(sp) > T(0)))
-        return {{nan, nan, nan, nan}, nan, false};  // infinity times a zero vector
-    const quaternion<T> arc = rotation_between(sp, tp);
-    const vec3<T> a = normalize(tp);
-    const rotation_matrix<T> r = to_matrix(arc);
-    const turn<T> best = best_turn(
-        a, count, primary, [&](std::size_t i) { return rotate(r, source(i)); }, target, weight);
-    if (!best.unique) return {arc, T(0), false};  // as for one pair: rotation_between itself
-    const quaternion<T> q = normalize(from_rotation_vector(a * best.angle) * arc);
-    return {q.w < T(0) ? -q : q, T(0), true};
-}
-
-// Davenport's B = sum w t s^T, summed in blocks of summation_block pairs, each block from zero:
-// rounding errors then grow with the block length plus the number of blocks, not with the count.
-// For 1e6 noisy pairs in float the plain running sums put the rotation 114 eps from its long
-// double value; blocked, 2.7 eps (double: 16.6 and 2.5 eps). Returns sum w.
-template <class T>
-struct data_sizes {
-    T target, source, weight, lowest;  // largest |component|, largest |w|, lowest w (or 0)
-};
-
-template <class T, class Target, class Source, class Weight>
-constexpr T profile_of(T (&b)[3][3], data_sizes<T>& sizes, std::size_t count, Target target,
-                       Source source, Weight weight) noexcept {
-    T total = T(0);
-    sizes = {T(0), T(0), T(0), T(0)};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) b[r][c] = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
-        T block[3][3] = {}, block_total = T(0);
-        for (std::size_t i = start; i < end; ++i) {
-            const T w = weight(i);
-            const vec3<T> u = target(i), s = source(i), t = u * w;
-            // Exact for finite B (a NaN or infinite component makes B so): no checks here.
-            sizes.target = detail::max(
-                sizes.target,
-                detail::max(detail::abs(u.x), detail::max(detail::abs(u.y), detail::abs(u.z))));
-            sizes.source = detail::max(
-                sizes.source,
-                detail::max(detail::abs(s.x), detail::max(detail::abs(s.y), detail::abs(s.z))));
-            sizes.weight = detail::max(sizes.weight, detail::abs(w));
-            sizes.lowest = w < sizes.lowest ? w : sizes.lowest;
-            block[0][0] += t.x * s.x;
-            block[0][1] += t.x * s.y;
-            block[0][2] += t.x * s.z;
-            block[1][0] += t.y * s.x;
-            block[1][1] += t.y * s.y;
-            block[1][2] += t.y * s.z;
-            block[2][0] += t.z * s.x;
-            block[2][1] += t.z * s.y;
-            block[2][2] += t.z * s.z;
-            block_total += w;
-        }
-        total += block_total;
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) b[r][c] += block[r][c];
-    }
-    return total;
-}
-
-// sum w_i t_i . (R s_i) = trace(R^T B), so R is the rotation nearest to B: the eigenvector of the
-// largest eigenvalue of Horn's (Davenport's) K of B (Davenport's q-method; Markley & Crassidis,
-// Fundamentals of Spacecraft Attitude Determination and Control, 2014, ch. 5), polished by
-// newton_refine where K's relative eigen-gap leaves it inaccurate. K's eigenvalues are
-// s0 + s1 + s2 and s0 - s1 - s2, ... for B's singular values s0 >= s1 >= |s2| (s2 < 0 when
-// det B < 0). The optimum is unique unless B has rank one or less (the used sources or the used
-// targets collinear, see collinear()) or, where the top two eigenvalues nearly tie, best_turn finds
-// no pull. Collinear data tie them to rounding, so the rank is only examined below sqrt(eps).
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr alignment<T> rotation_of_profile(const T (&b)[3][3], std::size_t count,
-                                                         Target target, Source source,
-                                                         Weight weight) noexcept {
-    const rotation_matrix<T> scaled = unit_scaled(rotation_matrix<T>{b});
-    const horn_solution<T> separated = detail::foam(scaled);
-    // FOAM's error grows as its gap bound shrinks: above 1 (B's singular values within about a
-    // factor 2 of each other) it is within a few eps as it is, below that one polish.
-    if (separated.eigenvalue_gap >= T(1)) return {separated.rotation, T(0), true};
-    if (separated.eigenvalue_gap >= separated_gap<T>())
-        return {polish_with_profile(separated.rotation, b), T(0), true};
-    const symmetric_eigen4<T> eigen = detail::horn_eigen(scaled);
-    const T gap = eigen.values[0] - eigen.values[1];
-    const T tie = detail::sqrt(detail::epsilon<T>());
-    bool unique = gap > tie;
-    quaternion<T> q = eigen.vectors[0];
-    if (!unique) {
-        // One pair outweighing all others together by 1 / eps (w |t| |s|, what it adds to B)
-        // leaves theirs below its rounding in B, in K and in Newton's H: it is then aligned first,
-        // as an infinite weight is, and the others turn about it (what they move it by is below
-        // eps). Such a pair ties K's top two eigenvalues, so it is only looked for here.
-        T heaviest = T(0), others = T(0);
-        std::size_t heavy = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            const T load = weight(i) * norm(target(i)) * norm(source(i));
-            if (load > heaviest) {
-                others += heaviest;
-                heaviest = load;
-                heavy = i;
-            } else {
-                others += load;
-            }
-        }
-        if (count > 1 && others < detail::epsilon<T>() * heaviest)
-            return align_with_primary<T>(count, heavy, target, source, weight);
-        const auto used = [&](std::size_t i) {
-            return weight(i) > T(0) && squared_norm(target(i)) > T(0) &&
-                   squared_norm(source(i)) > T(0);
-        };
-        unique = !collinear<T>(count, source, used) && !collinear<T>(count, target, used);
-    }
-    if (unique && !(gap > tie)) {
-        // The two best eigenvectors v0, v1 nearly tie (weights spread by 1e8 or more, or a
-        // symmetric set): the optimum lies near the circle v0 (cos a + u sin a), u the vector part
-        // of v0* v1, the rotations R(v0) rot(u, 2 a), and B's rounding leaves v0 anywhere on it.
-        // best_turn finds the turn from the pairs themselves; none at all: not unique.
-        const quaternion<T> v0 = eigen.vectors[0], between = conjugate(v0) * eigen.vectors[1];
-        const vec3<T> u = normalize(vec3<T>{between.x, between.y, between.z});
-        const turn<T> best = best_turn(
-            u, count, count, source,
-            [&](std::size_t i) { return rotate(conjugate(v0), target(i)); }, weight);
-        unique = best.unique;
-        if (unique) q = v0 * from_rotation_vector(u * best.angle);
-    }
-    if (unique) {
-        q = normalize(q.w < T(0) ? -q : q);
-        // The eigenvector is good to about eps / gap: polish it where that is coarse. Below
-        // 64 eps, Newton's H is too coarse to converge (each step would cut the error by less
-        // than 32); best_turn's answer is then already good to eps.
-        if (gap < separated_gap<T>() && gap > T(64) * detail::epsilon<T>())
-            q = newton_refine(q, count, target, source, weight);
-        else if (gap >= separated_gap<T>()) q = polish_with_profile(q, b);
-    } else if (count == 1 && eigen.values[0] > T(0)) {
-        q = rotation_between(source(0), target(0));
-    } else {
-        // The optimal rotations span the eigenvectors tied with the largest; of those, the one
-        // nearest the identity (the projection of 1 onto the span), which for collinear pairs
-        // is the shortest arc, as for one pair, and for B = 0 (no data) the identity. When
-        // every optimal rotation is a half turn, the projection is 0 and any of them will do.
-        quaternion<T> nearest{T(0), T(0), T(0), T(0)};
-        for (int n = 0; n < 4; ++n)
-            if (eigen.values[0] - eigen.values[n] <= tie)
-                nearest += eigen.vectors[n] * eigen.vectors[n].w;
-        if (squared_norm(nearest) > T(0)) q = nearest;
-        q = normalize(q.w < T(0) ? -q : q);
-    }
-    return {q, T(0), unique};
-}
-
-// sqrt(sum w |t - R s|^2) from the residuals themselves: scipy's sum w (|t|^2 + |s|^2) -
-// 2 trace(R^T B) cancels down to about sqrt(epsilon) times the vectors' length when they fit
-// exactly. target, source and weight are the data divided by the powers of two in `scale`.
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr T rssd_of(const quaternion<T>& q, std::size_t count, Target target,
-                                  Source source, Weight weight) noexcept {
-    const rotation_matrix<T> r = to_matrix(q);
-    T squares = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
-        T block = T(0);
-        for (std::size_t i = start; i < end; ++i)
-            block += weight(i) * squared_norm(target(i) - rotate(r, source(i)));
-        squares += block;
-    }
-    return detail::sqrt(squares);
-}
-
-// The data are first summed as they are; only where that overflows, underflows (sizes outside
-// [min()^(1/4), max()^(1/4)]), meets an infinite weight or NaN are they examined closely and
-// divided by powers of two (scale_of), so sizes from subnormal to max() give the same rotation.
-template <class T, class Target, class Source, class Weight>
-[[nodiscard]] constexpr wahba_solution<T> solve_wahba(Target target, Source source,
-                                                      std::size_t count, Weight weight) noexcept {
-    T b[3][3] = {};
-    data_sizes<T> sizes{};
-    T total = profile_of(b, sizes, count, target, source, weight);
-    bool plain = detail::is_finite(total);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) plain = plain && detail::is_finite(b[r][c]);
-    T target_size = sizes.target, source_size = sizes.source, weight_size = sizes.weight,
-      lowest = sizes.lowest;
-    std::size_t infinite = 0, primary = 0;
-    bool finite = true;
-    plain = plain && scale_of(target_size) == T(1) && scale_of(source_size) == T(1) &&
-            scale_of(weight_size) == T(1);
-    if (!plain) {
-        target_size = source_size = weight_size = lowest = T(0);
-        for (std::size_t i = 0; i < count; ++i) {
-            const T w = weight(i);
-            lowest = w < lowest ? w : lowest;
-            if (w == detail::infinity<T>()) {
-                ++infinite;
-                primary = i;
-            } else {
-                finite = finite && detail::is_finite(w);
-                weight_size = detail::max(weight_size, detail::abs(w));
-            }
-            target_size = detail::max(target_size, largest_component(target(i)));
-            source_size = detail::max(source_size, largest_component(source(i)));
-        }
-    }
-    if (!finite || infinite > 1 || !detail::is_finite(target_size) ||
-        !detail::is_finite(source_size))
-        return nan_wahba<T>(lowest < T(0));
-    if (plain) {
-        alignment<T> result = rotation_of_profile(b, count, target, source, weight);
-        result.rssd = rssd_of(result.rotation, count, target, source, weight);
-        return {result, rotation_matrix<T>{b}, total, T(1), T(1), false, lowest < T(0)};
-    }
-    // Separate scales for the rotation (only B's direction counts), one for both in the residuals.
-    const T pt = scale_of(target_size), ps = scale_of(source_size), pw = scale_of(weight_size);
-    const T p = scale_of(detail::max(target_size, source_size));
-    const auto scaled_target = [&](std::size_t i) { return target(i) / pt; };
-    const auto scaled_source = [&](std::size_t i) { return source(i) / ps; };
-    const auto scaled_weight = [&](std::size_t i) {
-        const T w = weight(i);  // an infinite weight's pair is aligned apart, and not in rssd
-        return w == detail::infinity<T>() ? T(0) : w / pw;
-    };
-    total = profile_of(b, sizes, count, scaled_target, scaled_source, scaled_weight);
-    alignment<T> result =
-        infinite == 1
-            ? align_with_primary<T>(count, primary, scaled_target, scaled_source, scaled_weight)
-            : rotation_of_profile(b, count, scaled_target, scaled_source, scaled_weight);
-    // An infinite weight's pair is left out of rssd, as scipy does (its residual is the
-    // difference of the lengths).
-    result.rssd = rssd_of(
-                      result.rotation, count, [&](std::size_t i) { return target(i) / p; },
-                      [&](std::size_t i) { return source(i) / p; }, scaled_weight) *
-                  detail::sqrt(pw) * p;
-    return {result, rotation_matrix<T>{b}, total, pt, ps, infinite != 0, lowest < T(0)};
-}
-
-// scipy's sensitivity mean(w) / zeta (kappa I + B B^T), kappa = s0 s1 + s1 s2 + s2 s0 and
-// zeta = (s0 + s1) (s1 + s2) (s2 + s0) for B's singular values signed as above, here without an
-// SVD: with lambda = s0 + s1 + s2 = trace(R^T B), kappa = (lambda^2 - |B|_F^2) / 2 and
-// zeta = lambda kappa - det B (Markley, "Attitude determination using vector observations: a fast
-// optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). B is scaled to a largest element of 1
-// first, and the scale put back at the end (sensitivity scales as 1 / |B|).
-template <class T>
-[[nodiscard]] constexpr matrix3<T> wahba_sensitivity(const wahba_solution<T>& solution,
-                                                     std::size_t count) noexcept {
-    T scale = T(0);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(solution.profile(i, j)));
-    if (!(scale > T(0))) scale = T(1);
-    rotation_matrix<T> b{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) b(i, j) = solution.profile(i, j) / scale;
-    const rotation_matrix<T> r = to_matrix(solution.result.rotation);
-    T lambda = T(0), frobenius = T(0);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            lambda += r(i, j) * b(i, j);
-            frobenius += b(i, j) * b(i, j);
-        }
-    const T kappa = (lambda * lambda - frobenius) / T(2);
-    const T zeta = lambda * kappa - determinant(b);
-    const T factor =
-        solution.total_weight / static_cast<T>(static_cast<double>(count)) / (scale * zeta);
-    // The weights' scale cancels in mean(w) / |B|; the vectors' scales are divided out one at a
-    // time, since their product may overflow where the quotient does not.
-    const T nan = detail::quiet_nan<T>();
-    matrix3<T> sensitivity{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            sensitivity(i, j) =
-                solution.infinite ? nan
-                                  : factor * ((i == j ? kappa : T(0)) + dot(row(b, i), row(b, j))) /
-                                        solution.target_scale / solution.source_scale;
-    return sensitivity;
-}
-
-// solve_wahba over two arrays.
-template <class T, class Weight>
-[[nodiscard]] constexpr wahba_solution<T> solve_wahba(const vec3<T>* targets,
-                                                      const vec3<T>* sources, std::size_t count,
-                                                      Weight weight) noexcept {
-    return solve_wahba<T>([targets](std::size_t i) { return targets[i]; },
-                          [sources](std::size_t i) { return sources[i]; }, count, weight);
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_WAHBA_HPP_INCLUDED
-// ---- end quat/detail/wahba.hpp ----
-
-namespace quat {
-
-/// The rotation that best aligns two sets of vectors, and how well it does (align_vectors).
-template <class T>
-struct alignment {
-    /// Unit quaternion, w >= 0, of the rotation R minimizing sum w_i |targets_i - R sources_i|^2.
-    quaternion<T> rotation;
-    /// sqrt(sum w_i |targets_i - R sources_i|^2), summed from the residuals.
-    T rssd;
-    /// False when other rotations fit as well: one pair, collinear vectors, and a few symmetric
-    /// sets (see align_vectors for the thresholds).
-    bool unique;
-};
-
-/// An alignment and scipy's sensitivity matrix (align_vectors_with_sensitivity): an alignment
-/// with one more field, so it passes wherever an alignment<T> is taken.
-template <class T>
-struct alignment_with_sensitivity : alignment<T> {
-    /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
-    /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
-    /// for return_sensitivity=True.
-    matrix3<T> sensitivity;
-};
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-
-/// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
-/// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
-/// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
-/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
-/// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
-/// two first). unique is false when other rotations fit as well: when the sources, or the targets,
-/// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
-/// line (B = sum targets[i] sources[i]^T has rank one or zero), or the two best rotations tie to
-/// rounding (Davenport's K's top two eigenvalues within 32 epsilon of max |B(i, j)|: a few
-/// symmetric sets). Then the optimal rotation nearest the identity: rotation_between(sources[0],
-/// targets[0]) for one pair, the identity for no pairs (rssd 0). A NaN or infinite component gives
-/// a NaN rotation and rssd, unique = false.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
-                                                   const Sources& sources) noexcept {
-    QUAT_ASSERT(detail::same_size(targets, sources),
-                "quat::align_vectors: targets and sources differ in size");
-    if (!detail::same_size(targets, sources)) return detail::nan_wahba<T>(false).result;
-    return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
-                                  detail::size_of(sources), [](std::size_t) { return T(1); })
-        .result;
-}
-
-/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors;
-/// other lengths as in align_vectors(targets, sources)):
-/// R minimizes sum weights[i] |targets[i] - R sources[i]|^2, and rssd is weighted alike. A zero
-/// weight drops its pair; weights may spread over many orders of magnitude (the rotation is
-/// polished by Newton steps where they leave Davenport's eigenvector coarse). One infinite weight
-/// (scipy >= 1.11): its pair is aligned exactly in direction, by the shortest arc, the others
-/// choose the turn about that pair's target, and rssd leaves that pair out; unique is then false
-/// when the other pairs have no component across that target (the turn is 0). Two or more infinite
-/// weights (scipy raises), a NaN weight, or an infinite weight on a zero vector give a NaN result.
-/// Precondition: weights >= 0 (QUAT_ASSERT; unchecked, a negative weight counts against its pair,
-/// and rssd may be NaN).
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
-                                                   const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::same_size(targets, sources, weights),
-                "quat::align_vectors: targets, sources and weights differ in size");
-    if (!detail::same_size(targets, sources, weights)) return detail::nan_wahba<T>(false).result;
-    const auto* w = detail::data_of(weights);
-    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
-        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
-        [w](std::size_t i) { return static_cast<T>(w[i]); });
-    QUAT_ASSERT(!solution.negative, "quat::align_vectors: a weight is negative");
-    return solution.result;
-}
-
-namespace detail {
-
-/// The alignment of count pairs, or std::nullopt where it is NaN or its rssd overflows.
-template <class T, class Weight>
-[[nodiscard]] constexpr std::optional<alignment<T>> checked_alignment(const vec3<T>* targets,
-                                                                      const vec3<T>* sources,
-                                                                      std::size_t count,
-                                                                      Weight weight) noexcept {
-    const alignment<T> result = solve_wahba<T>(targets, sources, count, weight).result;
-    if (!is_finite(result.rotation.w) || !is_finite(result.rssd)) return std::nullopt;
-    return result;
-}
-
-}  // namespace detail
-
-/// align_vectors(targets, sources), or std::nullopt for input it does not align: no pairs,
-/// containers of different sizes, a NaN or infinite component, or an rssd beyond max() (vectors
-/// near max() that stay apart). A set that fits other rotations as well is not bad input: it gives
-/// an alignment with unique = false, as align_vectors does. Never asserts.
-template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
-    const Targets& targets, const Sources& sources) noexcept {
-    const std::size_t count = detail::size_of(sources);
-    if (count == 0 || detail::size_of(targets) != count) return std::nullopt;
-    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
-                                        [](std::size_t) { return T(1); });
-}
-
-/// align_vectors(targets, sources, weights), or std::nullopt as try_align_vectors(targets, sources)
-/// and also when the weights differ in size, a weight is negative or NaN, no weight is positive, or
-/// more than one is infinite. Never asserts.
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
-    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    const std::size_t count = detail::size_of(sources);
-    if (count == 0 || detail::size_of(targets) != count || detail::size_of(weights) != count)
-        return std::nullopt;
-    const auto* w = detail::data_of(weights);
-    bool positive = false;
-    for (std::size_t i = 0; i < count; ++i) {
-        const T wi = static_cast<T>(w[i]);
-        if (!(wi >= T(0))) return std::nullopt;  // negative or NaN: the debug check's case
-        positive = positive || wi > T(0);
-    }
-    if (!positive) return std::nullopt;
-    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
-                                        [w](std::size_t i) { return static_cast<T>(w[i]); });
-}
-
-/// align_vectors(targets, sources, weights) and scipy's sensitivity matrix: mean(weights) / zeta
-/// (kappa I + B B^T) with B = sum weights[i] targets[i] sources[i]^T, kappa and zeta symmetric
-/// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
-/// mean of the targets' error variances (weights inversely proportional to them), it is the
-/// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
-/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
-template <class Targets, class Sources, class Weights,
-          class T = detail::element_scalar_t<vec3, Targets>>
-[[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
-    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
-    QUAT_ASSERT(
-        detail::same_size(targets, sources, weights),
-        "quat::align_vectors_with_sensitivity: targets, sources and weights differ in size");
-    const auto* w = detail::data_of(weights);
-    const detail::wahba_solution<T> solution =
-        detail::same_size(targets, sources, weights)
-            ? detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
-                                     detail::size_of(sources),
-                                     [w](std::size_t i) { return static_cast<T>(w[i]); })
-            : detail::nan_wahba<T>(false);
-    QUAT_ASSERT(!solution.negative, "quat::align_vectors_with_sensitivity: a weight is negative");
-    return {solution.result, detail::wahba_sensitivity(solution, detail::size_of(sources))};
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_ALIGN_VECTORS_HPP_INCLUDED
-// ---- end quat/align_vectors.hpp ----
-// ---- begin quat/batch.hpp ----
-// Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
-// many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
-// objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
-// structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
-// 1.6x the compiled loop at -march=x86-64-v3), and float arrays that with their input exceed the
-// last-level cache (read once at run time by cpuid, else 16 MiB of output) are
-// written on x86 with non-temporal stores (both layouts; plain stores elsewhere), the one use of
-// intrinsics (detail/streaming_store.hpp).
-//
-// Arrays are passed either as pointer + count or as any contiguous container or view with data()
-// and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
-// Aliasing: an output may be exactly the input (in place) or not overlap it at all. A partial
-// overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (one pointer-range
-// check per call); with NDEBUG the values written are unspecified.
-//
-// One definition across instruction sets: the functions here are compiled differently under
-// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
-// live in the inline namespace named after the instruction set (detail/math.hpp says what the key
-// covers). The struct-of-arrays views are in soa.hpp, which this header includes; the loops that
-// rotate and transform points (shared with rigid_batch.hpp) in detail/transform_points.hpp.
-#ifndef QUAT_BATCH_HPP_INCLUDED
-#define QUAT_BATCH_HPP_INCLUDED
-
-#include <cstddef>
-#include <type_traits>
-#include <utility>
-
-// ---- begin quat/detail/chained_product.hpp ----
-// The product of many factors in four interleaved chains: compose over an array of quaternions
-// (batch.hpp) and of dual quaternions (rigid_batch.hpp).
-#ifndef QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
-#define QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
-
-#include <cstddef>
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// The number of chains: enough for a CPU to overlap the products (each waits on its predecessor).
-inline constexpr std::size_t product_chains = 4;
-
-// The four chains of chained_product for types whose four running products the compiler keeps in
-// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1].
-// A type that needs another layout (dual quaternions, rigid_batch.hpp) gives chained_product a
-// class with the same static member.
-template <class Value>
-struct chain_values {
-    static constexpr void run_products(const Value* f, std::size_t run,
-                                       Value (&chain)[product_chains]) noexcept {
-        Value acc[product_chains] = {Value::identity(), Value::identity(), Value::identity(),
-                                     Value::identity()};
-        for (std::size_t i = 0; i < run; ++i)
-            for (std::size_t j = 0; j < product_chains; ++j) acc[j] = acc[j] * f[j * run + i];
-        for (std::size_t j = 0; j < product_chains; ++j) chain[j] = acc[j];
-    }
-};
-
-// The product f[0] f[1] ... f[count - 1] (f[count - 1] applies first); identity when count == 0.
-// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
-// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-// the same product as the left-to-right loop by associativity, rounded differently. Never inlined:
-// g++ fuses multiply-adds differently in different callers (-ffp-contract=fast), and one copy keeps
-// compose(factors) and compose(pointer, count) equal to the last bit.
-template <class Value, class Chains = chain_values<Value>>
-[[nodiscard, gnu::noinline]] constexpr Value chained_product(const Value* f,
-                                                             std::size_t count) noexcept {
-    constexpr std::size_t lanes = product_chains;
-    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
-        Value product = Value::identity();
-        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
-        return product;
-    }
-    const std::size_t run = count / lanes;
-    Value chain[lanes] = {};
-    Chains::run_products(f, run, chain);
-    // The factors beyond the four runs join the last chain.
-    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
-    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
-// ---- end quat/detail/chained_product.hpp ----
-// ---- begin quat/detail/overlap.hpp ----
-// Whether two arrays overlap: the aliasing preconditions of the functions over many elements
-// (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
-#ifndef QUAT_DETAIL_OVERLAP_HPP_INCLUDED
-#define QUAT_DETAIL_OVERLAP_HPP_INCLUDED
-
-#include <cstddef>
-#include <cstdint>
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
-// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
-[[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                   std::size_t b_bytes) noexcept {
-    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
-    return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
-}
-// True when the two ranges are one and the same (an in-place call) or do not overlap.
-[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
-                                           std::size_t b_bytes) noexcept {
-    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_OVERLAP_HPP_INCLUDED
-// ---- end quat/detail/overlap.hpp ----
-// ---- begin quat/detail/transform_points.hpp ----
-// The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
-// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
-// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
-// its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
-// last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
-#ifndef QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
-#define QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
-
-#include <cstddef>
-#include <cstdint>
-#include <type_traits>
-
-// ---- begin quat/soa.hpp ----
-// Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
-// component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
-// them are in batch.hpp (rotate), rigid_batch.hpp (transform) and elementwise.hpp (rotate_each).
-//
-// The view types are the same under every instruction set, so they stay outside the instruction-set
-// namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
-#ifndef QUAT_SOA_HPP_INCLUDED
-#define QUAT_SOA_HPP_INCLUDED
-
-#include <cstddef>
-#include <type_traits>
-
-
-namespace quat {
-
-/// Points stored as three separate coordinate arrays (struct of arrays), each `count` long.
-/// Use soa_points<const T> for inputs and soa_points<T> for outputs; soa_points<T> converts to
-/// soa_points<const T>, so one object can be both (an in-place rotate(q, points, points)).
-template <class T>
-struct soa_points {
-    T* x;               ///< x coordinates
-    T* y;               ///< y coordinates
-    T* z;               ///< z coordinates
-    std::size_t count;  ///< number of points in each array
-
-    /// The same arrays, read-only. Always inlined: a member function is not keyed by instruction
-    /// set as quat's free functions are (see detail/math.hpp), so no copy of it may be emitted.
-    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
-    [[gnu::always_inline]] constexpr operator soa_points<const U>() const noexcept {
-        return {x, y, z, count};
-    }
-};
-
-/// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
-/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
-/// soa_quaternions<T> converts to it.
-template <class T>
-struct soa_quaternions {
-    T* w;               ///< scalar parts
-    T* x;               ///< i components
-    T* y;               ///< j components
-    T* z;               ///< k components
-    std::size_t count;  ///< number of rotations in each array
-
-    /// The same arrays, read-only; always inlined, as soa_points' conversion.
-    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
-    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
-        return {w, x, y, z, count};
-    }
-};
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// The aliasing rule of the struct-of-arrays forms: each output array is one of the input arrays or
-// overlaps none of them; every array holds `count` elements. The inputs come as a plain array, not
-// a braced list: std::initializer_list's members are the standard library's inline functions, not
-// keyed by instruction set.
-template <class T, std::size_t N>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
-                                        std::size_t count) noexcept {
-    const std::size_t bytes = count * sizeof(T);
-    const T* const outputs[] = {output.x, output.y, output.z};
-    for (const T* out : outputs)
-        for (const T* in : inputs)
-            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
-    return true;
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_SOA_HPP_INCLUDED
-// ---- end quat/soa.hpp ----
-// ---- begin quat/detail/interleaved_points_avx.hpp ----
-// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
-// out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
-// builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
-// from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
-// non-temporal stores): <immintrin.h> alone doubled the compile time of a translation unit
-// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
-//
-// Why: x, y, z interleaved in memory must be separated (de-interleaved) before 8 points can share a
-// vector multiply, and joined again after. Compiled from a plain loop, g++ 12 does this with 12
-// vpermd, 5 vpermilps and a vinsertf128 per 8 points with -march=x86-64-v3: 18 uops that only
-// port 5 of an Intel core runs, 2.25 cycles per point, three times the 9 multiply-adds' own cost
-// (GLM's and Eigen's plain loops compile to the same). In transform_interleaved each 128-bit lane
-// holds 4 whole points (loaded as 16-byte halves), so every shuffle stays inside a lane: per
-// coordinate, two blends (any of ports 0, 1, 5) and one in-lane permute (port 5) take it out, and
-// the same permute and two blends put it back. Per 8 points: 6 port-5 permutes, 12 blends, 3 lane
-// inserts and 9 multiply-adds, 30 uops over three ports, 1.25 cycles per point.
-#ifndef QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
-#define QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
-
-#include <cstddef>
-#include <cstring>
-
-// ---- begin quat/detail/streaming_store.hpp ----
-// Non-temporal stores for the batch functions, and the last-level cache size that decides when they
-// pay: the one place quat uses x86 intrinsics and cpuid.
-#ifndef QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
-#define QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
-
-#include <cstddef>
-#include <cstdint>
-#include <cstring>
-
-#if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
-#endif
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
-#include <cpuid.h>
-#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
-#include <intrin.h>
-#endif
-
-namespace quat {
-// Keyed by instruction set (see detail/math.hpp): has_streaming_stores and the code below depend on
-// __SSE__, __AVX__ and __AVX512F__, which the key includes.
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
-#if defined(__SSE__) || defined(_M_X64)
-inline constexpr bool has_streaming_stores = true;
-#else
-inline constexpr bool has_streaming_stores = false;
-#endif
-
-// Floats per non-temporal store: the widest vector of the build. A 64-byte store (AVX-512) fills a
-// cache line at once; narrower ones fill it in order, which the write-combining buffer joins.
-// Measured on a Zen 4 (4M points, g++ 12, medians of 9): 256-bit stores moved the batch rotate
-// 5-15 % faster than 128-bit ones.
-#if defined(__AVX512F__) && defined(__has_builtin)
-#if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps512)
-inline constexpr std::size_t stream_width = 16;
-#else
-inline constexpr std::size_t stream_width = 4;
-#endif
-#elif defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps256)
-inline constexpr std::size_t stream_width = 8;
-#else
-inline constexpr std::size_t stream_width = 4;
-#endif
-#else
-inline constexpr std::size_t stream_width = 4;
-#endif
-
-#if defined(__SSE__) || defined(_M_X64)
-// One non-temporal store of stream_width floats from `from` (any alignment) to `to` (aligned to
-// the store's width). clang spells every width with one builtin, g++ has one per width.
-inline void stream_vector(float* to, const float* from) noexcept {
-    if constexpr (stream_width == 4) {
-        _mm_stream_ps(to, _mm_loadu_ps(from));
-    } else {
-#if defined(__has_builtin)
-        using vector = float __attribute__((vector_size(4 * stream_width)));
-        vector v;
-        std::memcpy(&v, from, sizeof v);
-#if __has_builtin(__builtin_nontemporal_store)
-        __builtin_nontemporal_store(v, reinterpret_cast<vector*>(to));
-#elif defined(__AVX512F__) && __has_builtin(__builtin_ia32_movntps512)
-        __builtin_ia32_movntps512(to, v);
-#elif defined(__AVX__) && __has_builtin(__builtin_ia32_movntps256)
-        __builtin_ia32_movntps256(to, v);
-#endif
-#endif
-    }
-}
-#endif
-
-// Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
-// stores elsewhere: plain stores up to the first address aligned to the store's width, then the
-// widest non-temporal stores of the build.
-inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
-    std::size_t i = 0;
-#if defined(__SSE__) || defined(_M_X64)
-    constexpr std::size_t bytes = sizeof(float) * stream_width;
-    for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
-    for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
-#endif
-    for (; i < n; ++i) to[i] = from[i];
-}
-
-// Makes the streamed stores visible before returning, like ordinary stores.
-inline void stream_fence() noexcept {
-#if defined(__SSE__) || defined(_M_X64)
-    _mm_sfence();
-#endif
-}
-
-// The size in bytes of the largest cache that cpuid's deterministic cache parameters describe
-// (Intel's leaf 4, AMD's leaf 0x8000001D: the same layout; the one that does not apply reads as
-// no caches), for the core that asks: on AMD that is its CCX's L3, not the sum over the chip.
-// 0 where there is no cpuid or it describes no cache.
-inline std::size_t cpuid_largest_cache_bytes() noexcept {
-    std::size_t largest = 0;
-#if ((defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))) || \
-    (defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86)))
-    const unsigned leaves[] = {4u, 0x8000001Du};
-    for (const unsigned leaf : leaves) {
-        for (unsigned index = 0; index < 16; ++index) {
-            unsigned a = 0, b = 0, c = 0, d = 0;
-#if defined(_MSC_VER) && !defined(__clang__)
-            int r[4] = {};
-            __cpuid(r, static_cast<int>(leaf & 0x80000000u));
-            if (static_cast<unsigned>(r[0]) < leaf) break;
-            __cpuidex(r, static_cast<int>(leaf), static_cast<int>(index));
-            a = static_cast<unsigned>(r[0]), b = static_cast<unsigned>(r[1]);
-            c = static_cast<unsigned>(r[2]), d = static_cast<unsigned>(r[3]);
-#else
-            // Returns 0 when the leaf is beyond the processor's maximum.
-            if (__get_cpuid_count(leaf, index, &a, &b, &c, &d) == 0) break;
-#endif
-            static_cast<void>(d);
-            if ((a & 31u) == 0) break;     // cache type "null": no more caches
-            if ((a & 31u) == 2) continue;  // instruction cache
-            const std::size_t ways = (b >> 22) + 1, partitions = ((b >> 12) & 1023u) + 1,
-                              line = (b & 4095u) + 1, sets = std::size_t(c) + 1;
-            const std::size_t size = ways * partitions * line * sets;
-            if (size > largest) largest = size;
-        }
-        if (largest != 0) break;
-    }
-#endif
-    return largest;
-}
-
-// The fixed threshold of earlier versions, and the last resort where no cache size can be read:
-// 16 MiB of output.
-inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
-
-// The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
-// sysconf, whose L3 figure virtual machines may invent (320 MiB on a Zen 4 guest whose cpuid and
-// lscpu say 32 MiB), and which would bring <unistd.h>'s names into every user's code: streaming
-// happens only on x86, where cpuid is always there.
-inline std::size_t last_level_cache_bytes() noexcept {
-    static const std::size_t bytes = cpuid_largest_cache_bytes();
-    return bytes;
-}
-
-// The batch functions stream an output of at least this many bytes. The rule: stream when the
-// data one call touches, input and output (twice the output), exceeds the last-level cache, so
-// the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
-// each line only adds a third to the memory traffic; below that plain stores, which leave the
-// result in cache. Without a cache size, the fixed 16 MiB of earlier versions.
-inline std::size_t streaming_threshold_bytes() noexcept {
-    const std::size_t cache = last_level_cache_bytes();
-    return cache == 0 ? default_streaming_bytes : cache / 2;
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
-// ---- end quat/detail/streaming_store.hpp ----
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-
-using float4 = float __attribute__((vector_size(16)));
-using float8 = float __attribute__((vector_size(32)));
-
-[[nodiscard]] inline float4 load4(const float* p) noexcept {
-    float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
-// A plain store, or a non-temporal one (p aligned to 16 bytes) when Stream.
-template <bool Stream>
-inline void put4(float* p, float4 v) noexcept {
-    if constexpr (Stream) {
-        _mm_stream_ps(p, v);
-    } else {
-        store4(p, v);
-    }
-}
-
-// Blends of a and b lane by lane (mask bit i set: element i from b), as vblendps encodes them.
-[[nodiscard]] inline float8 blend_2_6(float8 a, float8 b) noexcept {
-    return __builtin_shufflevector(a, b, 0, 1, 10, 3, 4, 5, 14, 7);
-}
-[[nodiscard]] inline float8 blend_1_5(float8 a, float8 b) noexcept {
-    return __builtin_shufflevector(a, b, 0, 9, 2, 3, 4, 13, 6, 7);
-}
-[[nodiscard]] inline float8 blend_0_3_4_7(float8 a, float8 b) noexcept {
-    return __builtin_shufflevector(a, b, 8, 1, 2, 11, 12, 5, 6, 15);
-}
-// In-lane permutes, each its own inverse: (0 3 2 1), (1 0 3 2), (2 1 0 3) in each half.
-[[nodiscard]] inline float8 swap_1_3(float8 v) noexcept {
-    return __builtin_shufflevector(v, v, 0, 3, 2, 1, 4, 7, 6, 5);
-}
-[[nodiscard]] inline float8 swap_pairs(float8 v) noexcept {
-    return __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6);
-}
-[[nodiscard]] inline float8 swap_0_2(float8 v) noexcept {
-    return __builtin_shufflevector(v, v, 2, 1, 0, 3, 6, 5, 4, 7);
-}
-
-// Rotates (and translates when Translate) points [0, n - n % 8) of the float array `in`, three
-// floats a point, into `out`, and returns how many it did. out == in is safe: each group of 8
-// points is read whole before it is written. The sums are m00 x + m01 y + m02 z in that order, as
-// the scalar loop has them (contracted into FMAs alike where the target has them). With Stream the
-// stores are non-temporal (out aligned to 16 bytes): the 16-byte pieces of a group are written in
-// address order, so the write-combining buffers fill whole lines, and the memory writes overlap
-// the loads and arithmetic of the next groups, which a computed block streamed afterwards does not
-// (4M points on a Zen 4: 3.2-3.5 ms against 3.5-3.8 through a buffer; streaming copy 3.2-3.3).
-template <bool Translate, bool Stream = false>
-[[nodiscard]] inline std::size_t transform_interleaved(const rotation_matrix<float>& m,
-                                                       const vec3<float>& t, const float* in,
-                                                       float* out, std::size_t n) noexcept {
-    auto splat = [](float s) noexcept { return float8{s, s, s, s, s, s, s, s}; };
-    const float8 m00 = splat(m(0, 0)), m01 = splat(m(0, 1)), m02 = splat(m(0, 2)),
-                 m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
-                 m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
-    const float8 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
-    // The high half by the vinsertf128 builtin, which takes it straight from memory (a shuffle of
-    // two loaded halves costs a port-5 uop more per register).
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const float* p = in + 3 * i;
-        // Per lane (points 0-3 low, 4-7 high): a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3.
-        const float8 a = load(p, p + 12), b = load(p + 4, p + 16), c = load(p + 8, p + 20);
-        // The blends gather a coordinate in a rotated order (x0 x3 x2 x1, y1 y0 y3 y2,
-        // z2 z1 z0 z3); the permutes put it in order, and later back.
-        const float8 x = swap_1_3(blend_1_5(blend_2_6(a, b), c));
-        const float8 y = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
-        const float8 z = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));
-        float8 rx = m00 * x + m01 * y + m02 * z;
-        float8 ry = m10 * x + m11 * y + m12 * z;
-        float8 rz = m20 * x + m21 * y + m22 * z;
-        if constexpr (Translate) {
-            rx += tx;
-            ry += ty;
-            rz += tz;
-        }
-        const float8 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
-        const float8 ra = blend_2_6(blend_1_5(px, py), pz);
-        const float8 rb = blend_2_6(blend_1_5(py, pz), px);
-        const float8 rc = blend_2_6(blend_1_5(pz, px), py);
-        float* o = out + 3 * i;
-        // Halves taken by the vextractf128 builtin (g++ and clang alike), not by a shuffle: g++
-        // merges adjacent shuffled halves into 256-bit stores through three vperm2f128 (port 5),
-        // which measured 424 ns against 359 ns at 1024 points.
-        put4<Stream>(o, __builtin_ia32_vextractf128_ps256(ra, 0));
-        put4<Stream>(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
-        put4<Stream>(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
-        put4<Stream>(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
-        put4<Stream>(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
-        put4<Stream>(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
-    }
-    return i;
-}
-
-#if defined(__AVX512F__)
-
-using float16 = float __attribute__((vector_size(64)));
-
-[[nodiscard]] inline float16 load16(const float* p) noexcept {
-    float16 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-
-// As transform_interleaved, 16 points (48 floats, three registers a, b, c) a step with full-width
-// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from
-// c; each output register is joined from x and y, then completed from z. 12 permutes and 9
-// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it keeps
-// to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
-template <bool Translate>
-[[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
-                                                          const vec3<float>& t, const float* in,
-                                                          float* out, std::size_t n) noexcept {
-    auto splat = [](float s) noexcept {
-        return float16{s, s, s, s, s, s, s, s, s, s, s, s, s, s, s, s};
-    };
-    const float16 m00 = splat(m(0, 0)), m01 = splat(m(0, 1)), m02 = splat(m(0, 2)),
-                  m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
-                  m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
-    const float16 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
-    std::size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        const float* p = in + 3 * i;
-        const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
-        // Indices 0-15 name the first source, 16-31 the second; "keep" lanes name themselves.
-        const float16 x = __builtin_shufflevector(
-            __builtin_shufflevector(a, b, 0, 3, 6, 9, 12, 15, 18, 21, 24, 27, 30, 0, 0, 0, 0, 0), c,
-            0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 17, 20, 23, 26, 29);
-        const float16 y = __builtin_shufflevector(
-            __builtin_shufflevector(a, b, 1, 4, 7, 10, 13, 16, 19, 22, 25, 28, 31, 0, 0, 0, 0, 0),
-            c, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 18, 21, 24, 27, 30);
-        const float16 z = __builtin_shufflevector(
-            __builtin_shufflevector(a, b, 2, 5, 8, 11, 14, 17, 20, 23, 26, 29, 0, 0, 0, 0, 0, 0), c,
-            0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 16, 19, 22, 25, 28, 31);
-        float16 rx = m00 * x + m01 * y + m02 * z;
-        float16 ry = m10 * x + m11 * y + m12 * z;
-        float16 rz = m20 * x + m21 * y + m22 * z;
-        if constexpr (Translate) {
-            rx += tx;
-            ry += ty;
-            rz += tz;
-        }
-        // Output register r holds floats 16 r ... 16 r + 15 of the group.
-        const float16 oa = __builtin_shufflevector(
-            __builtin_shufflevector(rx, ry, 0, 16, 0, 1, 17, 0, 2, 18, 0, 3, 19, 0, 4, 20, 0, 5),
-            rz, 0, 1, 16, 3, 4, 17, 6, 7, 18, 9, 10, 19, 12, 13, 20, 15);
-        const float16 ob = __builtin_shufflevector(
-            __builtin_shufflevector(rx, ry, 21, 0, 6, 22, 0, 7, 23, 0, 8, 24, 0, 9, 25, 0, 10, 26),
-            rz, 0, 21, 2, 3, 22, 5, 6, 23, 8, 9, 24, 11, 12, 25, 14, 15);
-        const float16 oc =
-            __builtin_shufflevector(__builtin_shufflevector(rx, ry, 0, 11, 27, 0, 12, 28, 0, 13, 29,
-                                                            0, 14, 30, 0, 15, 31, 0),
-                                    rz, 26, 1, 2, 27, 4, 5, 28, 7, 8, 29, 10, 11, 30, 13, 14, 31);
-        std::memcpy(out + 3 * i, &oa, sizeof oa);
-        std::memcpy(out + 3 * i + 16, &ob, sizeof ob);
-        std::memcpy(out + 3 * i + 32, &oc, sizeof oc);
-    }
-    return i;
-}
-
-#endif  // __AVX512F__
-#endif  // __has_builtin(__builtin_shufflevector)
-#endif  // __AVX__ && __has_builtin
-
-// Rotates (and translates when Translate) the leading points of `in` (three floats each) into
-// `out` with the kernels above where the build has them (AVX, g++ 12 or clang), and returns how
-// many it did, leaving fewer than 8 to the caller; 0 elsewhere. With Stream (out aligned to 16
-// bytes) the stores are non-temporal, by the 8-point kernel in AVX-512 builds too: out of cache
-// the arithmetic is not the bound.
-template <bool Translate, bool Stream = false>
-[[nodiscard]] inline std::size_t transform_interleaved_floats(
-    const rotation_matrix<float>& m, const vec3<float>& t, const float* in,
-    // NOLINTNEXTLINE(readability-non-const-parameter): AVX builds write it
-    float* out, std::size_t n) noexcept {
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-#if defined(__AVX512F__)
-    if constexpr (!Stream) done = transform_interleaved_16<Translate>(m, t, in, out, n);
-#endif
-    done += transform_interleaved<Translate, Stream>(m, t, in + 3 * done, out + 3 * done, n - done);
-#endif
-#endif
-    static_cast<void>(m), static_cast<void>(t), static_cast<void>(in), static_cast<void>(out),
-        static_cast<void>(n);  // unused where no kernel applies
-    return done;
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
-// ---- end quat/detail/interleaved_points_avx.hpp ----
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// Points per block where a block is computed into a local buffer first: the streaming rotation.
-inline constexpr std::size_t batch_block = 256;
-
-// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
-// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
-#if defined(__clang__)
-#pragma clang diagnostic push
-#pragma clang diagnostic ignored "-Wpass-failed"
-#endif
-
-// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
-// so its results carry no added zero.
-template <bool Translate, class T>
-void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
-                     vec3<T>* output, std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
-            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
-    const T tx = t.x, ty = t.y, tz = t.z;
-    std::size_t done = 0;
-    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
-    // in AVX builds, the rest (all of it elsewhere) below.
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
-                      "vec3<float> must be three packed floats");
-        if (n >= 8)
-            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
-    }
-    // Point i is read before it is written and no iteration touches another's point, so the
-    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
-#if defined(__clang__)
-#pragma clang loop vectorize(assume_safety)
-#elif defined(__GNUC__)
-#pragma GCC ivdep
-#endif
-    for (std::size_t i = done; i < n; ++i) {
-        const T x = input[i].x, y = input[i].y, z = input[i].z;
-        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
-          oz = m20 * x + m21 * y + m22 * z;
-        if constexpr (Translate) {
-            ox += tx;
-            oy += ty;
-            oz += tz;
-        }
-        output[i] = vec3<T>{ox, oy, oz};
-    }
-}
-
-// Writes the points with non-temporal stores. The first points (at most 15) are stored plainly
-// up to a 64-byte boundary of the output, so that no cache line is written partly by plain and
-// partly by non-temporal stores. AVX builds then stream straight from the shuffling kernel
-// (interleaved_points_avx.hpp); the rest (all of it in SSE builds) is computed block by block
-// into a local buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole
-// lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
-// a Zen 4 (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks
-// 3.5-3.8, streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
-template <bool Translate>
-void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
-                         const vec3<float>* input, vec3<float>* output,
-                         std::size_t count) noexcept {
-    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
-                  "vec3<float> must be three packed floats");
-    static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
-    std::size_t start = 0;
-    while (start < 16 && start < count &&
-           reinterpret_cast<std::uintptr_t>(output + start) % 64 != 0)
-        ++start;
-    transform_block<Translate>(m, t, input, output, start);
-    if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
-        start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
-                                                               &output[start].x, count - start);
-    alignas(64) vec3<float> buffer[batch_block];
-    for (; start < count; start += batch_block) {
-        const std::size_t n = count - start < batch_block ? count - start : batch_block;
-        transform_block<Translate>(m, t, input + start, buffer, n);
-        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
-    }
-    stream_fence();
-}
-
-template <bool Translate, class T>
-void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
-                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
-    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
-            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
-    const T tx = t.x, ty = t.y, tz = t.z;
-    // Each index is read before it is written, so each output array may be its own input array, and
-    // there is no dependence between iterations (the documented aliasing rule): say so to the
-    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
-#if defined(__clang__)
-#pragma clang loop vectorize(assume_safety)
-#elif defined(__GNUC__)
-#pragma GCC ivdep
-#endif
-    for (std::size_t i = 0; i < n; ++i) {
-        const T px = x[i], py = y[i], pz = z[i];
-        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
-          rz = m20 * px + m21 * py + m22 * pz;
-        if constexpr (Translate) {
-            rx += tx;
-            ry += ty;
-            rz += tz;
-        }
-        ox[i] = rx;
-        oy[i] = ry;
-        oz[i] = rz;
-    }
-}
-
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
-// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
-// and of the rigid transform (rigid_batch.hpp).
-template <bool Translate, class T>
-void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
-                      vec3<T>* output, std::size_t count) noexcept {
-    // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
-    // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
-    // 32 MiB L3 (issue 27, g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms
-    // against 3.9-4.1 plain, streaming copy 3.2-3.8. Earlier machines, under the fixed 16 MiB
-    // threshold this rule replaces: the Xeon of issue 16 (streaming won at every level, SSE2 5.7
-    // ms against 6.6, AVX2 4.7-4.9 against 5.2-6.0), the Zen 5 of issue 6 (won only with AVX-512).
-    if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
-            transform_streaming<Translate>(m, t, input, output, count);
-            return;
-        }
-    }
-    // Each point is read before it is written, so output == input is safe here; g++ and clang
-    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
-    transform_block<Translate>(m, t, input, output, count);
-}
-
-// The struct-of-arrays loop of rotate and of the rigid transform.
-template <bool Translate, class T>
-void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
-                      soa_points<T> output) noexcept {
-    if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores &&
-            input.count * 3 * sizeof(float) >= streaming_threshold_bytes()) {
-            // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
-            // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
-            // the same offset into a page), so that the blocks cover whole cache lines.
-            std::size_t head = 0;
-            while (head < 16 && head < input.count &&
-                   reinterpret_cast<std::uintptr_t>(output.x + head) % 64 != 0)
-                ++head;
-            transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y,
-                                       output.z, head);
-            alignas(64) float rx[batch_block];
-            alignas(64) float ry[batch_block];
-            alignas(64) float rz[batch_block];
-            for (std::size_t start = head; start < input.count; start += batch_block) {
-                const std::size_t n =
-                    input.count - start < batch_block ? input.count - start : batch_block;
-                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
-                                           rx, ry, rz, n);
-                stream_floats(output.x + start, rx, n);
-                stream_floats(output.y + start, ry, n);
-                stream_floats(output.z + start, rz, n);
-            }
-            stream_fence();
-            return;
-        }
-    }
-    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
-                               input.count);
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
-// ---- end quat/detail/transform_points.hpp ----
-// ---- begin quat/interpolation.hpp ----
-// Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
-// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
-// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
-#ifndef QUAT_INTERPOLATION_HPP_INCLUDED
-#define QUAT_INTERPOLATION_HPP_INCLUDED
-
-#include <type_traits>
-
-// ---- begin quat/detail/exp_log.hpp ----
-// e^x and ln x for quat's scalars: in long double by series in constant evaluation (as
-// detail/math.hpp's sqrt and sin), the compiler's builtins at run time, and ADL exp and log for a
-// user scalar. Only exp(quaternion) and log(quaternion) use them.
-#ifndef QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
-#define QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
-
-#include <cmath>
-#include <type_traits>
-
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-namespace compile_time {
-
-// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a few ulp of
-// long double over the whole range. ln 2 is split into a head with 32 significant bits (fdlibm's
-// ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
-inline constexpr real ln2 = 0.693147180559945309417232121458176568L;
-inline constexpr real ln2_head = 0.693147180369123816490L;
-inline constexpr real ln2_tail = ln2 - ln2_head;
-
-[[nodiscard]] constexpr real exp(real x) noexcept {
-    if (is_nan(x)) return x;
-    if (x > 11357) return infinity<real>();
-    if (x < -11400) return 0;
-    // x = k ln 2 + r with |r| <= ln 2 / 2; e^r by its Taylor series, then times 2^k exactly.
-    const real quotient = x / ln2;
-    long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
-    const real r = (x - static_cast<real>(k) * ln2_head) - static_cast<real>(k) * ln2_tail;
-    real term = 1, sum = 1;
-    for (int n = 1; n < 40; ++n) {
-        term *= r / static_cast<real>(n);
-        if (sum + term == sum) break;
-        sum += term;
-    }
-    for (; k > 0; --k) sum *= 2;
-    for (; k < 0; ++k) sum /= 2;
-    return sum;
-}
-
-[[nodiscard]] constexpr real log(real x) noexcept {
-    if (is_nan(x) || x < 0) return quiet_nan<real>();
-    if (x == 0) return -infinity<real>();
-    if (x == infinity<real>()) return x;
-    // x = m 2^e with m in [sqrt(1/2), sqrt(2)) (exact scalings), then ln m = 2 atanh(f),
-    // f = (m - 1) / (m + 1), |f| < 0.172, by its series.
-    long long e = 0;
-    constexpr real big = 18446744073709551616.0L;  // 2^64
-    while (x >= big) {
-        x /= big;
-        e += 64;
-    }
-    while (x < 1 / big) {
-        x *= big;
-        e -= 64;
-    }
-    while (x >= 2) {
-        x /= 2;
-        ++e;
-    }
-    while (x < 1) {
-        x *= 2;
-        --e;
-    }
-    if (x > 1.41421356237309504880L) {
-        x /= 2;
-        ++e;
-    }
-    const real f = (x - 1) / (x + 1), f2 = f * f;
-    real power = f, sum = f;
-    for (int n = 1; n < 40; ++n) {
-        power *= f2;
-        const real term = power / static_cast<real>(2 * n + 1);
-        if (sum + term == sum) break;
-        sum += term;
-    }
-    const auto k = static_cast<real>(e);
-    return k * ln2_head + (k * ln2_tail + 2 * sum);
-}
-
-}  // namespace compile_time
-
-/// e^x; for a user scalar, exp found by argument-dependent lookup (only exp(quaternion) needs it).
-template <class T>
-[[nodiscard]] constexpr T scalar_exp(T x) noexcept {
-    if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated())
-            return static_cast<T>(compile_time::exp(static_cast<compile_time::real>(x)));
-        if constexpr (std::is_same_v<T, float>) {
-            return __builtin_expf(x);
-        } else if constexpr (std::is_same_v<T, double>) {
-            return __builtin_exp(x);
-        } else {
-            return __builtin_expl(x);
-        }
-    } else {
-        using std::exp;
-        return exp(x);
-    }
-}
-
-/// ln x (NaN for negative x, -Inf for 0); for a user scalar, log found by argument-dependent
-/// lookup (only log(quaternion) needs it).
-template <class T>
-[[nodiscard]] constexpr T scalar_log(T x) noexcept {
-    if constexpr (std::is_floating_point_v<T>) {
-        if (constant_evaluated())
-            return static_cast<T>(compile_time::log(static_cast<compile_time::real>(x)));
-        if constexpr (std::is_same_v<T, float>) {
-            return __builtin_logf(x);
-        } else if constexpr (std::is_same_v<T, double>) {
-            return __builtin_log(x);
-        } else {
-            return __builtin_logl(x);
-        }
-    } else {
-        using std::log;
-        return log(x);
-    }
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
-// ---- end quat/detail/exp_log.hpp ----
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// The principal power p^t of a unit p with p.w >= 0 (or any w for p off the identity): turns by
-/// t times p's angle about p's axis. Near the identity half the new angle is k |u| with k = t
-/// atan(r) / (r w), r = |u| / w, from series in |u|^2, so that no square root of zero sits on the
-/// path a dual-number scalar differentiates; elsewhere the closed form.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> power_of_unit(const quaternion<T>& p, T t) noexcept {
-    const vec3<T> u{p.x, p.y, p.z};
-    const T s2 = squared_norm(u);
-    if (atan_series_suffices(s2, p.w)) {
-        const T k = t * atan_ratio_series(s2 / (p.w * p.w)) / p.w;  // half the new angle over |u|
-        const cos_and_sinc<T> half = cos_sinc(k * k * s2, k * norm(u));
-        const vec3<T> v = u * (k * half.sinc);
-        return {half.cos, v.x, v.y, v.z};
-    }
-    const T s = norm(u);
-    const T half = t * atan2(s, p.w);
-    const vec3<T> v = u / s * sin(half);
-    return {cos(half), v.x, v.y, v.z};
-}
-
-/// The Taylor coefficients of asin(x) / x = sum_k c_k x^2k, c_k = (2k)! / (4^k k!^2 (2k + 1)),
-/// k = 0 ... 20, by the ratio c_{k+1} / c_k = (2k + 1)^2 / ((2k + 2)(2k + 3)).
-struct asin_ratio_coefficients {
-    double c[21];
-};
-[[nodiscard]] constexpr asin_ratio_coefficients make_asin_ratio_coefficients() noexcept {
-    asin_ratio_coefficients r{};
-    r.c[0] = 1;
-    for (int k = 0; k < 20; ++k)
-        r.c[k + 1] = r.c[k] * double((2 * k + 1) * (2 * k + 1)) / double((2 * k + 2) * (2 * k + 3));
-    return r;
-}
-
-/// asin(x) / x for y = x^2 <= 1/2 (|x| <= sin(pi/4)) to a relative 2.3e-9 (the first omitted
-/// term at y = 1/2; 0.04 float ulp), exact as y -> 0. The terms are summed in pairs of pairs
-/// (Estrin's scheme): 5 multiply-adds deep, against 20 by Horner's rule.
-[[nodiscard]] constexpr double asin_ratio_double(double y) noexcept {
-    constexpr asin_ratio_coefficients k = make_asin_ratio_coefficients();
-    const double y2 = y * y, y4 = y2 * y2, y8 = y4 * y4, y16 = y8 * y8;
-    const double p0 = k.c[0] + k.c[1] * y, p1 = k.c[2] + k.c[3] * y, p2 = k.c[4] + k.c[5] * y,
-                 p3 = k.c[6] + k.c[7] * y, p4 = k.c[8] + k.c[9] * y, p5 = k.c[10] + k.c[11] * y,
-                 p6 = k.c[12] + k.c[13] * y, p7 = k.c[14] + k.c[15] * y, p8 = k.c[16] + k.c[17] * y,
-                 p9 = k.c[18] + k.c[19] * y;
-    const double q0 = p0 + p1 * y2, q1 = p2 + p3 * y2, q2 = p4 + p5 * y2, q3 = p6 + p7 * y2,
-                 q4 = p8 + p9 * y2;
-    const double r0 = q0 + q1 * y4, r1 = q2 + q3 * y4, r2 = q4 + k.c[20] * y4;
-    return (r0 + r1 * y8) + r2 * y16;
-}
-
-/// slerp's path for float a, near (dot(a, near) >= 0, a != near) and t in [0, 1], in double
-/// arithmetic throughout: the path of slerp below, cos(u) e + sin(u) f with u = (2t - 1) h, each
-/// direction divided by the norm it has, but h = asin(sin h), sin u and cos u by polynomials
-/// instead of asinf and sincosf. Why: on a Zen 4 with AVX2, glibc's asinf (a division, and a
-/// square root past 0.5) and sincosf, called one after the other behind the square root of the
-/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed (issue 27). Here
-/// the series of asin(x) / x starts from x^2 (the chord squared) while the square roots and the
-/// one division run beside it, and the result is rounded to float once (float products are exact
-/// in double, the sums and series err by about 1e-9 relative at most), within a unit in the last
-/// place of the exact slerp of the given float inputs. h <= pi/4 (dot(a, near) >= 0), so
-/// |x| = sin h <= sin(pi/4) and |u| <= pi/4: sin u to u^9 and cos u to u^10 leave 2e-9.
-[[nodiscard]] constexpr quaternion<float> slerp_float(const quaternion<float>& a,
-                                                      const quaternion<float>& near,
-                                                      float t) noexcept {
-    const double aw = static_cast<double>(a.w), ax = static_cast<double>(a.x),
-                 ay = static_cast<double>(a.y), az = static_cast<double>(a.z);
-    const double bw = static_cast<double>(near.w), bx = static_cast<double>(near.x),
-                 by = static_cast<double>(near.y), bz = static_cast<double>(near.z);
-    const double sw = aw + bw, sx = ax + bx, sy = ay + by, sz = az + bz;  // exact
-    const double dw = bw - aw, dx = bx - ax, dy = by - ay, dz = bz - az;  // exact
-    // Summed in pairs: two operations shorter than one after the other.
-    const double sum2 = (sw * sw + sx * sx) + (sy * sy + sz * sz);    // 4 cos^2 h
-    const double chord2 = (dw * dw + dx * dx) + (dy * dy + dz * dz);  // 4 sin^2 h
-    const double sum_norm = detail::sqrt(sum2), chord = detail::sqrt(chord2);
-    const double inverse = 1.0 / (sum_norm * chord);
-    const double h = chord * 0.5 * asin_ratio_double(chord2 * 0.25);
-    const double u = (static_cast<double>(t) + static_cast<double>(t) - 1.0) * h;
-    const double v = u * u, v2 = v * v;
-    const double sin_u =
-        u * ((1.0 - v * (1.0 / 6)) + v2 * ((1.0 / 120 - v * (1.0 / 5040)) + v2 * (1.0 / 362880)));
-    const double cos_u = (1.0 - v * 0.5) + v2 * ((1.0 / 24 - v * (1.0 / 720)) +
-                                                 v2 * (1.0 / 40320 - v * (1.0 / 3628800)));
-    // cos(u) / |sum| and sin(u) / chord, by one division off the path above.
-    const double along = cos_u * (chord * inverse), across = sin_u * (sum_norm * inverse);
-    return {
-        static_cast<float>(sw * along + dw * across), static_cast<float>(sx * along + dx * across),
-        static_cast<float>(sy * along + dy * across), static_cast<float>(sz * along + dz * across)};
-}
-
-}  // namespace detail
-
-/// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
-/// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
-/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar, which may carry
-/// derivatives, to rounding). The angle comes from the chord |a - b|, accurate for nearly equal
-/// and nearly opposite inputs. Precondition: unit a and b (checked in debug builds). A NaN or
-/// infinite a, b or t gives a non-finite result.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
-                                            detail::type_identity_t<T> t) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
-                "quat::slerp: a or b is not a unit quaternion");
-    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a NaN or infinite other end
-    // visible instead of returning a clean-looking value. Not for a user scalar, whose t may carry
-    // a derivative that a constant would drop: the formulas below give the ends to rounding.
-    if constexpr (std::is_floating_point_v<T>) {
-        if (t == T(0)) return a + (near - near);
-        if (t == T(1)) return near + (a - a);
-    }
-    if (t < T(0) || t > T(1)) {
-        // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
-        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
-        const quaternion<T> relative = conjugate(a) * near;
-        if constexpr (std::is_floating_point_v<T>) {
-            // No motion; a bad t stays visible.
-            if (relative.x == T(0) && relative.y == T(0) && relative.z == T(0))
-                return detail::is_finite(t) ? a : a * t;
-        }
-        return a * detail::power_of_unit(relative, t);
-    }
-    // With h half the angle between a and near (h <= pi/4 since dot(a, near) >= 0), the slerp
-    // path is cos(u) e + sin(u) f, u = (2t - 1) h, where e and f are the orthonormal directions
-    // of a + near and near - a (|a + near| = 2 cos h, |near - a| = 2 sin h): one sine-cosine pair
-    // instead of three sines, and each direction divided by the norm it actually has, so the
-    // result is unit to a few roundings whatever the rounding of h. The chord |near - a| keeps h
-    // accurate for nearly equal inputs, unlike acos of the dot product.
-    if constexpr (std::is_same_v<T, float>) {
-        // a == near: nothing to interpolate, but a non-finite t stays visible.
-        if (a.w == near.w && a.x == near.x && a.y == near.y && a.z == near.z)
-            return detail::is_finite(t) ? a : a * t;
-        return detail::slerp_float(a, near, t);
-    }
-    const quaternion<T> sum = a + near;
-    const quaternion<T> difference = near - a;
-    const T chord2 = squared_norm(difference);
-    const T chord = detail::sqrt(chord2);  // read only past the series below
-    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on
-    // below). A user scalar takes the series below, which keeps the derivatives in b and t.
-    if constexpr (std::is_floating_point_v<T>) {
-        if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
-    }
-    const T sine2 = chord2 * T(0.25);  // sin^2 h
-    if (detail::series_suffices(sine2)) {
-        // u = (2t - 1) h = ratio sin h, and sin(u) / chord = sinc(u) ratio / 2, from series in
-        // sin^2 h: no square root of zero on the path a dual-number scalar differentiates.
-        const T ratio = (t + t - T(1)) * detail::asin_ratio_series(sine2);
-        const detail::cos_and_sinc<T> cs =
-            detail::cos_sinc(ratio * ratio * sine2, ratio * chord * T(0.5));
-        return sum * (cs.cos / detail::sqrt(squared_norm(sum))) +
-               difference * (cs.sinc * ratio * T(0.5));
-    }
-    const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
-    return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
-           difference * (detail::sin(u) / chord);
-}
-
-/// Normalized linear interpolation along the shorter arc: the slerp path at non-uniform speed,
-/// cheaper. Precondition: unit a and b; the sign flip keeps the sum non-zero for t in [0, 1].
-template <class T>
-[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b,
-                                            detail::type_identity_t<T> t) noexcept {
-    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    return normalize(a + (near - a) * t);
-}
-
-/// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
-/// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
-/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly (a
-/// user scalar, which may carry derivatives, to rounding). The half angle comes from
-/// atan2(|v|, w), accurate near the identity and near a half turn. Precondition: unit q (checked
-/// in debug builds). A NaN or infinite q or t gives a non-finite result. glm::pow differs for
-/// w < 0: it keeps q's sign and so takes the longer arc.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
-                                          detail::type_identity_t<T> t) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
-    const quaternion<T> p = q.w < T(0) ? -q : q;
-    // Exact shortcuts; not for a user scalar, whose q and t may carry derivatives that a constant
-    // would drop (power_of_unit gives the same values to rounding).
-    if constexpr (std::is_floating_point_v<T>) {
-        if (t == T(1)) return p;
-        const quaternion<T> identity = quaternion<T>::identity();
-        // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
-        if (t == T(0)) return identity + (p - p);
-        // (The identity needs no shortcut: power_of_unit's series gives it exactly.)
-    }
-    // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
-    return detail::power_of_unit(p, t) + (p - p);
-}
-
-/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
-/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
-/// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
-/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
-/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
-/// ignores w and returns the identity for |v| < epsilon.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
-    const vec3<T> v{q.x, q.y, q.z};
-    const T e = detail::scalar_exp(q.w);
-    if constexpr (std::is_floating_point_v<T>) {
-        // Exactly real: v itself, signed zeros kept and no 0 * Inf where e^w overflows. (A user
-        // scalar's v may carry derivatives, which e^w scales: it takes the series below.)
-        if (q.x == T(0) && q.y == T(0) && q.z == T(0)) return {e, q.x, q.y, q.z};
-    }
-    // cos|v| and sin|v| / |v|, by series in |v|^2 for small |v| (no square root of zero there).
-    const detail::cos_and_sinc<T> cs = detail::cos_sinc(squared_norm(v), norm(v));
-    const vec3<T> u = v * (cs.sinc * e);
-    return {cs.cos * e, u.x, u.y, u.z};
-}
-
-/// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
-/// part's length in [0, pi], so exp(log(q)) == q. For a unit q with w >= 0, log(q) is
-/// (0, to_rotation_vector(q) / 2) to within a few eps; for w < 0 its vector part is half the
-/// rotation vector of the longer way round (length above pi / 2), as q and -q differ here. Real q:
-/// (ln w, 0, 0, 0) for w > 0 (v's signed zeros kept), (ln|w|, pi, 0, 0) for w < 0 (the axis
-/// (1, 0, 0), as to_axis_angle and glm::log choose), (-Inf, 0, 0, 0) for zero. Accurate for tiny
-/// |v| (no 0/0) and for components from subnormal to max() (|q| and |v| scaled as norm does);
-/// NaN or infinite components give NaN in every component.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> log(const quaternion<T>& q) noexcept {
-    const T s2 = squared_norm(q);
-    T log_norm{};
-    if (detail::in_normal_range(s2)) {
-        log_norm = T(0.5) * detail::scalar_log(s2);
-    } else {
-        // |q|^2 over- or underflowed: ln|q| = ln(scale) + ln|q / scale| with scale the largest
-        // |component|, which brings |q / scale| into [1, 2].
-        if (s2 != s2) return detail::nan_quaternion<T>();  // a NaN that largest_magnitude may skip
-        const T scale = detail::largest_magnitude(q);
-        if (!detail::is_finite(scale)) return detail::nan_quaternion<T>();
-        if (scale == T(0)) return {-detail::infinity<T>(), q.x, q.y, q.z};
-        log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
-    }
-    const vec3<T> v{q.x, q.y, q.z};
-    // Near the real axis v / |v| atan2(|v|, w) = (v / w) atan(r) / r with r = |v| / w, from
-    // series in r^2: no square root of zero on the path a dual-number scalar differentiates.
-    const T v2 = squared_norm(v);
-    if (detail::atan_series_suffices(v2, q.w)) {
-        const vec3<T> u = v / q.w * detail::atan_ratio_series(v2 / (q.w * q.w));
-        return {log_norm, u.x, u.y, u.z};
-    }
-    const T length = norm(v);
-    if (length == T(0)) {
-        if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};
-        return {log_norm, q.x, q.y, q.z};
-    }
-    const vec3<T> u = v / length * detail::atan2(length, q.w);
-    return {log_norm, u.x, u.y, u.z};
-}
-
-/// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
-/// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
-/// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
-/// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
-/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
-/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> rotate_towards(
-    const quaternion<T>& from, const quaternion<T>& to,
-    detail::type_identity_t<T> max_angle) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(from) && detail::is_near_unit(to),
-                "quat::rotate_towards: from or to is not a unit quaternion");
-    const T angle = angle_between(from, to);  // NaN for non-finite from or to
-    const T step = max_angle < T(0) ? T(0) : max_angle;
-    if (angle <= step) return to;
-    return slerp(from, to, step / angle);  // step / angle is in [0, 1), or NaN
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_INTERPOLATION_HPP_INCLUDED
-// ---- end quat/interpolation.hpp ----
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-// Slerp parameters per block computed into local arrays first: the output could alias t's type.
-inline constexpr std::size_t batch_block_slerp = 128;
-
-// sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
-// term is below epsilon / 100 at pi/2 (through x^13 for float, x^21 for double). Unlike std::sin it
-// vectorizes.
-template <class T>
-struct sine_series {
-    static constexpr std::size_t terms = sizeof(T) <= 4 ? 7 : 11;
-    T coefficient[terms];
-    constexpr sine_series() noexcept : coefficient{} {
-        long double c = 1.0L;
-        for (std::size_t k = 0; k < terms; ++k) {
-            coefficient[k] = static_cast<T>(c);
-            c = -c / static_cast<long double>((2 * k + 2) * (2 * k + 3));
-        }
-    }
-};
-
-template <class T>
-[[nodiscard]] constexpr T sin_half_pi(T x) noexcept {
-    constexpr sine_series<T> series{};
-    const T x2 = x * x;
-    T acc = series.coefficient[sine_series<T>::terms - 1];
-    for (std::size_t k = sine_series<T>::terms - 1; k-- > 0;)
-        acc = acc * x2 + series.coefficient[k];
-    return x * acc;
-}
-
-// The batch slerp for float and double: see slerp(a, b, t, output, count). Each t converts to T
-// as it is read. a and b are the caller's copies, never elements of output.
-template <class T, class U>
-void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const U* t,
-                      quaternion<T>* output, std::size_t count) noexcept {
-    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
-    const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
-    const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
-    const T angle = T(2) * detail::atan2(chord, sum);      // in [0, pi/2]
-    bool in_range = angle * angle * angle * angle >= detail::epsilon<T>();
-    for (std::size_t i = 0; i < count && in_range; ++i) {
-        const T ti = static_cast<T>(t[i]);
-        in_range = ti >= T(0) && ti <= T(1);
-    }
-    if (!in_range) {
-        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
-        return;
-    }
-    const T inverse_sine = T(2) / (chord * sum);
-    for (std::size_t start = 0; start < count; start += detail::batch_block_slerp) {
-        const std::size_t n =
-            count - start < detail::batch_block_slerp ? count - start : detail::batch_block_slerp;
-        const U* tb = t + start;
-        // Uninitialized: every used slot is written first.
-        T rw[detail::batch_block_slerp], rx[detail::batch_block_slerp],
-            ry[detail::batch_block_slerp], rz[detail::batch_block_slerp];
-        for (std::size_t i = 0; i < n; ++i) {
-            const T ti = static_cast<T>(tb[i]);
-            T wa = detail::sin_half_pi((T(1) - ti) * angle) * inverse_sine;
-            T wb = detail::sin_half_pi(ti * angle) * inverse_sine;
-            // Exact ends by arithmetic on 0/1 flags (selects here keep g++ from vectorizing for
-            // SSE2): 1 - w is exact for w near 1, so w + (1 - w) is exactly 1.
-            const T at_start = T(ti == T(0)), at_end = T(ti == T(1));
-            wa = (wa + at_start * (T(1) - wa)) * (T(1) - at_end);
-            wb = wb + at_end * (T(1) - wb);
-            rw[i] = a.w * wa + near.w * wb;
-            rx[i] = a.x * wa + near.x * wb;
-            ry[i] = a.y * wa + near.y * wb;
-            rz[i] = a.z * wa + near.z * wb;
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            output[start + i] = quaternion<T>{rw[i], rx[i], ry[i], rz[i]};
-    }
-}
-
-}  // namespace detail
-
-/// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
-/// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
-template <class T>
-void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
-            std::size_t count) noexcept {
-    QUAT_ASSERT(
-        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
-        "quat::rotate: output partially overlaps input");
-    detail::transform_points<false>(m, vec3<T>{}, input, output, count);
-}
-
-/// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
-/// point costs 9 multiply-adds. Aliasing as for the matrix overload.
-template <class T>
-void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
-            std::size_t count) noexcept {
-    rotate(to_matrix(q), input, output, count);
-}
-
-/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
-/// any input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
-template <class T>
-void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
-            soa_points<T> output) noexcept {
-    QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
-                "quat::rotate: an output array partially overlaps an input array");
-    detail::transform_points<false>(m, vec3<T>{}, input, output);
-}
-
-/// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
-template <class T>
-void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>> input,
-            soa_points<T> output) noexcept {
-    rotate(to_matrix(q), input, output);
-}
-
-/// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
-/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input)
-/// (QUAT_ASSERT); unchecked, the first min(size(input), size(output)) points, never past either.
-template <class T, class Input, class Output,
-          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
-void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
-                "quat::rotate: output shorter than input");
-    rotate(q, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
-}
-/// Container form of the array-of-structs rotation by m, with the precondition of the one by q.
-template <class T, class Input, class Output,
-          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
-void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
-                "quat::rotate: output shorter than input");
-    rotate(m, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
-}
-
-/// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
-/// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
-/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
-/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
-/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
-    return detail::chained_product(q, count);
-}
-
-/// compose over any contiguous container or view of quaternion<T>.
-template <class Range, class T = detail::element_scalar_t<quaternion, Range>>
-[[nodiscard]] constexpr quaternion<T> compose(const Range& factors) noexcept {
-    return compose(detail::data_of(factors), detail::size_of(factors));
-}
-
-/// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
-/// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.
-/// a and b are taken by value, so they may be elements of output (slerp(out[0], b, t, out, n)).
-/// The scalar type is the rotations'; t may be of another (double times for float rotations), and
-/// each t converts to T. Preconditions: unit a and b (checked in debug builds, as by the scalar
-/// slerp); output does not overlap t. For t outside [0, 1], nearly equal a and b, or
-/// non-float/double scalars, each value falls back to the scalar slerp.
-template <class T, class U, class = std::enable_if_t<std::is_convertible_v<const U&, T>>>
-void slerp(quaternion<T> a, quaternion<T> b, const U* t, quaternion<T>* output,
-           std::size_t count) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
-                "quat::slerp: a or b is not a unit quaternion, checked once for the batch");
-    QUAT_ASSERT(detail::disjoint(t, count * sizeof(U), output, count * sizeof(quaternion<T>)),
-                "quat::slerp: output overlaps t");
-    if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
-        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
-    } else {
-        detail::slerp_polynomial(a, b, t, output, count);
-    }
-}
-
-/// slerp at every t of a contiguous container (of T or another scalar type, which converts) into a
-/// contiguous output of quaternion<T>; a and b may be elements of output. Precondition:
-/// size(output) >= size(t) (QUAT_ASSERT); unchecked, the first min(size(t), size(output)).
-template <class T, class Parameters, class Output,
-          class = std::enable_if_t<std::is_convertible_v<
-              decltype(detail::data_of(std::declval<Output&>())), quaternion<T>*>>>
-void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(t),
-                "quat::slerp: output shorter than the parameters");
-    slerp(a, b, detail::data_of(t), static_cast<quaternion<T>*>(detail::data_of(output)),
-          detail::common_size(t, output));
-}
-
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_BATCH_HPP_INCLUDED
-// ---- end quat/batch.hpp ----
-// ---- begin quat/blend.hpp ----
-// Dual-quaternion linear blending of rigid motions (Kavan, Collins, Zara and O'Sullivan, "Skinning
-// with dual quaternions", I3D 2007): skinning without the collapse of blended matrices.
-#ifndef QUAT_BLEND_HPP_INCLUDED
-#define QUAT_BLEND_HPP_INCLUDED
-
-#include <cstddef>
-
-// ---- begin quat/dual_quaternion.hpp ----
-// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
-#ifndef QUAT_DUAL_QUATERNION_HPP_INCLUDED
-#define QUAT_DUAL_QUATERNION_HPP_INCLUDED
-
-#include <optional>
-#include <type_traits>
-
-
-namespace quat {
-
-/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
-/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
-/// dq and -dq are the same motion. Members are public, as for quaternion.
-template <class T>
-struct dual_quaternion {
-    quaternion<T> real;  ///< The rotation.
-    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
-
-    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
-    dual_quaternion() = default;
-    /// The dual quaternion real_part + eps dual_part.
-    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
-                                                     const quaternion<T>& dual_part) noexcept
-        : real(real_part), dual(dual_part) {}
-    /// Conversion from another precision, component by component.
-    template <class U>
-    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
-        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
-
-    /// The motion that moves nothing: real 1, dual 0.
-    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
-        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
-    }
-    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
-    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
-        const vec3<T>& t) noexcept {
-        return to_dual_quaternion(quaternion<T>::identity(), t);
-    }
-};
-
-using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
-using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
-/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
-                                                              const vec3<T>& translation) noexcept {
-    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
-                             translation.z * T(0.5)};
-    return {rotation, half * rotation};
-}
-
-/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
-/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
-    const quaternion<T>& rotation) noexcept {
-    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
-}
-
-/// The rotation of the unit dual quaternion dq (its real part).
-template <class T>
-[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
-    return dq.real;
-}
-
-namespace detail {
-
-/// 2 x, or +-max() where x is within a few units of roundoff of max() / 2 and the doubling alone
-/// would overflow (a value of max() read back with rounding error); infinite beyond that.
-template <class T>
-[[nodiscard]] constexpr T doubled_within_range(T x) noexcept {
-    const T twice = x + x;
-    if constexpr (std::is_floating_point_v<T>) {
-        constexpr T limit = largest<T>() / T(2) * (T(1) + T(16) * epsilon<T>());
-        if (!is_finite(twice) && abs(x) <= limit) return x < T(0) ? -largest<T>() : largest<T>();
-    }
-    return twice;
-}
-
-}  // namespace detail
-
-/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector, for components
-/// up to max(): one that rounding alone carries past max() (as in reading back a translation of
-/// max() through to_dual_quaternion) is +-max(), not infinite.
-/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
-template <class T>
-[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
-    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
-    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all. Each
-    // component is a dot product of r with a signed permutation of d, so no partial sum exceeds
-    // |r| |d| = |t| / 2 (at most sqrt(3) max() / 2): only the doubling can overflow.
-    const quaternion<T>& r = dq.real;
-    const quaternion<T>& d = dq.dual;
-    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
-                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
-                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
-    return {detail::doubled_within_range(half.x), detail::doubled_within_range(half.y),
-            detail::doubled_within_range(half.z)};
-}
-
-/// Negation: the same rigid motion.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
-    return {-dq.real, -dq.dual};
-}
-
-/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
-/// 48 multiplications and 40 additions.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
-                                                     const dual_quaternion<T>& b) noexcept {
-    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
-}
-
-/// a = a * b: as rigid motions, b is applied first, then the old a.
-template <class T>
-constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
-                                         const dual_quaternion<T>& b) noexcept {
-    return a = a * b;
-}
-
-/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
-/// rigid motion unless s is +-1: normalize or blend weights use it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
-                                                     detail::type_identity_t<T> s) noexcept {
-    return {dq.real * s, dq.dual * s};
-}
-/// Product with a scalar, all eight components; s converts to T.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
-                                                     const dual_quaternion<T>& dq) noexcept {
-    return dq * s;
-}
-/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
-                                                     detail::type_identity_t<T> s) noexcept {
-    return {dq.real / s, dq.dual / s};
-}
-/// dq = dq * s.
-template <class T>
-constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
-                                         detail::type_identity_t<T> s) noexcept {
-    return dq = dq * s;
-}
-/// dq = dq / s.
-template <class T>
-constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
-                                         detail::type_identity_t<T> s) noexcept {
-    return dq = dq / s;
-}
-
-/// Exact component-wise equality; dq == -dq is false although both are one motion.
-template <class T>
-[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return a.real == b.real && a.dual == b.dual;
-}
-/// Negation of ==.
-template <class T>
-[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
-                                        const dual_quaternion<T>& b) noexcept {
-    return !(a == b);
-}
-
-/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
-/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
-/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
-/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
-/// parts; a NaN or infinite dual component, NaN in the dual part.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = inverse(dq.real);
-    return {real, -(real * dq.dual * real)};
-}
-
-/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
-/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
-/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
-/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T> real = normalize(dq.real);
-    const quaternion<T> dual = dq.dual / norm(dq.real);
-    return {real, dual - real * dot(real, dual)};
-}
-
-/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
-/// normalized dual part overflows.
-template <class T>
-[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
-    const dual_quaternion<T>& dq) noexcept {
-    const quaternion<T>& d = dq.dual;
-    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
-    const dual_quaternion<T> result = normalize(dq);
-    // A dual part huge beside a tiny real part can overflow once divided by |real|.
-    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
-    return result;
-}
-
-/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
-/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform: the real part is not a unit quaternion");
-    return rotate(dq.real, p) + translation_of(dq);
-}
-
-/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
-/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
-/// transform_vector for a direction).
-template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
-    return transform(dq, p);
-}
-
-/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
-/// Precondition: |real| = 1 (checked in debug builds).
-template <class T>
-[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
-                                                 const vec3<T>& v) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(dq.real),
-                "quat::transform_vector: the real part is not a unit quaternion");
-    return detail::rotate_unchecked(dq.real, v);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_DUAL_QUATERNION_HPP_INCLUDED
-// ---- end quat/dual_quaternion.hpp ----
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-
-/// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
-/// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
-/// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
-/// twisted by 180 degrees keeps its volume. Weights (scalars convertible to T) need not sum to 1:
-/// they are divided by the largest |weight| first and normalization removes the scale, so any finite
-/// size works, subnormal to max(); they may be negative. Preconditions: unit real parts (QUAT_ASSERT;
-/// unchecked, longer ones count more); a zero blended real part (count 0, zero weights, or weights
-/// cancelling), a NaN or infinite weight or component gives NaN in every component.
-template <class T, class Weight>
-[[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
-                                                 const Weight* weights,
-                                                 std::size_t count) noexcept {
-    T largest = T(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        QUAT_ASSERT(detail::is_near_unit(transforms[i].real),
-                    "quat::blend: a transform's real part is not a unit quaternion");
-        const T w = static_cast<T>(weights[i]), size = w < T(0) ? -w : w;
-        largest = size > largest || !(size == size) ? size : largest;
-    }
-    // A NaN or infinite largest weight propagates as NaN: inf / inf.
-    const T scale = largest > T(0) ? largest : T(1);
-    quaternion<T> real{T(0), T(0), T(0), T(0)}, dual{T(0), T(0), T(0), T(0)};
-    for (std::size_t i = 0; i < count; ++i) {
-        const T scaled = static_cast<T>(weights[i]) / scale;
-        const T w = dot(transforms[i].real, transforms[0].real) < T(0) ? -scaled : scaled;
-        real += transforms[i].real * w;
-        dual += transforms[i].dual * w;
-    }
-    const dual_quaternion<T> result = normalize(dual_quaternion<T>{real, dual});
-    // NaN in every component when any is not finite: a NaN translation beside a finite rotation
-    // would pass for half a result.
-    const T parts[8] = {result.real.w, result.real.x, result.real.y, result.real.z,
-                        result.dual.w, result.dual.x, result.dual.y, result.dual.z};
-    for (const T& part : parts)
-        if (!detail::is_finite(part)) {
-            const T nan = detail::quiet_nan<T>();
-            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
-        }
-    return result;
-}
-
-/// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
-/// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
-/// Precondition: equal sizes (QUAT_ASSERT); unchecked, other sizes blend as count 0: NaN.
-template <class Transforms, class Weights,
-          class T = detail::element_scalar_t<dual_quaternion, Transforms>>
-[[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
-                                                 const Weights& weights) noexcept {
-    QUAT_ASSERT(detail::same_size(transforms, weights),
-                "quat::blend: transforms and weights differ in size");
-    return blend(detail::data_of(transforms), detail::data_of(weights),
-                 detail::same_size(transforms, weights) ? detail::size_of(weights) : 0);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_BLEND_HPP_INCLUDED
-// ---- end quat/blend.hpp ----
 // ---- begin quat/constants.hpp ----
 // Mathematical constants, as C++20's <numbers> has them, in every language mode, and conversions
 // between degrees and radians. The constants live in quat::numbers, nested as the standard's are in
@@ -5955,7 +2605,338 @@ template <sequence S, frame F, class T>
 
 #endif  // QUAT_CONTINUOUS_EULER_HPP_INCLUDED
 // ---- end quat/continuous_euler.hpp ----
-// ---- begin quat/elementwise.hpp ----
+// ---- begin quat/kinematics.hpp ----
+// Angular velocity between two orientations, and integrating an angular velocity over a time step.
+#ifndef QUAT_KINEMATICS_HPP_INCLUDED
+#define QUAT_KINEMATICS_HPP_INCLUDED
+
+// ---- begin quat/detail/relative_rotation.hpp ----
+// The relative rotation between two orientations, accurate when they are close: shared by
+// kinematics.hpp (angular velocity), squad.hpp (control points), sclerp.hpp and
+// rotation_spline.hpp, so that none of them includes another concept's header for it. Written for
+// any quaternion type with w, x, y, z and the quaternion operations (found by argument-dependent
+// lookup), so that this foundation header knows no type of quat's.
+#ifndef QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
+#define QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// The relative rotation q0* q1 (Body) or q1 q0* (not Body), with q1's sign taken nearer q0. Its
+/// vector part comes from q1 - q0 in place of q1: q0* q0 = |q0|^2 is real, so the vector parts
+/// agree exactly, but q1 - q0 is formed with one relative rounding per component, and the products
+/// then round relative to the small result instead of leaving a difference of nearly equal
+/// products (an absolute error of eps, a relative one of eps / angle, for q0 close to q1).
+template <bool Body, class Quaternion>
+[[nodiscard]] constexpr Quaternion relative_rotation(const Quaternion& q0,
+                                                     const Quaternion& q1) noexcept {
+    using T = decltype(q0.w);
+    const Quaternion near = dot(q0, q1) < T(0) ? -q1 : q1;
+    const Quaternion step = near - q0;
+    const Quaternion v = Body ? conjugate(q0) * step : step * conjugate(q0);
+    return {dot(q0, near), v.x, v.y, v.z};
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
+// ---- end quat/detail/relative_rotation.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// Body-frame angular velocity (a gyroscope's reading, radians per unit of dt) that turns unit q0
+/// into unit q1 in time dt at a constant rate: integrate_body(q0, omega, dt) == q1 as rotations,
+/// along the shorter arc (q1 and -q1 give the same omega, |omega dt| <= pi). Relative error of a
+/// few eps even for tiny turns (|omega dt| = 1e-12). Preconditions: unit q0 and q1 (debug-checked)
+/// and dt != 0; a negative dt gives the omega that satisfies the same relation, dt == 0 gives
+/// infinite or NaN components, an infinite dt the limit 0, and any other NaN or infinite input NaN.
+template <class T>
+[[nodiscard]] constexpr vec3<T> body_angular_velocity(const quaternion<T>& q0,
+                                                      const quaternion<T>& q1,
+                                                      detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
+                "quat::body_angular_velocity: q0 or q1 is not a unit quaternion");
+    return to_rotation_vector(detail::relative_rotation<true>(q0, q1)) / dt;
+}
+
+/// World-frame (space-fixed axes) angular velocity that turns unit q0 into unit q1 in time dt:
+/// integrate_world(q0, omega, dt) == q1 as rotations; equal to rotate(q0, body_angular_velocity).
+/// Shorter arc, accuracy, preconditions and out-of-domain results as for body_angular_velocity.
+template <class T>
+[[nodiscard]] constexpr vec3<T> world_angular_velocity(const quaternion<T>& q0,
+                                                       const quaternion<T>& q1,
+                                                       detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
+                "quat::world_angular_velocity: q0 or q1 is not a unit quaternion");
+    return to_rotation_vector(detail::relative_rotation<false>(q0, q1)) / dt;
+}
+
+/// Orientation after turning unit q0 at the constant body-frame angular velocity omega (radians per
+/// unit of dt, body axes) for dt: q0 * from_rotation_vector(omega * dt), exact for any |omega dt|.
+/// Not renormalized: |q| drifts by a few eps per step, so renormalize a long chain of steps every
+/// few dozen (see tests/test_drift.cpp). NaN or infinite input gives a non-finite result.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> integrate_body(const quaternion<T>& q0, const vec3<T>& omega,
+                                                     detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_body: q0 is not a unit quaternion");
+    return q0 * from_rotation_vector(omega * dt);
+}
+
+/// Orientation after turning unit q0 at the constant world-frame angular velocity omega for dt:
+/// from_rotation_vector(omega * dt) * q0. Renormalization and bad input as for integrate_body.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> integrate_world(const quaternion<T>& q0, const vec3<T>& omega,
+                                                      detail::type_identity_t<T> dt) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_world: q0 is not a unit quaternion");
+    return from_rotation_vector(omega * dt) * q0;
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_KINEMATICS_HPP_INCLUDED
+// ---- end quat/kinematics.hpp ----
+// ---- begin quat/random.hpp ----
+// Uniformly distributed random rotations from any standard random bit generator.
+#ifndef QUAT_RANDOM_HPP_INCLUDED
+#define QUAT_RANDOM_HPP_INCLUDED
+
+#include <limits>
+#include <type_traits>
+
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// A uniform number in [0, 1) from generator's bits, as std::generate_canonical defines it (enough
+/// calls for T's digits, combined in base max - min + 1) without <random>, which would double the
+/// parse time of quat.hpp; a rounding up to 1 (LWG 2524) moves to the largest value below 1.
+template <class T, class Generator>
+[[nodiscard]] T uniform_unit_interval(Generator& generator) noexcept(noexcept(generator())) {
+    constexpr long double range =
+        static_cast<long double>(Generator::max() - Generator::min()) + 1.0L;
+    // The fewest calls k with range^k >= 2^digits(T).
+    constexpr int calls = [] {
+        long double needed = 1;
+        for (int i = 0; i < std::numeric_limits<T>::digits; ++i) needed *= 2;
+        int k = 1;
+        for (long double reach = range; reach < needed; reach *= range) ++k;
+        return k;
+    }();
+    T sum = T(0), scale = T(1);
+    for (int i = 0; i < calls; ++i) {
+        sum += static_cast<T>(generator() - Generator::min()) * scale;
+        scale *= static_cast<T>(range);
+    }
+    const T u = sum / scale;
+    return u < T(1) ? u : T(1) - detail::epsilon<T>() / T(2);
+}
+
+}  // namespace detail
+
+/// A unit quaternion with w >= 0 drawn uniformly over the rotations (the Haar measure: the rotation
+/// angle has density (1 - cos(angle)) / pi on [0, pi] and the rotated axes are uniform on the
+/// sphere). Shoemake's method ("Uniform random rotations", Graphics Gems III, 1992) from three
+/// uniforms, with the second circle's angle in [-pi/2, pi/2] so that w >= 0; negate with
+/// probability 1/2 for a uniform point of the unit 3-sphere. `generator` is any
+/// UniformRandomBitGenerator (std::mt19937, std::mt19937_64, std::minstd_rand, ...); the result
+/// depends only on its state, and no memory is allocated. T is float, double or long double.
+template <class T, class Generator>
+[[nodiscard]] quaternion<T> random_rotation(Generator& generator) noexcept(noexcept(generator())) {
+    static_assert(std::is_floating_point_v<T>, "quat::random_rotation: T must be floating-point");
+    const T u1 = detail::uniform_unit_interval<T>(generator);
+    const T u2 = detail::uniform_unit_interval<T>(generator);
+    const T u3 = detail::uniform_unit_interval<T>(generator);
+    // (x, y) on a circle of radius sqrt(1 - u1) and (w, z) on one of radius sqrt(u1): the squared
+    // radii are uniform, which makes the point uniform on the 3-sphere.
+    const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
+    const T theta1 = T(2) * numbers::pi_v<T> * u2, theta2 = numbers::pi_v<T> * (u3 - T(0.5));
+    // |cos|: pi rounded to float exceeds pi, so theta2 can land just past -pi/2 (u3 = 2^-31 gave
+    // w = -3.1e-8); mirroring that sliver keeps w >= 0 and moves no probability.
+    return {r2 * detail::abs(detail::cos(theta2)), r1 * detail::sin(theta1),
+            r1 * detail::cos(theta1), r2 * detail::sin(theta2)};
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_RANDOM_HPP_INCLUDED
+// ---- end quat/random.hpp ----
+// ---- begin quat/swing_twist.hpp ----
+// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
+#ifndef QUAT_SWING_TWIST_HPP_INCLUDED
+#define QUAT_SWING_TWIST_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
+
+namespace quat {
+
+/// Result of swing_twist: q == swing * twist as rotations (the twist applied first), twist a
+/// rotation about the given axis, swing a rotation about an axis perpendicular to it.
+template <class T>
+struct swing_twist_parts {
+    quaternion<T> swing;  ///< The rotation about an axis perpendicular to the given axis.
+    quaternion<T> twist;  ///< The rotation about the given axis.
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// swing_twist for a unit axis, or std::nullopt where the twist is undefined.
+template <class T>
+[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist_unit(
+    const quaternion<T>& q, const vec3<T>& unit_axis) noexcept {
+    const T along = dot(vec3<T>{q.x, q.y, q.z}, unit_axis);
+    const T eps = detail::epsilon<T>();
+    if (q.w * q.w + along * along <= eps * eps) return std::nullopt;  // NaN goes on, to NaN parts
+    const vec3<T> v = unit_axis * along;
+    const quaternion<T> twist = normalize(quaternion<T>{q.w, v.x, v.y, v.z});
+    return swing_twist_parts<T>{q * conjugate(twist), twist};
+}
+
+}  // namespace detail
+
+/// Splits the unit rotation q into swing * twist (twist applied first): twist =
+/// normalize(w, (v . a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis
+/// perpendicular to a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of
+/// Unreal's FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the
+/// twist is undefined) the twist is the identity and the swing is q. Preconditions: unit q and a
+/// non-zero finite axis of any length (NaN results otherwise); try_swing_twist checks them.
+template <class T>
+[[nodiscard]] constexpr swing_twist_parts<T> swing_twist(const quaternion<T>& q,
+                                                         const vec3<T>& axis) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::swing_twist: q is not a unit quaternion");
+    return detail::try_swing_twist_unit(q, normalize(axis))
+        .value_or(swing_twist_parts<T>{q, quaternion<T>::identity()});
+}
+
+/// swing_twist(q, axis), or std::nullopt where the twist is undefined (w^2 + (v . a)^2 <=
+/// epsilon^2), when q is not a unit quaternion (|q|^2 off 1 by more than 1/4096, the debug check of
+/// swing_twist), when the axis is zero, or when q or the axis has a NaN or infinite component.
+/// Never asserts: the path for untrusted input.
+template <class T>
+[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
+    const quaternion<T>& q, const vec3<T>& axis) noexcept {
+    const std::optional<vec3<T>> unit_axis = try_normalize(axis);
+    if (!unit_axis || !detail::is_finite(q) || !detail::is_near_unit(q)) return std::nullopt;
+    return detail::try_swing_twist_unit(q, *unit_axis);
+}
+
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_SWING_TWIST_HPP_INCLUDED
+// ---- end quat/swing_twist.hpp ----
+
+// The families quat.hpp brings; lie.hpp and registration.hpp are opt-in.
+// ---- begin quat/batch.hpp ----
+// The batch family: one rotation or rigid motion applied to many points, element-by-element
+// products and conversions, and the struct-of-arrays views they take. Included by quat.hpp.
+#ifndef QUAT_BATCH_HPP_INCLUDED
+#define QUAT_BATCH_HPP_INCLUDED
+
+// ---- begin quat/batch/elementwise.hpp ----
 // Element-by-element batches: point i turned by rotation i (rotate_each), the products a[i] * b[i]
 // (compose_each), and the conversions to_matrix_each and to_quaternion_each.
 //
@@ -5983,12 +2964,697 @@ template <sequence S, frame F, class T>
 // constant number of pointer range comparisons per call); with NDEBUG the values written are
 // unspecified. Like all of quat's functions they live in the instruction-set namespace
 // (detail/math.hpp).
-#ifndef QUAT_ELEMENTWISE_HPP_INCLUDED
-#define QUAT_ELEMENTWISE_HPP_INCLUDED
+#ifndef QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
+#define QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
 #include <type_traits>
 
+// ---- begin quat/detail/containers.hpp ----
+// The arrays quat's functions over many elements accept: any contiguous container or view with
+// data() and size() members (std::vector, std::array, std::span), and C arrays.
+#ifndef QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+#define QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// std::data and std::size without <iterator>, which alone adds about 0.18 s (g++ 12 -O2) to every
+// translation unit that includes quat.hpp: half its compile time.
+template <class Container>
+[[nodiscard]] constexpr auto data_of(Container& c) noexcept -> decltype(c.data()) {
+    return c.data();
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr T* data_of(T (&array)[N]) noexcept {
+    return array;
+}
+template <class Container>
+[[nodiscard]] constexpr auto size_of(const Container& c) noexcept -> decltype(c.size()) {
+    return c.size();
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr std::size_t size_of(const T (&)[N]) noexcept {
+    return N;
+}
+
+// Paired containers (docs/conventions.md, "Containers that must match"): whether every container
+// holds as many elements as the first, which the fits and keyframe paths require, and the length
+// all of them hold, the most a batch's container form may read or write.
+template <class First, class... Rest>
+[[nodiscard]] constexpr bool same_size(const First& first, const Rest&... rest) noexcept {
+    return ((detail::size_of(rest) == detail::size_of(first)) && ...);
+}
+template <class First, class... Rest>
+[[nodiscard]] constexpr std::size_t common_size(const First& first, const Rest&... rest) noexcept {
+    std::size_t common = detail::size_of(first);
+    ((common = detail::size_of(rest) < common ? detail::size_of(rest) : common), ...);
+    return common;
+}
+
+// The T of a container of Value<T> (quaternion, vec3, rotation_matrix, dual_quaternion): the one
+// way quat's container forms name the scalar type of their elements. Not a type for a container of
+// anything else, so a container form whose default template argument uses it drops out of overload
+// resolution. element_scalar is declared only, for the type of its result.
+template <template <class> class Value, class T>
+T element_scalar(const Value<T>*) noexcept;
+template <template <class> class Value, class Container>
+using element_scalar_t =
+    decltype(detail::element_scalar<Value>(detail::data_of(std::declval<const Container&>())));
+
+// Enables a container form: Input holds contiguous In, Output contiguous writable Out.
+template <class In, class Out, class Input, class Output>
+using if_arrays_of = std::enable_if_t<
+    std::is_convertible_v<decltype(detail::data_of(std::declval<const Input&>())), const In*> &&
+    std::is_convertible_v<decltype(detail::data_of(std::declval<Output&>())), Out*>>;
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
+// ---- end quat/detail/containers.hpp ----
+// ---- begin quat/batch/detail/interleaved_points_avx.hpp ----
+// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
+// out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
+// builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
+// from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
+// non-temporal stores): <immintrin.h> alone doubled the compile time of a translation unit
+// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
+//
+// Why: x, y, z interleaved in memory must be separated (de-interleaved) before 8 points can share a
+// vector multiply, and joined again after. Compiled from a plain loop, g++ 12 does this with 12
+// vpermd, 5 vpermilps and a vinsertf128 per 8 points with -march=x86-64-v3: 18 uops that only
+// port 5 of an Intel core runs, 2.25 cycles per point, three times the 9 multiply-adds' own cost
+// (GLM's and Eigen's plain loops compile to the same). In transform_interleaved each 128-bit lane
+// holds 4 whole points (loaded as 16-byte halves), so every shuffle stays inside a lane: per
+// coordinate, two blends (any of ports 0, 1, 5) and one in-lane permute (port 5) take it out, and
+// the same permute and two blends put it back. Per 8 points: 6 port-5 permutes, 12 blends, 3 lane
+// inserts and 9 multiply-adds, 30 uops over three ports, 1.25 cycles per point.
+#ifndef QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+
+#include <cstddef>
+#include <cstring>
+
+// ---- begin quat/batch/detail/streaming_store.hpp ----
+// Non-temporal stores for the batch functions, and the last-level cache size that decides when they
+// pay: the one place quat uses x86 intrinsics and cpuid.
+#ifndef QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
+#include <cpuid.h>
+#elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
+#include <intrin.h>
+#endif
+
+namespace quat {
+// Keyed by instruction set (see detail/math.hpp): has_streaming_stores and the code below depend on
+// __SSE__, __AVX__ and __AVX512F__, which the key includes.
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
+#if defined(__SSE__) || defined(_M_X64)
+inline constexpr bool has_streaming_stores = true;
+#else
+inline constexpr bool has_streaming_stores = false;
+#endif
+
+// Floats per non-temporal store: the widest vector of the build. A 64-byte store (AVX-512) fills a
+// cache line at once; narrower ones fill it in order, which the write-combining buffer joins.
+// Measured on a Zen 4 (4M points, g++ 12, medians of 9): 256-bit stores moved the batch rotate
+// 5-15 % faster than 128-bit ones.
+#if defined(__AVX512F__) && defined(__has_builtin)
+#if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps512)
+inline constexpr std::size_t stream_width = 16;
+#else
+inline constexpr std::size_t stream_width = 4;
+#endif
+#elif defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps256)
+inline constexpr std::size_t stream_width = 8;
+#else
+inline constexpr std::size_t stream_width = 4;
+#endif
+#else
+inline constexpr std::size_t stream_width = 4;
+#endif
+
+#if defined(__SSE__) || defined(_M_X64)
+// One non-temporal store of stream_width floats from `from` (any alignment) to `to` (aligned to
+// the store's width). clang spells every width with one builtin, g++ has one per width.
+inline void stream_vector(float* to, const float* from) noexcept {
+    if constexpr (stream_width == 4) {
+        _mm_stream_ps(to, _mm_loadu_ps(from));
+    } else {
+#if defined(__has_builtin)
+        using vector = float __attribute__((vector_size(4 * stream_width)));
+        vector v;
+        std::memcpy(&v, from, sizeof v);
+#if __has_builtin(__builtin_nontemporal_store)
+        __builtin_nontemporal_store(v, reinterpret_cast<vector*>(to));
+#elif defined(__AVX512F__) && __has_builtin(__builtin_ia32_movntps512)
+        __builtin_ia32_movntps512(to, v);
+#elif defined(__AVX__) && __has_builtin(__builtin_ia32_movntps256)
+        __builtin_ia32_movntps256(to, v);
+#endif
+#endif
+    }
+}
+#endif
+
+// Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
+// stores elsewhere: plain stores up to the first address aligned to the store's width, then the
+// widest non-temporal stores of the build.
+inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
+    std::size_t i = 0;
+#if defined(__SSE__) || defined(_M_X64)
+    constexpr std::size_t bytes = sizeof(float) * stream_width;
+    for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
+    for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
+#endif
+    for (; i < n; ++i) to[i] = from[i];
+}
+
+// Makes the streamed stores visible before returning, like ordinary stores.
+inline void stream_fence() noexcept {
+#if defined(__SSE__) || defined(_M_X64)
+    _mm_sfence();
+#endif
+}
+
+// The size in bytes of the largest cache that cpuid's deterministic cache parameters describe
+// (Intel's leaf 4, AMD's leaf 0x8000001D: the same layout; the one that does not apply reads as
+// no caches), for the core that asks: on AMD that is its CCX's L3, not the sum over the chip.
+// 0 where there is no cpuid or it describes no cache.
+inline std::size_t cpuid_largest_cache_bytes() noexcept {
+    std::size_t largest = 0;
+#if ((defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))) || \
+    (defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86)))
+    const unsigned leaves[] = {4u, 0x8000001Du};
+    for (const unsigned leaf : leaves) {
+        for (unsigned index = 0; index < 16; ++index) {
+            unsigned a = 0, b = 0, c = 0, d = 0;
+#if defined(_MSC_VER) && !defined(__clang__)
+            int r[4] = {};
+            __cpuid(r, static_cast<int>(leaf & 0x80000000u));
+            if (static_cast<unsigned>(r[0]) < leaf) break;
+            __cpuidex(r, static_cast<int>(leaf), static_cast<int>(index));
+            a = static_cast<unsigned>(r[0]), b = static_cast<unsigned>(r[1]);
+            c = static_cast<unsigned>(r[2]), d = static_cast<unsigned>(r[3]);
+#else
+            // Returns 0 when the leaf is beyond the processor's maximum.
+            if (__get_cpuid_count(leaf, index, &a, &b, &c, &d) == 0) break;
+#endif
+            static_cast<void>(d);
+            if ((a & 31u) == 0) break;     // cache type "null": no more caches
+            if ((a & 31u) == 2) continue;  // instruction cache
+            const std::size_t ways = (b >> 22) + 1, partitions = ((b >> 12) & 1023u) + 1,
+                              line = (b & 4095u) + 1, sets = std::size_t(c) + 1;
+            const std::size_t size = ways * partitions * line * sets;
+            if (size > largest) largest = size;
+        }
+        if (largest != 0) break;
+    }
+#endif
+    return largest;
+}
+
+// The fixed threshold of earlier versions, and the last resort where no cache size can be read:
+// 16 MiB of output.
+inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
+
+// The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
+// sysconf, whose L3 figure virtual machines may invent (320 MiB on a Zen 4 guest whose cpuid and
+// lscpu say 32 MiB), and which would bring <unistd.h>'s names into every user's code: streaming
+// happens only on x86, where cpuid is always there.
+inline std::size_t last_level_cache_bytes() noexcept {
+    static const std::size_t bytes = cpuid_largest_cache_bytes();
+    return bytes;
+}
+
+// The batch functions stream an output of at least this many bytes. The rule: stream when the
+// data one call touches, input and output (twice the output), exceeds the last-level cache, so
+// the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
+// each line only adds a third to the memory traffic; below that plain stores, which leave the
+// result in cache. Without a cache size, the fixed 16 MiB of earlier versions.
+inline std::size_t streaming_threshold_bytes() noexcept {
+    const std::size_t cache = last_level_cache_bytes();
+    return cache == 0 ? default_streaming_bytes : cache / 2;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
+// ---- end quat/batch/detail/streaming_store.hpp ----
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+
+using float4 = float __attribute__((vector_size(16)));
+using float8 = float __attribute__((vector_size(32)));
+
+[[nodiscard]] inline float4 load4(const float* p) noexcept {
+    float4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
+// A plain store, or a non-temporal one (p aligned to 16 bytes) when Stream.
+template <bool Stream>
+inline void put4(float* p, float4 v) noexcept {
+    if constexpr (Stream) {
+        _mm_stream_ps(p, v);
+    } else {
+        store4(p, v);
+    }
+}
+
+// Blends of a and b lane by lane (mask bit i set: element i from b), as vblendps encodes them.
+[[nodiscard]] inline float8 blend_2_6(float8 a, float8 b) noexcept {
+    return __builtin_shufflevector(a, b, 0, 1, 10, 3, 4, 5, 14, 7);
+}
+[[nodiscard]] inline float8 blend_1_5(float8 a, float8 b) noexcept {
+    return __builtin_shufflevector(a, b, 0, 9, 2, 3, 4, 13, 6, 7);
+}
+[[nodiscard]] inline float8 blend_0_3_4_7(float8 a, float8 b) noexcept {
+    return __builtin_shufflevector(a, b, 8, 1, 2, 11, 12, 5, 6, 15);
+}
+// In-lane permutes, each its own inverse: (0 3 2 1), (1 0 3 2), (2 1 0 3) in each half.
+[[nodiscard]] inline float8 swap_1_3(float8 v) noexcept {
+    return __builtin_shufflevector(v, v, 0, 3, 2, 1, 4, 7, 6, 5);
+}
+[[nodiscard]] inline float8 swap_pairs(float8 v) noexcept {
+    return __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6);
+}
+[[nodiscard]] inline float8 swap_0_2(float8 v) noexcept {
+    return __builtin_shufflevector(v, v, 2, 1, 0, 3, 6, 5, 4, 7);
+}
+
+// Rotates (and translates when Translate) points [0, n - n % 8) of the float array `in`, three
+// floats a point, into `out`, and returns how many it did. out == in is safe: each group of 8
+// points is read whole before it is written. The sums are m00 x + m01 y + m02 z in that order, as
+// the scalar loop has them (contracted into FMAs alike where the target has them). With Stream the
+// stores are non-temporal (out aligned to 16 bytes): the 16-byte pieces of a group are written in
+// address order, so the write-combining buffers fill whole lines, and the memory writes overlap
+// the loads and arithmetic of the next groups, which a computed block streamed afterwards does not
+// (4M points on a Zen 4: 3.2-3.5 ms against 3.5-3.8 through a buffer; streaming copy 3.2-3.3).
+template <bool Translate, bool Stream = false>
+[[nodiscard]] inline std::size_t transform_interleaved(const rotation_matrix<float>& m,
+                                                       const vec3<float>& t, const float* in,
+                                                       float* out, std::size_t n) noexcept {
+    auto splat = [](float s) noexcept { return float8{s, s, s, s, s, s, s, s}; };
+    const float8 m00 = splat(m(0, 0)), m01 = splat(m(0, 1)), m02 = splat(m(0, 2)),
+                 m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
+                 m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
+    const float8 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
+    // The high half by the vinsertf128 builtin, which takes it straight from memory (a shuffle of
+    // two loaded halves costs a port-5 uop more per register).
+    auto load = [](const float* low, const float* high) noexcept {
+        const float4 lower = load4(low);
+        return __builtin_ia32_vinsertf128_ps256(
+            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
+    };
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const float* p = in + 3 * i;
+        // Per lane (points 0-3 low, 4-7 high): a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3.
+        const float8 a = load(p, p + 12), b = load(p + 4, p + 16), c = load(p + 8, p + 20);
+        // The blends gather a coordinate in a rotated order (x0 x3 x2 x1, y1 y0 y3 y2,
+        // z2 z1 z0 z3); the permutes put it in order, and later back.
+        const float8 x = swap_1_3(blend_1_5(blend_2_6(a, b), c));
+        const float8 y = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
+        const float8 z = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));
+        float8 rx = m00 * x + m01 * y + m02 * z;
+        float8 ry = m10 * x + m11 * y + m12 * z;
+        float8 rz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        const float8 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
+        const float8 ra = blend_2_6(blend_1_5(px, py), pz);
+        const float8 rb = blend_2_6(blend_1_5(py, pz), px);
+        const float8 rc = blend_2_6(blend_1_5(pz, px), py);
+        float* o = out + 3 * i;
+        // Halves taken by the vextractf128 builtin (g++ and clang alike), not by a shuffle: g++
+        // merges adjacent shuffled halves into 256-bit stores through three vperm2f128 (port 5),
+        // which measured 424 ns against 359 ns at 1024 points.
+        put4<Stream>(o, __builtin_ia32_vextractf128_ps256(ra, 0));
+        put4<Stream>(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
+        put4<Stream>(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
+        put4<Stream>(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
+        put4<Stream>(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
+        put4<Stream>(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
+    }
+    return i;
+}
+
+#if defined(__AVX512F__)
+
+using float16 = float __attribute__((vector_size(64)));
+
+[[nodiscard]] inline float16 load16(const float* p) noexcept {
+    float16 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// As transform_interleaved, 16 points (48 floats, three registers a, b, c) a step with full-width
+// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from
+// c; each output register is joined from x and y, then completed from z. 12 permutes and 9
+// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it keeps
+// to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
+template <bool Translate>
+[[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
+                                                          const vec3<float>& t, const float* in,
+                                                          float* out, std::size_t n) noexcept {
+    auto splat = [](float s) noexcept {
+        return float16{s, s, s, s, s, s, s, s, s, s, s, s, s, s, s, s};
+    };
+    const float16 m00 = splat(m(0, 0)), m01 = splat(m(0, 1)), m02 = splat(m(0, 2)),
+                  m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
+                  m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
+    const float16 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const float* p = in + 3 * i;
+        const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
+        // Indices 0-15 name the first source, 16-31 the second; "keep" lanes name themselves.
+        const float16 x = __builtin_shufflevector(
+            __builtin_shufflevector(a, b, 0, 3, 6, 9, 12, 15, 18, 21, 24, 27, 30, 0, 0, 0, 0, 0), c,
+            0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 17, 20, 23, 26, 29);
+        const float16 y = __builtin_shufflevector(
+            __builtin_shufflevector(a, b, 1, 4, 7, 10, 13, 16, 19, 22, 25, 28, 31, 0, 0, 0, 0, 0),
+            c, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 18, 21, 24, 27, 30);
+        const float16 z = __builtin_shufflevector(
+            __builtin_shufflevector(a, b, 2, 5, 8, 11, 14, 17, 20, 23, 26, 29, 0, 0, 0, 0, 0, 0), c,
+            0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 16, 19, 22, 25, 28, 31);
+        float16 rx = m00 * x + m01 * y + m02 * z;
+        float16 ry = m10 * x + m11 * y + m12 * z;
+        float16 rz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        // Output register r holds floats 16 r ... 16 r + 15 of the group.
+        const float16 oa = __builtin_shufflevector(
+            __builtin_shufflevector(rx, ry, 0, 16, 0, 1, 17, 0, 2, 18, 0, 3, 19, 0, 4, 20, 0, 5),
+            rz, 0, 1, 16, 3, 4, 17, 6, 7, 18, 9, 10, 19, 12, 13, 20, 15);
+        const float16 ob = __builtin_shufflevector(
+            __builtin_shufflevector(rx, ry, 21, 0, 6, 22, 0, 7, 23, 0, 8, 24, 0, 9, 25, 0, 10, 26),
+            rz, 0, 21, 2, 3, 22, 5, 6, 23, 8, 9, 24, 11, 12, 25, 14, 15);
+        const float16 oc =
+            __builtin_shufflevector(__builtin_shufflevector(rx, ry, 0, 11, 27, 0, 12, 28, 0, 13, 29,
+                                                            0, 14, 30, 0, 15, 31, 0),
+                                    rz, 26, 1, 2, 27, 4, 5, 28, 7, 8, 29, 10, 11, 30, 13, 14, 31);
+        std::memcpy(out + 3 * i, &oa, sizeof oa);
+        std::memcpy(out + 3 * i + 16, &ob, sizeof ob);
+        std::memcpy(out + 3 * i + 32, &oc, sizeof oc);
+    }
+    return i;
+}
+
+#endif  // __AVX512F__
+#endif  // __has_builtin(__builtin_shufflevector)
+#endif  // __AVX__ && __has_builtin
+
+// Rotates (and translates when Translate) the leading points of `in` (three floats each) into
+// `out` with the kernels above where the build has them (AVX, g++ 12 or clang), and returns how
+// many it did, leaving fewer than 8 to the caller; 0 elsewhere. With Stream (out aligned to 16
+// bytes) the stores are non-temporal, by the 8-point kernel in AVX-512 builds too: out of cache
+// the arithmetic is not the bound.
+template <bool Translate, bool Stream = false>
+[[nodiscard]] inline std::size_t transform_interleaved_floats(
+    const rotation_matrix<float>& m, const vec3<float>& t, const float* in,
+    // NOLINTNEXTLINE(readability-non-const-parameter): AVX builds write it
+    float* out, std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+#if defined(__AVX512F__)
+    if constexpr (!Stream) done = transform_interleaved_16<Translate>(m, t, in, out, n);
+#endif
+    done += transform_interleaved<Translate, Stream>(m, t, in + 3 * done, out + 3 * done, n - done);
+#endif
+#endif
+    static_cast<void>(m), static_cast<void>(t), static_cast<void>(in), static_cast<void>(out),
+        static_cast<void>(n);  // unused where no kernel applies
+    return done;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+// ---- end quat/batch/detail/interleaved_points_avx.hpp ----
+// ---- begin quat/batch/detail/overlap.hpp ----
+// Whether two arrays overlap: the aliasing preconditions of the functions over many elements
+// (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
+#ifndef QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
+
+#include <cstddef>
+#include <cstdint>
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
+[[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                   std::size_t b_bytes) noexcept {
+    const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
+    return a_bytes == 0 || b_bytes == 0 || x + a_bytes <= y || y + b_bytes <= x;
+}
+// True when the two ranges are one and the same (an in-place call) or do not overlap.
+[[nodiscard]] inline bool same_or_disjoint(const void* a, std::size_t a_bytes, const void* b,
+                                           std::size_t b_bytes) noexcept {
+    return (a == b && a_bytes == b_bytes) || disjoint(a, a_bytes, b, b_bytes);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
+// ---- end quat/batch/detail/overlap.hpp ----
+// ---- begin quat/batch/soa.hpp ----
+// Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
+// component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
+// them are in batch.hpp (rotate), rigid_batch.hpp (transform) and elementwise.hpp (rotate_each).
+//
+// The view types are the same under every instruction set, so they stay outside the instruction-set
+// namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
+#ifndef QUAT_BATCH_SOA_HPP_INCLUDED
+#define QUAT_BATCH_SOA_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+
+
+namespace quat {
+
+/// Points stored as three separate coordinate arrays (struct of arrays), each `count` long.
+/// Use soa_points<const T> for inputs and soa_points<T> for outputs; soa_points<T> converts to
+/// soa_points<const T>, so one object can be both (an in-place rotate(q, points, points)).
+template <class T>
+struct soa_points {
+    T* x;               ///< x coordinates
+    T* y;               ///< y coordinates
+    T* z;               ///< z coordinates
+    std::size_t count;  ///< number of points in each array
+
+    /// The same arrays, read-only. Always inlined: a member function is not keyed by instruction
+    /// set as quat's free functions are (see detail/math.hpp), so no copy of it may be emitted.
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_points<const U>() const noexcept {
+        return {x, y, z, count};
+    }
+};
+
+/// Rotations stored as four separate component arrays (struct of arrays), each `count` long:
+/// rotation i is w[i] + x[i] i + y[i] j + z[i] k. Use soa_quaternions<const T> for inputs;
+/// soa_quaternions<T> converts to it.
+template <class T>
+struct soa_quaternions {
+    T* w;               ///< scalar parts
+    T* x;               ///< i components
+    T* y;               ///< j components
+    T* z;               ///< k components
+    std::size_t count;  ///< number of rotations in each array
+
+    /// The same arrays, read-only; always inlined, as soa_points' conversion.
+    template <class U = T, class = std::enable_if_t<!std::is_const_v<U>>>
+    [[gnu::always_inline]] constexpr operator soa_quaternions<const U>() const noexcept {
+        return {w, x, y, z, count};
+    }
+};
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The aliasing rule of the struct-of-arrays forms: each output array is one of the input arrays or
+// overlaps none of them; every array holds `count` elements. The inputs come as a plain array, not
+// a braced list: std::initializer_list's members are the standard library's inline functions, not
+// keyed by instruction set.
+template <class T, std::size_t N>
+[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
+                                        std::size_t count) noexcept {
+    const std::size_t bytes = count * sizeof(T);
+    const T* const outputs[] = {output.x, output.y, output.z};
+    for (const T* out : outputs)
+        for (const T* in : inputs)
+            if (!same_or_disjoint(in, bytes, out, bytes)) return false;
+    return true;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_SOA_HPP_INCLUDED
+// ---- end quat/batch/soa.hpp ----
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -6360,13 +4026,283 @@ void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_ELEMENTWISE_HPP_INCLUDED
-// ---- end quat/elementwise.hpp ----
-// ---- begin quat/homogeneous_matrix.hpp ----
+#endif  // QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
+// ---- end quat/batch/elementwise.hpp ----
+// ---- begin quat/batch/rigid_motions.hpp ----
+// Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
+// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
+// (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
+// namespaces are those of batch.hpp.
+#ifndef QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
+#define QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
+
+#include <cstddef>
+
+// ---- begin quat/rigid/dual_quaternion.hpp ----
+// Dual quaternions real + eps dual (eps^2 = 0): rigid motions x -> R x + t in 8 numbers.
+#ifndef QUAT_RIGID_DUAL_QUATERNION_HPP_INCLUDED
+#define QUAT_RIGID_DUAL_QUATERNION_HPP_INCLUDED
+
+#include <optional>
+#include <type_traits>
+
+
+namespace quat {
+
+/// Dual quaternion real + eps dual with eps^2 = 0. A unit dual quaternion (|real| = 1, dot(real,
+/// dual) = 0) is the rigid motion x -> R x + t with real the rotation R and dual = (0, t) real / 2;
+/// dq and -dq are the same motion. Members are public, as for quaternion.
+template <class T>
+struct dual_quaternion {
+    quaternion<T> real;  ///< The rotation.
+    quaternion<T> dual;  ///< Half the translation times the rotation: (0, t) real / 2.
+
+    /// Components left uninitialized, as in a plain struct; dual_quaternion<T>{} is zero.
+    dual_quaternion() = default;
+    /// The dual quaternion real_part + eps dual_part.
+    [[gnu::always_inline]] constexpr dual_quaternion(const quaternion<T>& real_part,
+                                                     const quaternion<T>& dual_part) noexcept
+        : real(real_part), dual(dual_part) {}
+    /// Conversion from another precision, component by component.
+    template <class U>
+    [[gnu::always_inline]] constexpr explicit dual_quaternion(const dual_quaternion<U>& dq) noexcept
+        : real(quaternion<T>(dq.real)), dual(quaternion<T>(dq.dual)) {}
+
+    /// The motion that moves nothing: real 1, dual 0.
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion identity() noexcept {
+        return {quaternion<T>::identity(), quaternion<T>{T(0), T(0), T(0), T(0)}};
+    }
+    /// The pure translation x -> x + t: to_dual_quaternion(identity, t), real 1, dual (0, t / 2).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr dual_quaternion from_translation(
+        const vec3<T>& t) noexcept {
+        return to_dual_quaternion(quaternion<T>::identity(), t);
+    }
+};
+
+using dual_quaternionf = dual_quaternion<float>;   ///< Single-precision dual quaternion.
+using dual_quaterniond = dual_quaternion<double>;  ///< Double-precision dual quaternion.
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The rigid motion x -> R x + t that first rotates by unit `rotation`, then translates by
+/// `translation`: real = rotation, dual = (0, translation) rotation / 2.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(const quaternion<T>& rotation,
+                                                              const vec3<T>& translation) noexcept {
+    const quaternion<T> half{T(0), translation.x * T(0.5), translation.y * T(0.5),
+                             translation.z * T(0.5)};
+    return {rotation, half * rotation};
+}
+
+/// The pure rotation x -> R x by unit `rotation`: to_dual_quaternion(rotation, {0, 0, 0}), real =
+/// rotation, dual zero. (A pure translation is dual_quaternion<T>::from_translation(t).)
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> to_dual_quaternion(
+    const quaternion<T>& rotation) noexcept {
+    return to_dual_quaternion(rotation, vec3<T>{T(0), T(0), T(0)});
+}
+
+/// The rotation of the unit dual quaternion dq (its real part).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotation_of(const dual_quaternion<T>& dq) noexcept {
+    return dq.real;
+}
+
+namespace detail {
+
+/// 2 x, or +-max() where x is within a few units of roundoff of max() / 2 and the doubling alone
+/// would overflow (a value of max() read back with rounding error); infinite beyond that.
+template <class T>
+[[nodiscard]] constexpr T doubled_within_range(T x) noexcept {
+    const T twice = x + x;
+    if constexpr (std::is_floating_point_v<T>) {
+        constexpr T limit = largest<T>() / T(2) * (T(1) + T(16) * epsilon<T>());
+        if (!is_finite(twice) && abs(x) <= limit) return x < T(0) ? -largest<T>() : largest<T>();
+    }
+    return twice;
+}
+
+}  // namespace detail
+
+/// The translation t = 2 dual real* of the unit dual quaternion dq, as a vector, for components
+/// up to max(): one that rounding alone carries past max() (as in reading back a translation of
+/// max() through to_dual_quaternion) is +-max(), not infinite.
+/// Precondition: |real| = 1; a real part of norm s gives s^2 t.
+template <class T>
+[[nodiscard]] constexpr vec3<T> translation_of(const dual_quaternion<T>& dq) noexcept {
+    // The vector part of dual real*, w_r d - w_d r + r x d, without the scalar part the full
+    // product would spend 4 multiplications on: 12 multiplications and 12 additions in all. Each
+    // component is a dot product of r with a signed permutation of d, so no partial sum exceeds
+    // |r| |d| = |t| / 2 (at most sqrt(3) max() / 2): only the doubling can overflow.
+    const quaternion<T>& r = dq.real;
+    const quaternion<T>& d = dq.dual;
+    const vec3<T> half{r.w * d.x - d.w * r.x + (r.y * d.z - r.z * d.y),
+                       r.w * d.y - d.w * r.y + (r.z * d.x - r.x * d.z),
+                       r.w * d.z - d.w * r.z + (r.x * d.y - r.y * d.x)};
+    return {detail::doubled_within_range(half.x), detail::doubled_within_range(half.y),
+            detail::doubled_within_range(half.z)};
+}
+
+/// Negation: the same rigid motion.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator-(const dual_quaternion<T>& dq) noexcept {
+    return {-dq.real, -dq.dual};
+}
+
+/// Product (a.real + eps a.dual)(b.real + eps b.dual): as rigid motions, a * b applies b first.
+/// 48 multiplications and 40 additions.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& a,
+                                                     const dual_quaternion<T>& b) noexcept {
+    return {a.real * b.real, a.real * b.dual + a.dual * b.real};
+}
+
+/// a = a * b: as rigid motions, b is applied first, then the old a.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& a,
+                                         const dual_quaternion<T>& b) noexcept {
+    return a = a * b;
+}
+
+/// Product with a scalar, all eight components (as GLM's tdualquat * s); s converts to T. Not a
+/// rigid motion unless s is +-1: normalize or blend weights use it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real * s, dq.dual * s};
+}
+/// Product with a scalar, all eight components; s converts to T.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator*(detail::type_identity_t<T> s,
+                                                     const dual_quaternion<T>& dq) noexcept {
+    return dq * s;
+}
+/// Division of all eight components by s (converted to T); s == 0 gives IEEE infinities or NaN.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> operator/(const dual_quaternion<T>& dq,
+                                                     detail::type_identity_t<T> s) noexcept {
+    return {dq.real / s, dq.dual / s};
+}
+/// dq = dq * s.
+template <class T>
+constexpr dual_quaternion<T>& operator*=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq * s;
+}
+/// dq = dq / s.
+template <class T>
+constexpr dual_quaternion<T>& operator/=(dual_quaternion<T>& dq,
+                                         detail::type_identity_t<T> s) noexcept {
+    return dq = dq / s;
+}
+
+/// Exact component-wise equality; dq == -dq is false although both are one motion.
+template <class T>
+[[nodiscard]] constexpr bool operator==(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return a.real == b.real && a.dual == b.dual;
+}
+/// Negation of ==.
+template <class T>
+[[nodiscard]] constexpr bool operator!=(const dual_quaternion<T>& a,
+                                        const dual_quaternion<T>& b) noexcept {
+    return !(a == b);
+}
+
+/// The multiplicative inverse real^-1 - eps real^-1 dual real^-1, which for a unit dq is the
+/// inverse rigid motion x -> R^T (x - t). Valid for every dq with a non-zero real part, whether or
+/// not dual is orthogonal to real, and for any magnitude whose inverse is representable (as
+/// inverse(quaternion)). A zero real part or a NaN or infinite real component gives NaN in both
+/// parts; a NaN or infinite dual component, NaN in the dual part.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> inverse(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = inverse(dq.real);
+    return {real, -(real * dq.dual * real)};
+}
+
+/// The unit dual quaternion nearest dq: divided by |real|, then the dual part's component along
+/// the real part removed, so dot(real, dual) = 0 and translation_of reads a pure vector. The
+/// rotation is normalize(dq.real); the translation is that of dq for a dq with orthogonal parts.
+/// Precondition: real non-zero and dq finite, else the result holds NaN; try_normalize checks it.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> normalize(const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T> real = normalize(dq.real);
+    const quaternion<T> dual = dq.dual / norm(dq.real);
+    return {real, dual - real * dot(real, dual)};
+}
+
+/// normalize(dq), or std::nullopt when the real part is zero, any component is not finite, or the
+/// normalized dual part overflows.
+template <class T>
+[[nodiscard]] constexpr std::optional<dual_quaternion<T>> try_normalize(
+    const dual_quaternion<T>& dq) noexcept {
+    const quaternion<T>& d = dq.dual;
+    if (!try_normalize(dq.real) || !detail::is_finite(d)) return std::nullopt;
+    const dual_quaternion<T> result = normalize(dq);
+    // A dual part huge beside a tiny real part can overflow once divided by |real|.
+    if (!detail::is_finite(squared_norm(result.dual))) return std::nullopt;
+    return result;
+}
+
+/// R p + t: moves the point p by the unit dual quaternion dq. Precondition: |real| = 1 and
+/// dot(real, dual) = 0, as normalize returns them (|real| is checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform: the real part is not a unit quaternion");
+    return rotate(dq.real, p) + translation_of(dq);
+}
+
+/// dq * p, as GLM's tdualquat * vec3 and Eigen's Isometry3 * Vector3 write it: the same as
+/// transform(dq, p), debug check included. A point transform: p is rotated, then translated (use
+/// transform_vector for a direction).
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
+    return transform(dq, p);
+}
+
+/// R v: turns the direction v by the rotation of the unit dual quaternion dq, without translating.
+/// Precondition: |real| = 1 (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr vec3<T> transform_vector(const dual_quaternion<T>& dq,
+                                                 const vec3<T>& v) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(dq.real),
+                "quat::transform_vector: the real part is not a unit quaternion");
+    return detail::rotate_unchecked(dq.real, v);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_RIGID_DUAL_QUATERNION_HPP_INCLUDED
+// ---- end quat/rigid/dual_quaternion.hpp ----
+// ---- begin quat/rigid/homogeneous_matrix.hpp ----
 // 4x4 homogeneous matrices of rigid motions, acting on column vectors (x, y, z, 1), and their
 // conversions to and from dual quaternions.
-#ifndef QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
-#define QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+#ifndef QUAT_RIGID_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+#define QUAT_RIGID_HOMOGENEOUS_MATRIX_HPP_INCLUDED
 
 #include <optional>
 #include <type_traits>
@@ -6641,23 +4577,102 @@ template <class T>
 
 }  // namespace quat
 
-#endif  // QUAT_HOMOGENEOUS_MATRIX_HPP_INCLUDED
-// ---- end quat/homogeneous_matrix.hpp ----
-// ---- begin quat/keyframe_slerp.hpp ----
-// Piecewise slerp through keyframes at given times: scipy's Slerp(times, rotations)(t).
-#ifndef QUAT_KEYFRAME_SLERP_HPP_INCLUDED
-#define QUAT_KEYFRAME_SLERP_HPP_INCLUDED
+#endif  // QUAT_RIGID_HOMOGENEOUS_MATRIX_HPP_INCLUDED
+// ---- end quat/rigid/homogeneous_matrix.hpp ----
+// ---- begin quat/batch/detail/chained_product.hpp ----
+// The product of many factors in four interleaved chains: compose over an array of quaternions
+// (batch.hpp) and of dual quaternions (rigid_batch.hpp).
+#ifndef QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 
 #include <cstddef>
-#include <limits>
 
-// ---- begin quat/detail/segments.hpp ----
-// Finding the segment of a keyframe path that holds a time, and checking keyframe times.
-#ifndef QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
-#define QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The number of chains: enough for a CPU to overlap the products (each waits on its predecessor).
+inline constexpr std::size_t product_chains = 4;
+
+// The four chains of chained_product for types whose four running products the compiler keeps in
+// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1].
+// A type that needs another layout (dual quaternions, rigid_batch.hpp) gives chained_product a
+// class with the same static member.
+template <class Value>
+struct chain_values {
+    static constexpr void run_products(const Value* f, std::size_t run,
+                                       Value (&chain)[product_chains]) noexcept {
+        Value acc[product_chains] = {Value::identity(), Value::identity(), Value::identity(),
+                                     Value::identity()};
+        for (std::size_t i = 0; i < run; ++i)
+            for (std::size_t j = 0; j < product_chains; ++j) acc[j] = acc[j] * f[j * run + i];
+        for (std::size_t j = 0; j < product_chains; ++j) chain[j] = acc[j];
+    }
+};
+
+// The product f[0] f[1] ... f[count - 1] (f[count - 1] applies first); identity when count == 0.
+// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
+// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
+// the same product as the left-to-right loop by associativity, rounded differently. Never inlined:
+// g++ fuses multiply-adds differently in different callers (-ffp-contract=fast), and one copy keeps
+// compose(factors) and compose(pointer, count) equal to the last bit.
+template <class Value, class Chains = chain_values<Value>>
+[[nodiscard, gnu::noinline]] constexpr Value chained_product(const Value* f,
+                                                             std::size_t count) noexcept {
+    constexpr std::size_t lanes = product_chains;
+    if (count < 4 * lanes) {  // too short to win back the three products that join the chains
+        Value product = Value::identity();
+        for (std::size_t i = 0; i < count; ++i) product = product * f[i];
+        return product;
+    }
+    const std::size_t run = count / lanes;
+    Value chain[lanes] = {};
+    Chains::run_products(f, run, chain);
+    // The factors beyond the four runs join the last chain.
+    for (std::size_t i = lanes * run; i < count; ++i) chain[lanes - 1] = chain[lanes - 1] * f[i];
+    return (chain[0] * chain[1]) * (chain[2] * chain[3]);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+// ---- end quat/batch/detail/chained_product.hpp ----
+// ---- begin quat/batch/detail/transform_points.hpp ----
+// The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
+// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
+// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
+// its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
+// last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
+#ifndef QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
 #include <cstddef>
-#include <limits>
+#include <cstdint>
 #include <type_traits>
 
 
@@ -6688,59 +4703,1489 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// static_cast<T>(x), except that a floating-point x beyond T's largest finite value gives an
-/// infinity of its sign, as IEEE rounding would (the cast itself is undefined there): a double
-/// time of 1e300 beside float rotations becomes infinite, which the checks then see.
-template <class T, class U>
-[[nodiscard]] constexpr T to_scalar(U x) noexcept {
-    if constexpr (std::is_floating_point_v<T> && std::is_floating_point_v<U> &&
-                  (sizeof(U) > sizeof(T))) {
-        const U largest = static_cast<U>(detail::largest<T>());
-        if (x > largest) return detail::infinity<T>();
-        if (x < -largest) return -detail::infinity<T>();
+// Points per block where a block is computed into a local buffer first: the streaming rotation.
+inline constexpr std::size_t batch_block = 256;
+
+// The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
+// its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
+
+// output[i] = m input[i], plus t when Translate (rigid motions); rotate passes Translate = false,
+// so its results carry no added zero.
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                     vec3<T>* output, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    std::size_t done = 0;
+    // Float: whole groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp
+    // in AVX builds, the rest (all of it elsewhere) below.
+    if constexpr (std::is_same_v<T, float>) {
+        static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                      "vec3<float> must be three packed floats");
+        if (n >= 8)
+            done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
     }
-    return static_cast<T>(x);
+    // Point i is read before it is written and no iteration touches another's point, so the
+    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = done; i < n; ++i) {
+        const T x = input[i].x, y = input[i].y, z = input[i].z;
+        T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
+          oz = m20 * x + m21 * y + m22 * z;
+        if constexpr (Translate) {
+            ox += tx;
+            oy += ty;
+            oz += tz;
+        }
+        output[i] = vec3<T>{ox, oy, oz};
+    }
 }
 
-/// The segment i in [0, count - 2] with times[i] <= t < times[i + 1]: 0 for t before times[1]
-/// (and for NaN), count - 2 from times[count - 2] on, and 0 when count < 2 (no segment: callers
-/// check that first). `hint`, a segment tried first together with its successor, makes a walk
-/// through sorted times constant time per step. Unsorted times give some index in [0, count - 2],
-/// never one out of range; callers check the order (the search visits too few times to).
-template <class Time, class T>
-[[nodiscard]] constexpr std::size_t segment_of(const Time* times, std::size_t count, T t,
-                                               std::size_t hint = 0) noexcept {
-    if (count < 2) return 0;  // count - 2 would wrap
-    const auto time = [times](std::size_t i) { return to_scalar<T>(times[i]); };
-    const std::size_t last = count - 2;
-    if (hint <= last && !(t < time(hint))) {
-        if (hint == last || t < time(hint + 1)) return hint;
-        if (hint + 1 == last || t < time(hint + 2)) return hint + 1;
+// Writes the points with non-temporal stores. The first points (at most 15) are stored plainly
+// up to a 64-byte boundary of the output, so that no cache line is written partly by plain and
+// partly by non-temporal stores. AVX builds then stream straight from the shuffling kernel
+// (interleaved_points_avx.hpp); the rest (all of it in SSE builds) is computed block by block
+// into a local buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole
+// lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
+// a Zen 4 (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks
+// 3.5-3.8, streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
+template <bool Translate>
+void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
+                         const vec3<float>* input, vec3<float>* output,
+                         std::size_t count) noexcept {
+    static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
+                  "vec3<float> must be three packed floats");
+    static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
+    std::size_t start = 0;
+    while (start < 16 && start < count &&
+           reinterpret_cast<std::uintptr_t>(output + start) % 64 != 0)
+        ++start;
+    transform_block<Translate>(m, t, input, output, start);
+    if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
+        start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
+                                                               &output[start].x, count - start);
+    alignas(64) vec3<float> buffer[batch_block];
+    for (; start < count; start += batch_block) {
+        const std::size_t n = count - start < batch_block ? count - start : batch_block;
+        transform_block<Translate>(m, t, input + start, buffer, n);
+        stream_floats(&output[start].x, &buffer[0].x, 3 * n);
     }
-    // Binary search for the last i <= last with times[i] <= t (times[0] counts as -infinity).
-    std::size_t low = 0, high = last;
-    while (low < high) {
-        const std::size_t middle = low + (high - low + 1) / 2;
-        if (t < time(middle) || t != t) high = middle - 1;
-        else low = middle;
-    }
-    return low;
+    stream_fence();
 }
 
-/// True when the `count` times, converted to T, are finite and strictly increasing; the debug
-/// check of the keyframe paths. Always true for scalars other than float, double and long double,
-/// so that debug checks ask nothing more of a user scalar.
-template <class T, class Time>
-[[nodiscard]] constexpr bool are_keyframe_times(const Time* times, std::size_t count) noexcept {
+template <bool Translate, class T>
+void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
+                     const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
+    const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
+            m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
+    const T tx = t.x, ty = t.y, tz = t.z;
+    // Each index is read before it is written, so each output array may be its own input array, and
+    // there is no dependence between iterations (the documented aliasing rule): say so to the
+    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = 0; i < n; ++i) {
+        const T px = x[i], py = y[i], pz = z[i];
+        T rx = m00 * px + m01 * py + m02 * pz, ry = m10 * px + m11 * py + m12 * pz,
+          rz = m20 * px + m21 * py + m22 * pz;
+        if constexpr (Translate) {
+            rx += tx;
+            ry += ty;
+            rz += tz;
+        }
+        ox[i] = rx;
+        oy[i] = ry;
+        oz[i] = rz;
+    }
+}
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+// output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
+// and of the rigid transform (rigid_batch.hpp).
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
+                      vec3<T>* output, std::size_t count) noexcept {
+    // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
+    // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
+    // 32 MiB L3 (issue 27, g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms
+    // against 3.9-4.1 plain, streaming copy 3.2-3.8. Earlier machines, under the fixed 16 MiB
+    // threshold this rule replaces: the Xeon of issue 16 (streaming won at every level, SSE2 5.7
+    // ms against 6.6, AVX2 4.7-4.9 against 5.2-6.0), the Zen 5 of issue 6 (won only with AVX-512).
+    if constexpr (std::is_same_v<T, float>) {
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
+            transform_streaming<Translate>(m, t, input, output, count);
+            return;
+        }
+    }
+    // Each point is read before it is written, so output == input is safe here; g++ and clang
+    // vectorize this loop (3-way interleaved loads and stores) behind a run-time overlap check.
+    transform_block<Translate>(m, t, input, output, count);
+}
+
+// The struct-of-arrays loop of rotate and of the rigid transform.
+template <bool Translate, class T>
+void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
+                      soa_points<T> output) noexcept {
+    if constexpr (std::is_same_v<T, float>) {
+        if (has_streaming_stores &&
+            input.count * 3 * sizeof(float) >= streaming_threshold_bytes()) {
+            // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
+            // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
+            // the same offset into a page), so that the blocks cover whole cache lines.
+            std::size_t head = 0;
+            while (head < 16 && head < input.count &&
+                   reinterpret_cast<std::uintptr_t>(output.x + head) % 64 != 0)
+                ++head;
+            transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y,
+                                       output.z, head);
+            alignas(64) float rx[batch_block];
+            alignas(64) float ry[batch_block];
+            alignas(64) float rz[batch_block];
+            for (std::size_t start = head; start < input.count; start += batch_block) {
+                const std::size_t n =
+                    input.count - start < batch_block ? input.count - start : batch_block;
+                transform_block<Translate>(m, t, input.x + start, input.y + start, input.z + start,
+                                           rx, ry, rz, n);
+                stream_floats(output.x + start, rx, n);
+                stream_floats(output.y + start, ry, n);
+                stream_floats(output.z + start, rz, n);
+            }
+            stream_fence();
+            return;
+        }
+    }
+    transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
+                               input.count);
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+// ---- end quat/batch/detail/transform_points.hpp ----
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The four chains of chained_product for dual quaternions, their running products stored
+// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
+// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
+// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
+// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+template <class T>
+struct dual_chain_components {
+    static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,
+                                       dual_quaternion<T> (&chain)[product_chains]) noexcept {
+        constexpr std::size_t lanes = product_chains;
+        T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
+        for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
+        for (std::size_t i = 0; i < run; ++i) {
+            T b[8][lanes] = {};
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const dual_quaternion<T>& factor = f[j * run + i];
+                const T components[8] = {factor.real.w, factor.real.x, factor.real.y,
+                                         factor.real.z, factor.dual.w, factor.dual.x,
+                                         factor.dual.y, factor.dual.z};
+                for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
+            }
+            for (std::size_t j = 0; j < lanes; ++j) {
+                const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
+                const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
+                const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
+                const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
+                const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
+                const T components[8] = {real.w, real.x, real.y, real.z,
+                                         dual.w, dual.x, dual.y, dual.z};
+                for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
+            }
+        }
+        for (std::size_t j = 0; j < lanes; ++j)
+            chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
+    }
+};
+
+}  // namespace detail
+
+/// output[i] = R input[i] + t for i < count (array of structs), the rigid motion of the 4x4 matrix
+/// m: 9 multiplications and 9 additions per point. output == input is allowed; other overlaps are
+/// not. Precondition: last row (0, 0, 0, 1), not read.
+template <class T>
+void transform(const homogeneous_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+               std::size_t count) noexcept {
+    QUAT_ASSERT(
+        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
+        "quat::transform: output partially overlaps input");
+    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output, count);
+}
+
+/// output[i] = transform(dq, input[i]) for unit dq (array of structs): dq becomes a matrix and a
+/// translation once. Aliasing as for the matrix overload.
+template <class T>
+void transform(const dual_quaternion<T>& dq, const vec3<T>* input, vec3<T>* output,
+               std::size_t count) noexcept {
+    transform(to_homogeneous(dq), input, output, count);
+}
+
+/// Struct-of-arrays form of the matrix overload: each output array may be its own input array or
+/// not overlap any input. Precondition: output.count >= input.count.
+template <class T>
+void transform(const homogeneous_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
+               soa_points<T> output) noexcept {
+    QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
+    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
+                "quat::transform: an output array partially overlaps an input array");
+    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output);
+}
+
+/// Struct-of-arrays form of the dual-quaternion overload; aliasing as for the matrix overload.
+template <class T>
+void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_identity_t<T>> input,
+               soa_points<T> output) noexcept {
+    transform(to_homogeneous(dq), input, output);
+}
+
+/// Container form of the array-of-structs transform by unit dq: any contiguous input and output
+/// of vec3<T>. Precondition: size(output) >= size(input) (QUAT_ASSERT); unchecked, the first
+/// min(size(input), size(output)) points, never past either container.
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
+void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::transform: output shorter than input");
+    transform(dq, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
+}
+/// Container form of the array-of-structs transform by the 4x4 matrix m, with the precondition of
+/// the one by dq.
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
+void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::transform: output shorter than input");
+    transform(m, detail::data_of(input), detail::data_of(output),
+              detail::common_size(input, output));
+}
+
+/// The product dq[0] dq[1] ... dq[count - 1] (dq[count - 1] applies first); identity when
+/// count == 0. Four interleaved chains as in the quaternion compose: the same motion by
+/// associativity, rounded differently.
+template <class T>
+[[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
+                                                   std::size_t count) noexcept {
+    return detail::chained_product<dual_quaternion<T>, detail::dual_chain_components<T>>(dq, count);
+}
+
+/// compose over any contiguous container or view of dual_quaternion<T>.
+template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range>>
+[[nodiscard]] constexpr dual_quaternion<T> compose(const Range& factors) noexcept {
+    return compose(detail::data_of(factors), detail::size_of(factors));
+}
+
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
+// ---- end quat/batch/rigid_motions.hpp ----
+// ---- begin quat/batch/rotations.hpp ----
+// Batch operations over contiguous arrays: rotating many points, composing many rotations, slerp at
+// many parameters. Plain loops that compilers vectorize (checked with g++ -O3 -fopt-info-vec and
+// objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
+// structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
+// 1.6x the compiled loop at -march=x86-64-v3), and float arrays that with their input exceed the
+// last-level cache (read once at run time by cpuid, else 16 MiB of output) are
+// written on x86 with non-temporal stores (both layouts; plain stores elsewhere), the one use of
+// intrinsics (detail/streaming_store.hpp).
+//
+// Arrays are passed either as pointer + count or as any contiguous container or view with data()
+// and size() members (std::vector, std::array, std::span in C++20), or as C arrays.
+// Aliasing: an output may be exactly the input (in place) or not overlap it at all. A partial
+// overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (one pointer-range
+// check per call); with NDEBUG the values written are unspecified.
+//
+// One definition across instruction sets: the functions here are compiled differently under
+// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
+// live in the inline namespace named after the instruction set (detail/math.hpp says what the key
+// covers). The struct-of-arrays views are in soa.hpp, which this header includes; the loops that
+// rotate and transform points (shared with rigid_batch.hpp) in detail/transform_points.hpp.
+#ifndef QUAT_BATCH_ROTATIONS_HPP_INCLUDED
+#define QUAT_BATCH_ROTATIONS_HPP_INCLUDED
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+// ---- begin quat/paths/interpolation.hpp ----
+// Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
+// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
+#ifndef QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
+#define QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
+
+#include <type_traits>
+
+// ---- begin quat/detail/exp_log.hpp ----
+// e^x and ln x for quat's scalars: in long double by series in constant evaluation (as
+// detail/math.hpp's sqrt and sin), the compiler's builtins at run time, and ADL exp and log for a
+// user scalar. Only exp(quaternion) and log(quaternion) use them.
+#ifndef QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+#define QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+
+#include <cmath>
+#include <type_traits>
+
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+namespace compile_time {
+
+// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a few ulp of
+// long double over the whole range. ln 2 is split into a head with 32 significant bits (fdlibm's
+// ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
+inline constexpr real ln2 = 0.693147180559945309417232121458176568L;
+inline constexpr real ln2_head = 0.693147180369123816490L;
+inline constexpr real ln2_tail = ln2 - ln2_head;
+
+[[nodiscard]] constexpr real exp(real x) noexcept {
+    if (is_nan(x)) return x;
+    if (x > 11357) return infinity<real>();
+    if (x < -11400) return 0;
+    // x = k ln 2 + r with |r| <= ln 2 / 2; e^r by its Taylor series, then times 2^k exactly.
+    const real quotient = x / ln2;
+    long long k = static_cast<long long>(quotient + (quotient < 0 ? -0.5L : 0.5L));
+    const real r = (x - static_cast<real>(k) * ln2_head) - static_cast<real>(k) * ln2_tail;
+    real term = 1, sum = 1;
+    for (int n = 1; n < 40; ++n) {
+        term *= r / static_cast<real>(n);
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    for (; k > 0; --k) sum *= 2;
+    for (; k < 0; ++k) sum /= 2;
+    return sum;
+}
+
+[[nodiscard]] constexpr real log(real x) noexcept {
+    if (is_nan(x) || x < 0) return quiet_nan<real>();
+    if (x == 0) return -infinity<real>();
+    if (x == infinity<real>()) return x;
+    // x = m 2^e with m in [sqrt(1/2), sqrt(2)) (exact scalings), then ln m = 2 atanh(f),
+    // f = (m - 1) / (m + 1), |f| < 0.172, by its series.
+    long long e = 0;
+    constexpr real big = 18446744073709551616.0L;  // 2^64
+    while (x >= big) {
+        x /= big;
+        e += 64;
+    }
+    while (x < 1 / big) {
+        x *= big;
+        e -= 64;
+    }
+    while (x >= 2) {
+        x /= 2;
+        ++e;
+    }
+    while (x < 1) {
+        x *= 2;
+        --e;
+    }
+    if (x > 1.41421356237309504880L) {
+        x /= 2;
+        ++e;
+    }
+    const real f = (x - 1) / (x + 1), f2 = f * f;
+    real power = f, sum = f;
+    for (int n = 1; n < 40; ++n) {
+        power *= f2;
+        const real term = power / static_cast<real>(2 * n + 1);
+        if (sum + term == sum) break;
+        sum += term;
+    }
+    const auto k = static_cast<real>(e);
+    return k * ln2_head + (k * ln2_tail + 2 * sum);
+}
+
+}  // namespace compile_time
+
+/// e^x; for a user scalar, exp found by argument-dependent lookup (only exp(quaternion) needs it).
+template <class T>
+[[nodiscard]] constexpr T scalar_exp(T x) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
-        for (std::size_t i = 0; i < count; ++i) {
-            const T time = to_scalar<T>(times[i]);
-            if (!is_finite(time) || (i > 0 && !(to_scalar<T>(times[i - 1]) < time))) return false;
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::exp(static_cast<compile_time::real>(x)));
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_expf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_exp(x);
+        } else {
+            return __builtin_expl(x);
         }
     } else {
-        static_cast<void>(times);
-        static_cast<void>(count);
+        using std::exp;
+        return exp(x);
     }
+}
+
+/// ln x (NaN for negative x, -Inf for 0); for a user scalar, log found by argument-dependent
+/// lookup (only log(quaternion) needs it).
+template <class T>
+[[nodiscard]] constexpr T scalar_log(T x) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        if (constant_evaluated())
+            return static_cast<T>(compile_time::log(static_cast<compile_time::real>(x)));
+        if constexpr (std::is_same_v<T, float>) {
+            return __builtin_logf(x);
+        } else if constexpr (std::is_same_v<T, double>) {
+            return __builtin_log(x);
+        } else {
+            return __builtin_logl(x);
+        }
+    } else {
+        using std::log;
+        return log(x);
+    }
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
+// ---- end quat/detail/exp_log.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// The principal power p^t of a unit p with p.w >= 0 (or any w for p off the identity): turns by
+/// t times p's angle about p's axis. Near the identity half the new angle is k |u| with k = t
+/// atan(r) / (r w), r = |u| / w, from series in |u|^2, so that no square root of zero sits on the
+/// path a dual-number scalar differentiates; elsewhere the closed form.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> power_of_unit(const quaternion<T>& p, T t) noexcept {
+    const vec3<T> u{p.x, p.y, p.z};
+    const T s2 = squared_norm(u);
+    if (atan_series_suffices(s2, p.w)) {
+        const T k = t * atan_ratio_series(s2 / (p.w * p.w)) / p.w;  // half the new angle over |u|
+        const cos_and_sinc<T> half = cos_sinc(k * k * s2, k * norm(u));
+        const vec3<T> v = u * (k * half.sinc);
+        return {half.cos, v.x, v.y, v.z};
+    }
+    const T s = norm(u);
+    const T half = t * atan2(s, p.w);
+    const vec3<T> v = u / s * sin(half);
+    return {cos(half), v.x, v.y, v.z};
+}
+
+/// The Taylor coefficients of asin(x) / x = sum_k c_k x^2k, c_k = (2k)! / (4^k k!^2 (2k + 1)),
+/// k = 0 ... 20, by the ratio c_{k+1} / c_k = (2k + 1)^2 / ((2k + 2)(2k + 3)).
+struct asin_ratio_coefficients {
+    double c[21];
+};
+[[nodiscard]] constexpr asin_ratio_coefficients make_asin_ratio_coefficients() noexcept {
+    asin_ratio_coefficients r{};
+    r.c[0] = 1;
+    for (int k = 0; k < 20; ++k)
+        r.c[k + 1] = r.c[k] * double((2 * k + 1) * (2 * k + 1)) / double((2 * k + 2) * (2 * k + 3));
+    return r;
+}
+
+/// asin(x) / x for y = x^2 <= 1/2 (|x| <= sin(pi/4)) to a relative 2.3e-9 (the first omitted
+/// term at y = 1/2; 0.04 float ulp), exact as y -> 0. The terms are summed in pairs of pairs
+/// (Estrin's scheme): 5 multiply-adds deep, against 20 by Horner's rule.
+[[nodiscard]] constexpr double asin_ratio_double(double y) noexcept {
+    constexpr asin_ratio_coefficients k = make_asin_ratio_coefficients();
+    const double y2 = y * y, y4 = y2 * y2, y8 = y4 * y4, y16 = y8 * y8;
+    const double p0 = k.c[0] + k.c[1] * y, p1 = k.c[2] + k.c[3] * y, p2 = k.c[4] + k.c[5] * y,
+                 p3 = k.c[6] + k.c[7] * y, p4 = k.c[8] + k.c[9] * y, p5 = k.c[10] + k.c[11] * y,
+                 p6 = k.c[12] + k.c[13] * y, p7 = k.c[14] + k.c[15] * y, p8 = k.c[16] + k.c[17] * y,
+                 p9 = k.c[18] + k.c[19] * y;
+    const double q0 = p0 + p1 * y2, q1 = p2 + p3 * y2, q2 = p4 + p5 * y2, q3 = p6 + p7 * y2,
+                 q4 = p8 + p9 * y2;
+    const double r0 = q0 + q1 * y4, r1 = q2 + q3 * y4, r2 = q4 + k.c[20] * y4;
+    return (r0 + r1 * y8) + r2 * y16;
+}
+
+/// slerp's path for float a, near (dot(a, near) >= 0, a != near) and t in [0, 1], in double
+/// arithmetic throughout: the path of slerp below, cos(u) e + sin(u) f with u = (2t - 1) h, each
+/// direction divided by the norm it has, but h = asin(sin h), sin u and cos u by polynomials
+/// instead of asinf and sincosf. Why: on a Zen 4 with AVX2, glibc's asinf (a division, and a
+/// square root past 0.5) and sincosf, called one after the other behind the square root of the
+/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed (issue 27). Here
+/// the series of asin(x) / x starts from x^2 (the chord squared) while the square roots and the
+/// one division run beside it, and the result is rounded to float once (float products are exact
+/// in double, the sums and series err by about 1e-9 relative at most), within a unit in the last
+/// place of the exact slerp of the given float inputs. h <= pi/4 (dot(a, near) >= 0), so
+/// |x| = sin h <= sin(pi/4) and |u| <= pi/4: sin u to u^9 and cos u to u^10 leave 2e-9.
+[[nodiscard]] constexpr quaternion<float> slerp_float(const quaternion<float>& a,
+                                                      const quaternion<float>& near,
+                                                      float t) noexcept {
+    const double aw = static_cast<double>(a.w), ax = static_cast<double>(a.x),
+                 ay = static_cast<double>(a.y), az = static_cast<double>(a.z);
+    const double bw = static_cast<double>(near.w), bx = static_cast<double>(near.x),
+                 by = static_cast<double>(near.y), bz = static_cast<double>(near.z);
+    const double sw = aw + bw, sx = ax + bx, sy = ay + by, sz = az + bz;  // exact
+    const double dw = bw - aw, dx = bx - ax, dy = by - ay, dz = bz - az;  // exact
+    // Summed in pairs: two operations shorter than one after the other.
+    const double sum2 = (sw * sw + sx * sx) + (sy * sy + sz * sz);    // 4 cos^2 h
+    const double chord2 = (dw * dw + dx * dx) + (dy * dy + dz * dz);  // 4 sin^2 h
+    const double sum_norm = detail::sqrt(sum2), chord = detail::sqrt(chord2);
+    const double inverse = 1.0 / (sum_norm * chord);
+    const double h = chord * 0.5 * asin_ratio_double(chord2 * 0.25);
+    const double u = (static_cast<double>(t) + static_cast<double>(t) - 1.0) * h;
+    const double v = u * u, v2 = v * v;
+    const double sin_u =
+        u * ((1.0 - v * (1.0 / 6)) + v2 * ((1.0 / 120 - v * (1.0 / 5040)) + v2 * (1.0 / 362880)));
+    const double cos_u = (1.0 - v * 0.5) + v2 * ((1.0 / 24 - v * (1.0 / 720)) +
+                                                 v2 * (1.0 / 40320 - v * (1.0 / 3628800)));
+    // cos(u) / |sum| and sin(u) / chord, by one division off the path above.
+    const double along = cos_u * (chord * inverse), across = sin_u * (sum_norm * inverse);
+    return {
+        static_cast<float>(sw * along + dw * across), static_cast<float>(sx * along + dx * across),
+        static_cast<float>(sy * along + dy * across), static_cast<float>(sz * along + dz * across)};
+}
+
+}  // namespace detail
+
+/// Spherical linear interpolation from unit a (t = 0) to unit b (t = 1) along the shorter arc, at
+/// constant angular velocity; t outside [0, 1] extrapolates along the same great circle. Returns
+/// a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar, which may carry
+/// derivatives, to rounding). The angle comes from the chord |a - b|, accurate for nearly equal
+/// and nearly opposite inputs. Precondition: unit a and b (checked in debug builds). A NaN or
+/// infinite a, b or t gives a non-finite result.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> slerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp: a or b is not a unit quaternion");
+    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
+    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a NaN or infinite other end
+    // visible instead of returning a clean-looking value. Not for a user scalar, whose t may carry
+    // a derivative that a constant would drop: the formulas below give the ends to rounding.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(0)) return a + (near - near);
+        if (t == T(1)) return near + (a - a);
+    }
+    if (t < T(0) || t > T(1)) {
+        // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
+        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
+        const quaternion<T> relative = conjugate(a) * near;
+        if constexpr (std::is_floating_point_v<T>) {
+            // No motion; a bad t stays visible.
+            if (relative.x == T(0) && relative.y == T(0) && relative.z == T(0))
+                return detail::is_finite(t) ? a : a * t;
+        }
+        return a * detail::power_of_unit(relative, t);
+    }
+    // With h half the angle between a and near (h <= pi/4 since dot(a, near) >= 0), the slerp
+    // path is cos(u) e + sin(u) f, u = (2t - 1) h, where e and f are the orthonormal directions
+    // of a + near and near - a (|a + near| = 2 cos h, |near - a| = 2 sin h): one sine-cosine pair
+    // instead of three sines, and each direction divided by the norm it actually has, so the
+    // result is unit to a few roundings whatever the rounding of h. The chord |near - a| keeps h
+    // accurate for nearly equal inputs, unlike acos of the dot product.
+    if constexpr (std::is_same_v<T, float>) {
+        // a == near: nothing to interpolate, but a non-finite t stays visible.
+        if (a.w == near.w && a.x == near.x && a.y == near.y && a.z == near.z)
+            return detail::is_finite(t) ? a : a * t;
+        return detail::slerp_float(a, near, t);
+    }
+    const quaternion<T> sum = a + near;
+    const quaternion<T> difference = near - a;
+    const T chord2 = squared_norm(difference);
+    const T chord = detail::sqrt(chord2);  // read only past the series below
+    // a == near: nothing to interpolate, but a non-finite t stays visible (other NaN goes on
+    // below). A user scalar takes the series below, which keeps the derivatives in b and t.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (chord == T(0)) return detail::is_finite(t) ? a : a * t;
+    }
+    const T sine2 = chord2 * T(0.25);  // sin^2 h
+    if (detail::series_suffices(sine2)) {
+        // u = (2t - 1) h = ratio sin h, and sin(u) / chord = sinc(u) ratio / 2, from series in
+        // sin^2 h: no square root of zero on the path a dual-number scalar differentiates.
+        const T ratio = (t + t - T(1)) * detail::asin_ratio_series(sine2);
+        const detail::cos_and_sinc<T> cs =
+            detail::cos_sinc(ratio * ratio * sine2, ratio * chord * T(0.5));
+        return sum * (cs.cos / detail::sqrt(squared_norm(sum))) +
+               difference * (cs.sinc * ratio * T(0.5));
+    }
+    const T u = (t + t - T(1)) * detail::asin(chord * T(0.5));
+    return sum * (detail::cos(u) / detail::sqrt(squared_norm(sum))) +
+           difference * (detail::sin(u) / chord);
+}
+
+/// Normalized linear interpolation along the shorter arc: the slerp path at non-uniform speed,
+/// cheaper. Precondition: unit a and b; the sign flip keeps the sum non-zero for t in [0, 1].
+template <class T>
+[[nodiscard]] constexpr quaternion<T> nlerp(const quaternion<T>& a, const quaternion<T>& b,
+                                            detail::type_identity_t<T> t) noexcept {
+    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
+    return normalize(a + (near - a) * t);
+}
+
+/// Principal power of the unit quaternion q: the rotation about q's axis by t times q's angle, the
+/// angle taken in [0, pi] (the shorter arc, so q and -q give the same result), equal to
+/// slerp(identity, q, t). pow(q, 0) is the identity and pow(q, 1) is q or -q (w >= 0), exactly (a
+/// user scalar, which may carry derivatives, to rounding). The half angle comes from
+/// atan2(|v|, w), accurate near the identity and near a half turn. Precondition: unit q (checked
+/// in debug builds). A NaN or infinite q or t gives a non-finite result. glm::pow differs for
+/// w < 0: it keeps q's sign and so takes the longer arc.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> pow(const quaternion<T>& q,
+                                          detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::pow: q is not a unit quaternion");
+    const quaternion<T> p = q.w < T(0) ? -q : q;
+    // Exact shortcuts; not for a user scalar, whose q and t may carry derivatives that a constant
+    // would drop (power_of_unit gives the same values to rounding).
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(1)) return p;
+        const quaternion<T> identity = quaternion<T>::identity();
+        // (p - p) is zero when p is finite and NaN otherwise, so a bad q stays visible.
+        if (t == T(0)) return identity + (p - p);
+        // (The identity needs no shortcut: power_of_unit's series gives it exactly.)
+    }
+    // + (p - p): an infinite w makes atan2 return 0, which would give a clean-looking identity.
+    return detail::power_of_unit(p, t) + (p - p);
+}
+
+/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
+/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
+/// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
+/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
+/// ignores w and returns the identity for |v| < epsilon.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
+    const vec3<T> v{q.x, q.y, q.z};
+    const T e = detail::scalar_exp(q.w);
+    if constexpr (std::is_floating_point_v<T>) {
+        // Exactly real: v itself, signed zeros kept and no 0 * Inf where e^w overflows. (A user
+        // scalar's v may carry derivatives, which e^w scales: it takes the series below.)
+        if (q.x == T(0) && q.y == T(0) && q.z == T(0)) return {e, q.x, q.y, q.z};
+    }
+    // cos|v| and sin|v| / |v|, by series in |v|^2 for small |v| (no square root of zero there).
+    const detail::cos_and_sinc<T> cs = detail::cos_sinc(squared_norm(v), norm(v));
+    const vec3<T> u = v * (cs.sinc * e);
+    return {cs.cos * e, u.x, u.y, u.z};
+}
+
+/// The principal quaternion logarithm of q = (w, v): (ln|q|, v / |v| atan2(|v|, w)), the vector
+/// part's length in [0, pi], so exp(log(q)) == q. For a unit q with w >= 0, log(q) is
+/// (0, to_rotation_vector(q) / 2) to within a few eps; for w < 0 its vector part is half the
+/// rotation vector of the longer way round (length above pi / 2), as q and -q differ here. Real q:
+/// (ln w, 0, 0, 0) for w > 0 (v's signed zeros kept), (ln|w|, pi, 0, 0) for w < 0 (the axis
+/// (1, 0, 0), as to_axis_angle and glm::log choose), (-Inf, 0, 0, 0) for zero. Accurate for tiny
+/// |v| (no 0/0) and for components from subnormal to max() (|q| and |v| scaled as norm does);
+/// NaN or infinite components give NaN in every component.
+template <class T>
+[[nodiscard]] constexpr quaternion<T> log(const quaternion<T>& q) noexcept {
+    const T s2 = squared_norm(q);
+    T log_norm{};
+    if (detail::in_normal_range(s2)) {
+        log_norm = T(0.5) * detail::scalar_log(s2);
+    } else {
+        // |q|^2 over- or underflowed: ln|q| = ln(scale) + ln|q / scale| with scale the largest
+        // |component|, which brings |q / scale| into [1, 2].
+        if (s2 != s2) return detail::nan_quaternion<T>();  // a NaN that largest_magnitude may skip
+        const T scale = detail::largest_magnitude(q);
+        if (!detail::is_finite(scale)) return detail::nan_quaternion<T>();
+        if (scale == T(0)) return {-detail::infinity<T>(), q.x, q.y, q.z};
+        log_norm = detail::scalar_log(scale) + T(0.5) * detail::scalar_log(squared_norm(q / scale));
+    }
+    const vec3<T> v{q.x, q.y, q.z};
+    // Near the real axis v / |v| atan2(|v|, w) = (v / w) atan(r) / r with r = |v| / w, from
+    // series in r^2: no square root of zero on the path a dual-number scalar differentiates.
+    const T v2 = squared_norm(v);
+    if (detail::atan_series_suffices(v2, q.w)) {
+        const vec3<T> u = v / q.w * detail::atan_ratio_series(v2 / (q.w * q.w));
+        return {log_norm, u.x, u.y, u.z};
+    }
+    const T length = norm(v);
+    if (length == T(0)) {
+        if (q.w < T(0)) return {log_norm, detail::pi<T>(), T(0), T(0)};
+        return {log_norm, q.x, q.y, q.z};
+    }
+    const vec3<T> u = v / length * detail::atan2(length, q.w);
+    return {log_norm, u.x, u.y, u.z};
+}
+
+/// The rotation at most max_angle radians from unit `from` on the shorter arc towards unit `to`,
+/// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
+/// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
+/// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
+/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
+/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> rotate_towards(
+    const quaternion<T>& from, const quaternion<T>& to,
+    detail::type_identity_t<T> max_angle) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(from) && detail::is_near_unit(to),
+                "quat::rotate_towards: from or to is not a unit quaternion");
+    const T angle = angle_between(from, to);  // NaN for non-finite from or to
+    const T step = max_angle < T(0) ? T(0) : max_angle;
+    if (angle <= step) return to;
+    return slerp(from, to, step / angle);  // step / angle is in [0, 1), or NaN
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
+// ---- end quat/paths/interpolation.hpp ----
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// Slerp parameters per block computed into local arrays first: the output could alias t's type.
+inline constexpr std::size_t batch_block_slerp = 128;
+
+// sin(x) for |x| <= pi/2 by its Taylor polynomial x - x^3/3! + ..., cut where the first dropped
+// term is below epsilon / 100 at pi/2 (through x^13 for float, x^21 for double). Unlike std::sin it
+// vectorizes.
+template <class T>
+struct sine_series {
+    static constexpr std::size_t terms = sizeof(T) <= 4 ? 7 : 11;
+    T coefficient[terms];
+    constexpr sine_series() noexcept : coefficient{} {
+        long double c = 1.0L;
+        for (std::size_t k = 0; k < terms; ++k) {
+            coefficient[k] = static_cast<T>(c);
+            c = -c / static_cast<long double>((2 * k + 2) * (2 * k + 3));
+        }
+    }
+};
+
+template <class T>
+[[nodiscard]] constexpr T sin_half_pi(T x) noexcept {
+    constexpr sine_series<T> series{};
+    const T x2 = x * x;
+    T acc = series.coefficient[sine_series<T>::terms - 1];
+    for (std::size_t k = sine_series<T>::terms - 1; k-- > 0;)
+        acc = acc * x2 + series.coefficient[k];
+    return x * acc;
+}
+
+// The batch slerp for float and double: see slerp(a, b, t, output, count). Each t converts to T
+// as it is read. a and b are the caller's copies, never elements of output.
+template <class T, class U>
+void slerp_polynomial(const quaternion<T>& a, const quaternion<T>& b, const U* t,
+                      quaternion<T>* output, std::size_t count) noexcept {
+    const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
+    const T chord = detail::sqrt(squared_norm(a - near));  // 2 sin(angle/2)
+    const T sum = detail::sqrt(squared_norm(a + near));    // 2 cos(angle/2)
+    const T angle = T(2) * detail::atan2(chord, sum);      // in [0, pi/2]
+    bool in_range = angle * angle * angle * angle >= detail::epsilon<T>();
+    for (std::size_t i = 0; i < count && in_range; ++i) {
+        const T ti = static_cast<T>(t[i]);
+        in_range = ti >= T(0) && ti <= T(1);
+    }
+    if (!in_range) {
+        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
+        return;
+    }
+    const T inverse_sine = T(2) / (chord * sum);
+    for (std::size_t start = 0; start < count; start += detail::batch_block_slerp) {
+        const std::size_t n =
+            count - start < detail::batch_block_slerp ? count - start : detail::batch_block_slerp;
+        const U* tb = t + start;
+        // Uninitialized: every used slot is written first.
+        T rw[detail::batch_block_slerp], rx[detail::batch_block_slerp],
+            ry[detail::batch_block_slerp], rz[detail::batch_block_slerp];
+        for (std::size_t i = 0; i < n; ++i) {
+            const T ti = static_cast<T>(tb[i]);
+            T wa = detail::sin_half_pi((T(1) - ti) * angle) * inverse_sine;
+            T wb = detail::sin_half_pi(ti * angle) * inverse_sine;
+            // Exact ends by arithmetic on 0/1 flags (selects here keep g++ from vectorizing for
+            // SSE2): 1 - w is exact for w near 1, so w + (1 - w) is exactly 1.
+            const T at_start = T(ti == T(0)), at_end = T(ti == T(1));
+            wa = (wa + at_start * (T(1) - wa)) * (T(1) - at_end);
+            wb = wb + at_end * (T(1) - wb);
+            rw[i] = a.w * wa + near.w * wb;
+            rx[i] = a.x * wa + near.x * wb;
+            ry[i] = a.y * wa + near.y * wb;
+            rz[i] = a.z * wa + near.z * wb;
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            output[start + i] = quaternion<T>{rw[i], rx[i], ry[i], rz[i]};
+    }
+}
+
+}  // namespace detail
+
+/// output[i] = m input[i] for i < count (array of structs). output == input is allowed; other
+/// overlaps are not. Equal to rotate(m, input[i]) up to rounding order.
+template <class T>
+void rotate(const rotation_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
+            std::size_t count) noexcept {
+    QUAT_ASSERT(
+        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
+        "quat::rotate: output partially overlaps input");
+    detail::transform_points<false>(m, vec3<T>{}, input, output, count);
+}
+
+/// output[i] = rotate(q, input[i]) for unit q (array of structs): q becomes a matrix once, so each
+/// point costs 9 multiply-adds. Aliasing as for the matrix overload.
+template <class T>
+void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
+            std::size_t count) noexcept {
+    rotate(to_matrix(q), input, output, count);
+}
+
+/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
+/// any input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
+template <class T>
+void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
+            soa_points<T> output) noexcept {
+    QUAT_ASSERT(output.count >= input.count, "quat::rotate: output shorter than input");
+    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
+                "quat::rotate: an output array partially overlaps an input array");
+    detail::transform_points<false>(m, vec3<T>{}, input, output);
+}
+
+/// Struct-of-arrays rotation by unit q (through its matrix); aliasing as for the matrix overload.
+template <class T>
+void rotate(const quaternion<T>& q, soa_points<const detail::type_identity_t<T>> input,
+            soa_points<T> output) noexcept {
+    rotate(to_matrix(q), input, output);
+}
+
+/// Container form of the array-of-structs rotation by unit q: any contiguous input and output of
+/// vec3<T> (std::vector, std::array, std::span, ...). Precondition: size(output) >= size(input)
+/// (QUAT_ASSERT); unchecked, the first min(size(input), size(output)) points, never past either.
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
+void rotate(const quaternion<T>& q, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::rotate: output shorter than input");
+    rotate(q, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
+}
+/// Container form of the array-of-structs rotation by m, with the precondition of the one by q.
+template <class T, class Input, class Output,
+          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
+void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
+                "quat::rotate: output shorter than input");
+    rotate(m, detail::data_of(input), detail::data_of(output), detail::common_size(input, output));
+}
+
+/// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
+/// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
+/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
+/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
+/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
+/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
+    return detail::chained_product(q, count);
+}
+
+/// compose over any contiguous container or view of quaternion<T>.
+template <class Range, class T = detail::element_scalar_t<quaternion, Range>>
+[[nodiscard]] constexpr quaternion<T> compose(const Range& factors) noexcept {
+    return compose(detail::data_of(factors), detail::size_of(factors));
+}
+
+/// output[i] = slerp(a, b, t[i]) for i < count: the angle is computed once and the sines by a
+/// polynomial that vectorizes, to within a few ulp of the scalar slerp. Exact at t = 0 and 1.
+/// a and b are taken by value, so they may be elements of output (slerp(out[0], b, t, out, n)).
+/// The scalar type is the rotations'; t may be of another (double times for float rotations), and
+/// each t converts to T. Preconditions: unit a and b (checked in debug builds, as by the scalar
+/// slerp); output does not overlap t. For t outside [0, 1], nearly equal a and b, or
+/// non-float/double scalars, each value falls back to the scalar slerp.
+template <class T, class U, class = std::enable_if_t<std::is_convertible_v<const U&, T>>>
+void slerp(quaternion<T> a, quaternion<T> b, const U* t, quaternion<T>* output,
+           std::size_t count) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a) && detail::is_near_unit(b),
+                "quat::slerp: a or b is not a unit quaternion, checked once for the batch");
+    QUAT_ASSERT(detail::disjoint(t, count * sizeof(U), output, count * sizeof(quaternion<T>)),
+                "quat::slerp: output overlaps t");
+    if constexpr (!std::is_same_v<T, float> && !std::is_same_v<T, double>) {
+        for (std::size_t i = 0; i < count; ++i) output[i] = slerp(a, b, static_cast<T>(t[i]));
+    } else {
+        detail::slerp_polynomial(a, b, t, output, count);
+    }
+}
+
+/// slerp at every t of a contiguous container (of T or another scalar type, which converts) into a
+/// contiguous output of quaternion<T>; a and b may be elements of output. Precondition:
+/// size(output) >= size(t) (QUAT_ASSERT); unchecked, the first min(size(t), size(output)).
+template <class T, class Parameters, class Output,
+          class = std::enable_if_t<std::is_convertible_v<
+              decltype(detail::data_of(std::declval<Output&>())), quaternion<T>*>>>
+void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& output) noexcept {
+    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(t),
+                "quat::slerp: output shorter than the parameters");
+    slerp(a, b, detail::data_of(t), static_cast<quaternion<T>*>(detail::data_of(output)),
+          detail::common_size(t, output));
+}
+
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_ROTATIONS_HPP_INCLUDED
+// ---- end quat/batch/rotations.hpp ----
+
+#endif  // QUAT_BATCH_HPP_INCLUDED
+// ---- end quat/batch.hpp ----
+// ---- begin quat/fitting.hpp ----
+// The fitting family: the rotation that best aligns two sets of directions (Wahba's problem), the
+// rotation nearest to a matrix, and the chordal mean of many rotations. Included by quat.hpp.
+#ifndef QUAT_FITTING_HPP_INCLUDED
+#define QUAT_FITTING_HPP_INCLUDED
+
+// ---- begin quat/fitting/align_vectors.hpp ----
+// Wahba's problem: the rotation that best aligns one set of vectors with another, as scipy's
+// Rotation.align_vectors finds it, with the residual and scipy's sensitivity matrix.
+#ifndef QUAT_FITTING_ALIGN_VECTORS_HPP_INCLUDED
+#define QUAT_FITTING_ALIGN_VECTORS_HPP_INCLUDED
+
+#include <cstddef>
+#include <optional>
+
+// ---- begin quat/matrix.hpp ----
+// Small fixed-size matrices for Jacobians and covariances: matrix<T, Rows, Cols>. Not a linear
+// algebra library: products, sums, transposes and blocks, enough to chain the Jacobians of the
+// Lie-group functions (so3.hpp, se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or Ceres.
+#ifndef QUAT_MATRIX_HPP_INCLUDED
+#define QUAT_MATRIX_HPP_INCLUDED
+
+#include <cstddef>
+
+
+namespace quat {
+
+/// A Rows x Cols matrix stored row-major; vectors multiply it as columns, v' = M v. Any scalar the
+/// rest of quat accepts, automatic-differentiation scalars included.
+template <class T, int Rows, int Cols>
+struct matrix {
+    static_assert(Rows > 0 && Cols > 0, "quat::matrix: empty matrices are not supported");
+    /// Row-major: elements[row][col]. matrix<T, R, C>{} is zero; matrix<T, R, C> m; leaves the
+    /// elements uninitialized, as in a plain struct.
+    T elements[static_cast<std::size_t>(Rows)][static_cast<std::size_t>(Cols)];
+
+    /// Element at (row, col), row in [0, Rows) and col in [0, Cols).
+    [[nodiscard]] [[gnu::always_inline]] constexpr T& operator()(int row, int col) noexcept {
+        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
+        return elements[row][col];
+    }
+    /// Element at (row, col), read-only.
+    [[nodiscard]] [[gnu::always_inline]] constexpr const T& operator()(int row,
+                                                                       int col) const noexcept {
+        QUAT_ASSERT(row >= 0 && row < Rows && col >= 0 && col < Cols, "matrix index out of range");
+        return elements[row][col];
+    }
+
+    /// The matrix of zeros.
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix zero() noexcept {
+        matrix m{};
+        for (int i = 0; i < Rows; ++i)
+            for (int j = 0; j < Cols; ++j) m.elements[i][j] = T(0);
+        return m;
+    }
+    /// The identity (ones on the diagonal, zeros elsewhere; square or not).
+    [[nodiscard]] [[gnu::always_inline]] static constexpr matrix identity() noexcept {
+        matrix m = zero();
+        for (int i = 0; i < (Rows < Cols ? Rows : Cols); ++i) m.elements[i][i] = T(1);
+        return m;
+    }
+};
+
+/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
+template <class T>
+using matrix3 = matrix<T, 3, 3>;
+/// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
+template <class T>
+using matrix6 = matrix<T, 6, 6>;
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> to_matrix3(const rotation_matrix<T>& m) noexcept {
+    matrix3<T> out{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out(i, j) = m(i, j);
+    return out;
+}
+
+/// Element-wise sum.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator+(const matrix<T, R, C>& a,
+                                                  const matrix<T, R, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) + b(i, j);
+    return out;
+}
+
+/// Element-wise difference.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a,
+                                                  const matrix<T, R, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) - b(i, j);
+    return out;
+}
+
+/// Element-wise negation.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator-(const matrix<T, R, C>& a) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = -a(i, j);
+    return out;
+}
+
+/// Every element times s.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, C>& a,
+                                                  detail::type_identity_t<T> s) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(i, j) = a(i, j) * s;
+    return out;
+}
+
+/// Every element times s.
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(detail::type_identity_t<T> s,
+                                                  const matrix<T, R, C>& a) noexcept {
+    return a * s;
+}
+
+/// Matrix product: (a b) v = a (b v).
+template <class T, int R, int K, int C>
+[[nodiscard]] constexpr matrix<T, R, C> operator*(const matrix<T, R, K>& a,
+                                                  const matrix<T, K, C>& b) noexcept {
+    matrix<T, R, C> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) {
+            T sum = a(i, 0) * b(0, j);
+            for (int k = 1; k < K; ++k) sum = sum + a(i, k) * b(k, j);
+            out(i, j) = sum;
+        }
+    return out;
+}
+
+/// M v for a 3x3 matrix.
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& m, const vec3<T>& v) noexcept {
+    return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z,
+            m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
+            m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+
+/// a = a + b.
+template <class T, int R, int C>
+constexpr matrix<T, R, C>& operator+=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
+    return a = a + b;
+}
+
+/// a = a - b.
+template <class T, int R, int C>
+constexpr matrix<T, R, C>& operator-=(matrix<T, R, C>& a, const matrix<T, R, C>& b) noexcept {
+    return a = a - b;
+}
+
+/// Exact element-wise equality.
+template <class T, int R, int C>
+[[nodiscard]] constexpr bool operator==(const matrix<T, R, C>& a,
+                                        const matrix<T, R, C>& b) noexcept {
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j)
+            if (!(a(i, j) == b(i, j))) return false;
+    return true;
+}
+
+/// Negation of ==.
+template <class T, int R, int C>
+[[nodiscard]] constexpr bool operator!=(const matrix<T, R, C>& a,
+                                        const matrix<T, R, C>& b) noexcept {
+    return !(a == b);
+}
+
+/// The transpose: element (i, j) moves to (j, i).
+template <class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, C, R> transpose(const matrix<T, R, C>& m) noexcept {
+    matrix<T, C, R> out{};
+    for (int i = 0; i < R; ++i)
+        for (int j = 0; j < C; ++j) out(j, i) = m(i, j);
+    return out;
+}
+
+/// The BR x BC block of m whose top-left element is m(row, col). Precondition: the block lies
+/// inside m (checked when both are constants, otherwise debug-checked).
+template <int BR, int BC, class T, int R, int C>
+[[nodiscard]] constexpr matrix<T, BR, BC> block(const matrix<T, R, C>& m, int row,
+                                                int col) noexcept {
+    static_assert(BR <= R && BC <= C, "quat::block: the block is larger than the matrix");
+    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
+                "quat::block: the block does not lie inside the matrix");
+    matrix<T, BR, BC> out{};
+    for (int i = 0; i < BR; ++i)
+        for (int j = 0; j < BC; ++j) out(i, j) = m(row + i, col + j);
+    return out;
+}
+
+/// Writes b into m with b's top-left element at m(row, col). Precondition: as for block.
+template <class T, int R, int C, int BR, int BC>
+constexpr void set_block(matrix<T, R, C>& m, int row, int col,
+                         const matrix<T, BR, BC>& b) noexcept {
+    static_assert(BR <= R && BC <= C, "quat::set_block: the block is larger than the matrix");
+    QUAT_ASSERT(row >= 0 && col >= 0 && row + BR <= R && col + BC <= C,
+                "quat::set_block: the block does not lie inside the matrix");
+    for (int i = 0; i < BR; ++i)
+        for (int j = 0; j < BC; ++j) m(row + i, col + j) = b(i, j);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_MATRIX_HPP_INCLUDED
+// ---- end quat/matrix.hpp ----
+// ---- begin quat/fitting/detail/wahba.hpp ----
+// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights,
+// with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
+// weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
+// arrays; align_points.hpp on the points less their centroids.
+#ifndef QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
+#define QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
+
+#include <cstddef>
+
+// ---- begin quat/fitting/nearest_rotation.hpp ----
+// The rotation nearest to an arbitrary 3x3 matrix (orthonormalization).
+#ifndef QUAT_FITTING_NEAREST_ROTATION_HPP_INCLUDED
+#define QUAT_FITTING_NEAREST_ROTATION_HPP_INCLUDED
+
+#include <limits>
+#include <optional>
+
+// ---- begin quat/fitting/detail/symmetric_eigen.hpp ----
+// Eigenvalues and eigenvectors of a symmetric N x N matrix: the one solver behind nearest_rotation,
+// align_vectors and mean, whose answers are eigenvectors of a 4x4 read as quaternions, and
+// hand_eye's 8x8; and the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
+#ifndef QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+#define QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// align_vectors and mean sum their matrices over the input in blocks of this many elements, each
+// block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
+// number of blocks instead of with the count.
+inline constexpr std::size_t summation_block = 256;
+
+// Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
+// sweeps), each with its unit eigenvector: vectors[n] belongs to values[n].
+template <std::size_t N, class T>
+struct symmetric_eigen_n {
+    T values[N];
+    T vectors[N][N];
+};
+
+// Cyclic Jacobi rotations (Golub & Van Loan, Matrix Computations, 8.5): unconditionally
+// convergent, quadratically at the end, a handful of sweeps for N up to 8; each eigenvalue comes
+// out within a few eps of the matrix's norm. Expects finite elements of moderate size (callers
+// scale so the largest is about 1: the sums of squares below would overflow near sqrt(max)); a
+// non-finite element gives NaN values and vectors.
+template <std::size_t N, class T>
+[[nodiscard]] constexpr symmetric_eigen_n<N, T> jacobi_eigen(const T (&matrix)[N][N]) noexcept {
+    symmetric_eigen_n<N, T> result{};
+    T k[N][N] = {}, v[N][N] = {};
+    for (std::size_t p = 0; p < N; ++p)
+        for (std::size_t q = 0; q < N; ++q) {
+            if (!detail::is_finite(matrix[p][q])) {
+                const T nan = detail::quiet_nan<T>();
+                for (std::size_t i = 0; i < N; ++i) {
+                    result.values[i] = nan;
+                    for (std::size_t j = 0; j < N; ++j) result.vectors[i][j] = nan;
+                }
+                return result;
+            }
+            k[p][q] = matrix[p][q];
+            v[p][q] = p == q ? T(1) : T(0);
+        }
+    for (std::size_t sweep = 0; sweep < 32; ++sweep) {
+        T off = T(0), total = T(0);
+        for (std::size_t p = 0; p < N; ++p)
+            for (std::size_t q = 0; q < N; ++q) (p == q ? total : off) += k[p][q] * k[p][q];
+        if (!(off > detail::epsilon<T>() * detail::epsilon<T>() * total)) break;
+        for (std::size_t p = 0; p < N - 1; ++p)
+            for (std::size_t q = p + 1; q < N; ++q) {
+                if (k[p][q] == T(0)) continue;
+                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
+                const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
+                const T t = (theta < T(0) ? T(-1) : T(1)) /
+                            (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
+                const T c = T(1) / detail::sqrt(t * t + T(1)), s = t * c;
+                for (std::size_t r = 0; r < N; ++r) {  // k <- k J
+                    const T kp = k[r][p], kq = k[r][q];
+                    k[r][p] = c * kp - s * kq;
+                    k[r][q] = s * kp + c * kq;
+                }
+                for (std::size_t r = 0; r < N; ++r) {  // k <- J^T k
+                    const T kp = k[p][r], kq = k[q][r];
+                    k[p][r] = c * kp - s * kq;
+                    k[q][r] = s * kp + c * kq;
+                }
+                for (std::size_t r = 0; r < N; ++r) {  // v <- v J: columns are the eigenvectors
+                    const T vp = v[r][p], vq = v[r][q];
+                    v[r][p] = c * vp - s * vq;
+                    v[r][q] = s * vp + c * vq;
+                }
+            }
+    }
+    // Insertion sort, descending; a strict comparison keeps equal eigenvalues in diagonal order.
+    std::size_t order[N] = {};
+    for (std::size_t i = 0; i < N; ++i) order[i] = i;
+    for (std::size_t i = 1; i < N; ++i)
+        for (std::size_t j = i; j > 0 && k[order[j]][order[j]] > k[order[j - 1]][order[j - 1]];
+             --j) {
+            const std::size_t swapped = order[j];
+            order[j] = order[j - 1];
+            order[j - 1] = swapped;
+        }
+    for (std::size_t n = 0; n < N; ++n) {
+        const std::size_t column = order[n];
+        result.values[n] = k[column][column];
+        for (std::size_t r = 0; r < N; ++r) result.vectors[n][r] = v[r][column];
+    }
+    return result;
+}
+
+// Eigenvalues in descending order, each with its unit eigenvector read as a quaternion
+// (components w, x, y, z are rows 0 to 3 of the matrix).
+template <class T>
+struct symmetric_eigen4 {
+    T values[4];
+    quaternion<T> vectors[4];
+};
+
+// jacobi_eigen of a 4x4, the eigenvectors as quaternions.
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen4<T> symmetric_eigen(const T (&matrix)[4][4]) noexcept {
+    const symmetric_eigen_n<4, T> e = jacobi_eigen<4>(matrix);
+    symmetric_eigen4<T> result{};
+    for (std::size_t n = 0; n < 4; ++n) {
+        result.values[n] = e.values[n];
+        result.vectors[n] = {e.vectors[n][0], e.vectors[n][1], e.vectors[n][2], e.vectors[n][3]};
+    }
+    return result;
+}
+
+// Solves h x = g for a symmetric positive definite 3x3 h: LDL^T elimination, each step on the
+// largest remaining diagonal element (symmetric complete pivoting, stable for positive definite
+// matrices however graded: Higham, Accuracy and Stability of Numerical Algorithms, 2002, 10.3).
+// False, x untouched, when a pivot is not positive (h not positive definite, or NaN).
+template <class T>
+[[nodiscard]] constexpr bool solve_positive_definite3(const T (&h)[3][3], const T (&g)[3],
+                                                      T (&x)[3]) noexcept {
+    T m[3][3] = {}, r[3] = {};
+    int order[3] = {0, 1, 2};
+    for (int i = 0; i < 3; ++i) {
+        r[i] = g[i];
+        for (int j = 0; j < 3; ++j) m[i][j] = h[i][j];
+    }
+    for (int k = 0; k < 3; ++k) {
+        int p = k;
+        for (int i = k + 1; i < 3; ++i)
+            if (m[i][i] > m[p][p]) p = i;
+        if (p != k) {  // swap row and column k with p
+            for (int j = 0; j < 3; ++j) {
+                const T row = m[k][j];
+                m[k][j] = m[p][j];
+                m[p][j] = row;
+            }
+            for (int i = 0; i < 3; ++i) {
+                const T column = m[i][k];
+                m[i][k] = m[i][p];
+                m[i][p] = column;
+            }
+            const T value = r[k];
+            r[k] = r[p];
+            r[p] = value;
+            const int index = order[k];
+            order[k] = order[p];
+            order[p] = index;
+        }
+        if (!(m[k][k] > T(0)) || !detail::is_finite(m[k][k])) return false;
+        for (int i = k + 1; i < 3; ++i) {
+            const T l = m[i][k] / m[k][k];
+            for (int j = k + 1; j < 3; ++j) m[i][j] -= l * m[k][j];
+            r[i] -= l * r[k];
+        }
+    }
+    T y[3] = {};
+    for (int k = 2; k >= 0; --k) {
+        T value = r[k];
+        for (int j = k + 1; j < 3; ++j) value -= m[k][j] * y[j];
+        y[k] = value / m[k][k];
+    }
+    for (int k = 0; k < 3; ++k) x[order[k]] = y[k];
     return true;
 }
 
@@ -6748,152 +6193,8 @@ template <class T, class Time>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
-// ---- end quat/detail/segments.hpp ----
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The rotation at time t on the piecewise slerp through unit `rotations` at strictly increasing
-/// `times` (contiguous containers with data() and size(), or C arrays, of equal size >= 1; times
-/// of any arithmetic type, converted to T): slerp of the two keyframes around t, at constant
-/// angular velocity along the shorter arc within each segment, the same rotations as scipy's
-/// Slerp(times, rotations)(t). Exactly rotations[i] at times[i]; t before the first time or after
-/// the last gives the end keyframe (scipy raises there). The angular velocity jumps at every
-/// keyframe: squad or rotation_spline is smooth.
-/// Preconditions: equal, non-zero sizes, finite and strictly increasing times, unit rotations.
-/// Debug builds check the sizes, every time on every call (O(n): the search alone visits too few
-/// to catch an unsorted list) and the keyframes the result comes from; release builds return NaN
-/// for empty or unequal sizes and an unspecified, possibly NaN, rotation for bad times. A NaN t
-/// gives NaN; a NaN or infinite keyframe gives a non-finite component wherever it is used (held
-/// as it is outside the times, as slerp gives it inside).
-template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
-[[nodiscard]] constexpr quaternion<T> keyframe_slerp(const Times& times, const Rotations& rotations,
-                                                     detail::type_identity_t<T> t) noexcept {
-    const std::size_t count = detail::size_of(rotations);
-    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
-                "quat::keyframe_slerp: times and rotations differ in size or are empty");
-    if (count == 0 || detail::size_of(times) != count) {
-        const T nan = detail::quiet_nan<T>();
-        return {nan, nan, nan, nan};
-    }
-    const auto* time = detail::data_of(times);
-    QUAT_ASSERT(detail::are_keyframe_times<T>(time, count),
-                "quat::keyframe_slerp: keyframe times are not increasing, or not finite");
-    const quaternion<T>* rotation = detail::data_of(rotations);
-    const T first = detail::to_scalar<T>(time[0]), last = detail::to_scalar<T>(time[count - 1]);
-    if (count == 1 || t <= first || t >= last) {
-        const quaternion<T>& end = count == 1 || t <= first ? rotation[0] : rotation[count - 1];
-        // Checked here, as slerp would, so that the message names the function the user called.
-        QUAT_ASSERT(detail::is_near_unit(end),
-                    "quat::keyframe_slerp: a rotation is not a unit quaternion");
-        return t == t ? end : end * t;
-    }
-    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to slerp
-    QUAT_ASSERT(detail::is_near_unit(rotation[i]) && detail::is_near_unit(rotation[i + 1]),
-                "quat::keyframe_slerp: a rotation is not a unit quaternion");
-    const T start = detail::to_scalar<T>(time[i]);
-    return slerp(rotation[i], rotation[i + 1],
-                 (t - start) / (detail::to_scalar<T>(time[i + 1]) - start));
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_KEYFRAME_SLERP_HPP_INCLUDED
-// ---- end quat/keyframe_slerp.hpp ----
-// ---- begin quat/keyframe_squad.hpp ----
-// Squad through keyframes at given times: Shoemake's spherical cubic with its control points scaled
-// for uneven spacing, so that the angular velocity is continuous across every inner keyframe.
-#ifndef QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
-#define QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
-
-#include <cstddef>
-
-// ---- begin quat/squad.hpp ----
-// Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
-// continuous across them when the keyframes are evenly spaced in time.
-#ifndef QUAT_SQUAD_HPP_INCLUDED
-#define QUAT_SQUAD_HPP_INCLUDED
-
-// ---- begin quat/detail/relative_rotation.hpp ----
-// The relative rotation between two orientations, accurate when they are close: shared by
-// kinematics.hpp (angular velocity), squad.hpp (control points), sclerp.hpp and
-// rotation_spline.hpp, so that none of them includes another concept's header for it.
-#ifndef QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
-#define QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
-
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// The relative rotation q0* q1 (Body) or q1 q0* (not Body), with q1's sign taken nearer q0. Its
-/// vector part comes from q1 - q0 in place of q1: q0* q0 = |q0|^2 is real, so the vector parts
-/// agree exactly, but q1 - q0 is formed with one relative rounding per component, and the products
-/// then round relative to the small result instead of leaving a difference of nearly equal
-/// products (an absolute error of eps, a relative one of eps / angle, for q0 close to q1).
-template <bool Body, class T>
-[[nodiscard]] constexpr quaternion<T> relative_rotation(const quaternion<T>& q0,
-                                                        const quaternion<T>& q1) noexcept {
-    const quaternion<T> near = dot(q0, q1) < T(0) ? -q1 : q1;
-    const quaternion<T> step = near - q0;
-    const quaternion<T> v = Body ? conjugate(q0) * step : step * conjugate(q0);
-    return {dot(q0, near), v.x, v.y, v.z};
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
-// ---- end quat/detail/relative_rotation.hpp ----
+#endif  // QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+// ---- end quat/fitting/detail/symmetric_eigen.hpp ----
 
 namespace quat {
 
@@ -6923,74 +6224,135 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// squad_control with the tangent skewed towards one neighbour: q exp(-((l_n + l_p) + skew (l_n -
-/// l_p)) / 4), l_n = log(q* next), l_p = log(q* previous), neighbours on q's hemisphere. skew = 0
-/// is Shoemake's control point, computed with exactly its operations; keyframe_squad passes
-/// skew = (h_before - h_after) / (h_before + h_after) for keyframes at uneven times.
+// Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
+// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique), or
+// a lower bound of that gap where it was not computed.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> skewed_squad_control(const quaternion<T>& previous,
-                                                           const quaternion<T>& current,
-                                                           const quaternion<T>& next,
-                                                           T skew) noexcept {
-    // log of a unit quaternion is half its rotation vector; exp(v) is from_rotation_vector(2 v).
-    const vec3<T> to_next = to_rotation_vector(relative_rotation<true>(current, next));
-    const vec3<T> to_previous = to_rotation_vector(relative_rotation<true>(current, previous));
-    vec3<T> sum = to_next + to_previous;
-    if (skew != T(0)) sum = sum + (to_next - to_previous) * skew;
-    return current * from_rotation_vector(sum * T(-0.25));
+struct horn_solution {
+    quaternion<T> rotation;
+    T eigenvalue_gap;
+};
+
+// Above this relative eigen-gap the best rotation is well separated from the others: FOAM below
+// finds it, and its eigenvector is accurate without a polish (align_vectors' Newton steps).
+template <class T>
+[[nodiscard]] constexpr T separated_gap() noexcept {
+    return T(1) / T(4);
+}
+
+// m / max |m(i, j)| (m itself for the zero matrix): the matrices below are then of size about 1.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> unit_scaled(const rotation_matrix<T>& m) noexcept {
+    T scale = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(m(i, j)));
+    if (!(scale > T(0))) return m;
+    rotation_matrix<T> scaled{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scaled(i, j) = m(i, j) / scale;
+    return scaled;
+}
+
+// trace(R(q)^T m) = q^T K q for the symmetric 4x4 K below (Horn, J. Opt. Soc. Am. A 4(4), 1987;
+// Bar-Itzhack, J. Guidance 23(6), 2000), so the best q is the eigenvector of K's largest
+// eigenvalue. m is unit_scaled, so K's eigenvalues are relative to its largest element; a
+// non-finite element gives NaN.
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen4<T> horn_eigen(const rotation_matrix<T>& m) noexcept {
+    const T k[4][4] = {
+        {m(0, 0) + m(1, 1) + m(2, 2), m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1)},
+        {m(2, 1) - m(1, 2), m(0, 0) - m(1, 1) - m(2, 2), m(0, 1) + m(1, 0), m(0, 2) + m(2, 0)},
+        {m(0, 2) - m(2, 0), m(0, 1) + m(1, 0), m(1, 1) - m(0, 0) - m(2, 2), m(1, 2) + m(2, 1)},
+        {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1), m(2, 2) - m(0, 0) - m(1, 1)}};
+    return detail::symmetric_eigen(k);
+}
+
+// The best rotation without an eigen-solve, after Markley's FOAM ("Attitude determination using
+// vector observations: a fast optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). For m's
+// singular values s0 >= s1 >= |s2| (s2 < 0 when det m < 0) K's largest eigenvalue is
+// lambda = s0 + s1 + s2, the largest root of (l^2 - |m|^2)^2 - 8 l det m - 4 |adj m|^2; Newton's
+// method from sqrt(3) |m| >= lambda descends to it monotonically (all four roots are real). Then
+// R = ((kappa + |m|^2) m + lambda cof(m) - m m^T m) / zeta, kappa = (lambda^2 - |m|^2) / 2,
+// zeta = lambda kappa - det m = (s0 + s1)(s1 + s2)(s2 + s0). The eigen-gap 2 (s1 + s2) is at least
+// zeta / (2 |m|^2), the returned bound: only where that is separated_gap() or more is the rotation
+// used (K's eigenvector would be as accurate: FOAM measures 3.6 eps at worst, Jacobi's 10.7, over
+// 18,000 noisy point sets); elsewhere zeta's cancellation spoils R. m is unit_scaled.
+template <class T>
+[[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m) noexcept {
+    // cof(m), row by row: the cross products of the other two rows.
+    const rotation_matrix<T> cofactor = rotation_matrix<T>::from_rows(
+        cross(row(m, 1), row(m, 2)), cross(row(m, 2), row(m, 0)), cross(row(m, 0), row(m, 1)));
+    T square = T(0), adjugate_square = T(0);  // |m|^2 and |adj m|^2
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            square += m(i, j) * m(i, j);
+            adjugate_square += cofactor(i, j) * cofactor(i, j);
+        }
+    const T det = determinant(m);
+    T lambda = detail::sqrt(T(3) * square);
+    for (int step = 0; step < 32; ++step) {
+        const T u = lambda * lambda - square;
+        const T value = u * u - T(8) * lambda * det - T(4) * adjugate_square;
+        if (!(value > T(0))) break;  // at the root to rounding (or NaN)
+        const T change = value / (T(4) * lambda * u - T(8) * det);
+        if (!(change > T(0))) break;  // a slope rounded to 0 or below, near a double root
+        lambda -= change;
+        if (!(change > T(4) * detail::epsilon<T>() * lambda)) break;
+    }
+    const T kappa = (lambda * lambda - square) / T(2);
+    const T zeta = lambda * kappa - det;
+    const T bound = zeta / (T(2) * square);
+    if (!(bound >= separated_gap<T>())) return {quaternion<T>::identity(), T(0)};
+    const rotation_matrix<T> cubic = m * transpose(m) * m;
+    rotation_matrix<T> r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r(i, j) = ((kappa + square) * m(i, j) + lambda * cofactor(i, j) - cubic(i, j)) / zeta;
+    return {to_quaternion(r), bound};
+}
+
+// FOAM where the answer is well separated, Horn's eigenvector otherwise. m is unit_scaled.
+template <class T>
+[[nodiscard]] constexpr horn_solution<T> solve_horn(const rotation_matrix<T>& m) noexcept {
+    const horn_solution<T> separated = detail::foam(m);
+    if (separated.eigenvalue_gap >= separated_gap<T>()) return separated;
+    const symmetric_eigen4<T> eigen = detail::horn_eigen(m);
+    const quaternion<T>& q = eigen.vectors[0];
+    return {normalize(q.w < T(0) ? -q : q), eigen.values[0] - eigen.values[1]};
 }
 
 }  // namespace detail
 
-/// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
-/// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
-/// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
-/// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
-/// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
-/// them). At the ends of a path pass the end keyframe twice, squad_control(q0, q0, q1): the path
-/// then starts (and ends) at half the end segment's slerp speed. keyframe_squad builds the whole
-/// path from keyframes at given times, with these points scaled for uneven spacing.
-/// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
+/// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
+/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
+/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
+/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
+/// reports it. Non-finite m gives NaN elements.
 template <class T>
-[[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
-                                                    const quaternion<T>& current,
-                                                    const quaternion<T>& next) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(previous) && detail::is_near_unit(current) &&
-                    detail::is_near_unit(next),
-                "quat::squad_control: an input is not a unit quaternion");
-    return detail::skewed_squad_control(previous, current, next, T(0));
+[[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
+    return to_matrix(detail::solve_horn(detail::unit_scaled(m)).rotation);
 }
 
-/// The spherical cubic from keyframe q1 (t = 0) to keyframe q2 (t = 1) with inner control points
-/// a1 = squad_control(q0, q1, q2) and a2 = squad_control(q1, q2, q3):
-/// slerp(slerp(q1, q2, t), slerp(a1, a2, t), 2t(1 - t)). Returns q1 at t = 0 and q2 (or -q2) at
-/// t = 1 exactly; every slerp takes the shorter arc, so the result depends only on the rotations,
-/// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
-/// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
-/// neighbouring durations there (the controls know nothing of time): keyframe_squad scales the
-/// controls for the spacing, and rotation_spline is smooth to the acceleration. Argument order:
-/// keyframe, control, control, keyframe (GLM's glm::squad takes q1, q2, s1, s2: a port that keeps
-/// GLM's order compiles and is wrong). Preconditions: unit inputs (debug-checked) and t in
-/// [0, 1]; a NaN or infinite input gives a non-finite component (at t = 0 and t = 1 only where
-/// that keyframe is returned).
+/// nearest_rotation(m), or std::nullopt when m has a non-finite element or the nearest rotation is
+/// not unique (the top two eigenvalues of Horn's matrix agree to within sqrt(epsilon) of |m|).
 template <class T>
-[[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
-                                            const quaternion<T>& a2, const quaternion<T>& q2,
-                                            detail::type_identity_t<T> t) noexcept {
-    // Checked here, although slerp checks too, so that the message names squad, not slerp.
-    QUAT_ASSERT(detail::is_near_unit(q1) && detail::is_near_unit(a1) && detail::is_near_unit(a2) &&
-                    detail::is_near_unit(q2),
-                "quat::squad: an input is not a unit quaternion");
-    return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
+[[nodiscard]] constexpr std::optional<rotation_matrix<T>> try_nearest_rotation(
+    const rotation_matrix<T>& m) noexcept {
+    const detail::horn_solution<T> result = detail::solve_horn(detail::unit_scaled(m));
+    if (!(result.eigenvalue_gap > detail::sqrt(detail::epsilon<T>()))) return std::nullopt;
+    return to_matrix(result.rotation);
 }
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_SQUAD_HPP_INCLUDED
-// ---- end quat/squad.hpp ----
+#endif  // QUAT_FITTING_NEAREST_ROTATION_HPP_INCLUDED
+// ---- end quat/fitting/nearest_rotation.hpp ----
 
 namespace quat {
+
+template <class T>
+struct alignment;  // align_vectors.hpp; complete wherever a solution is made
 
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
@@ -7018,93 +6380,483 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// (before - after) / (before + after) for positive durations, formed from their ratio so that
-/// neither the sum nor the difference can overflow or underflow: exactly 0 for equal durations,
-/// and +-1 in the limit of one duration negligible beside the other.
 template <class T>
-[[nodiscard]] constexpr T duration_skew(T before, T after) noexcept {
-    if (before > after) {
-        const T ratio = after / before;
-        return (T(1) - ratio) / (T(1) + ratio);
+struct wahba_solution {
+    alignment<T> result;
+    rotation_matrix<T> profile;    // Davenport's B = sum w_i t_i s_i^T of the scaled data
+    T total_weight;                // sum w_i of the scaled weights
+    T target_scale, source_scale;  // B of the data: profile times these and the weights' scale
+    bool infinite;                 // a weight was infinite (no sensitivity matrix)
+    bool negative;                 // a weight was negative (the callers' debug check)
+};
+
+// 1 where x is zero or lies within [min()^(1/4), max()^(1/4)], where every product of three such
+// sizes stays a normal number; otherwise a power of two p with x / p in [1, 2). Dividing by a power
+// of two is exact, so scaled data is the same data (bar what underflows beside the largest).
+template <class T>
+[[nodiscard]] constexpr T scale_of(T x) noexcept {
+    const T high = detail::sqrt(detail::sqrt(detail::largest<T>()));
+    const T low = detail::sqrt(detail::sqrt(detail::smallest_normal<T>()));
+    if (!(x > high || (x < low && x > T(0)))) return T(1);
+    return binade_of(x);
+}
+
+// max |component|, or infinity for a NaN or infinite component.
+template <class T>
+[[nodiscard]] constexpr T largest_component(const vec3<T>& v) noexcept {
+    if (!detail::is_finite(v)) return detail::infinity<T>();
+    return detail::largest_magnitude(v);
+}
+
+// Whether the non-zero vectors v(i) of the pairs used(i) all lie within `tolerance` radians of one
+// line through 0 (true for none or one): B's rank is then at most one.
+template <class T, class Vector, class Used>
+[[nodiscard]] constexpr bool collinear(std::size_t count, Vector v, Used used) noexcept {
+    vec3<T> reference{T(0), T(0), T(0)};
+    T reference_norm = T(0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (used(i) && norm(v(i)) > reference_norm) {
+            reference = v(i);
+            reference_norm = norm(reference);
+        }
+    const T tolerance = T(64) * detail::epsilon<T>();
+    for (std::size_t i = 0; i < count; ++i)
+        if (used(i) && norm(cross(v(i), reference)) > tolerance * norm(v(i)) * reference_norm)
+            return false;
+    return true;
+}
+
+// Newton's method on the rotation: with c_i = R s_i and R <- exp(phi) R, sum w t . exp(phi) c is
+// sum w t . c + phi . g - phi^T H phi / 2 to second order, g = sum w c x t and
+// H = sum w ((t . c) I - (t c^T + c t^T) / 2), so the step is phi = H^-1 g. The eigenvector of K
+// is only as accurate as eps over K's relative eigen-gap 2 (s1 + s2) / max |B(i, j)|: weights
+// spread over 1e10 leave the rotation about the heavy pairs' direction to about 1e-6. Each step
+// divides that error by about 1 / (eps spread) (H's rounding relative to its smallest eigenvalue),
+// because g is summed from cross products accurate to their own size, not B's. A step that is not
+// a descent (H not positive definite) or implausibly large is not taken.
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr quaternion<T> newton_refine(quaternion<T> q, std::size_t count,
+                                                    Target target, Source source,
+                                                    Weight weight) noexcept {
+    for (int step = 0; step < 8; ++step) {
+        const rotation_matrix<T> r = to_matrix(q);
+        T g[3] = {}, h[3][3] = {}, tau = T(0);
+        for (std::size_t start = 0; start < count; start += summation_block) {
+            const std::size_t end =
+                count - start < summation_block ? count : start + summation_block;
+            T block_g[3] = {}, block_s[3][3] = {}, block_tau = T(0);
+            for (std::size_t i = start; i < end; ++i) {
+                const T w = weight(i);
+                if (!(w > T(0))) continue;
+                const vec3<T> t = target(i), c = rotate(r, source(i));
+                // c x t accurate to its own size (align.hpp): for a pair already aligned it is
+                // tiny, and the plain formula's rounding (eps |c| |t| in every direction) times a
+                // large weight would swamp the small weights' pull about that pair.
+                const vec3<T> gradient = accurate_cross(c, t) * w, wt = t * w;
+                const T tc[3] = {wt.x, wt.y, wt.z}, cc[3] = {c.x, c.y, c.z};
+                block_g[0] += gradient.x;
+                block_g[1] += gradient.y;
+                block_g[2] += gradient.z;
+                block_tau += dot(wt, c);
+                for (int a = 0; a < 3; ++a)
+                    for (int b = 0; b < 3; ++b) block_s[a][b] += tc[a] * cc[b] + tc[b] * cc[a];
+            }
+            tau += block_tau;
+            for (int a = 0; a < 3; ++a) {
+                g[a] += block_g[a];
+                for (int b = 0; b < 3; ++b) h[a][b] -= block_s[a][b] / T(2);
+            }
+        }
+        for (int a = 0; a < 3; ++a) h[a][a] += tau;
+        T phi[3] = {};
+        if (!detail::solve_positive_definite3(h, g, phi)) break;
+        const vec3<T> turn{phi[0], phi[1], phi[2]};
+        const T size = norm(turn);
+        if (!(size <= T(0.125))) break;
+        q = normalize(from_rotation_vector(turn) * q);
+        if (size <= detail::epsilon<T>()) break;
     }
-    const T ratio = before / after;
-    return (ratio - T(1)) / (T(1) + ratio);
+    return q.w < T(0) ? -q : q;
+}
+
+// One Newton step of newton_refine's kind from B alone: with N = B R^T = sum w t (R s)^T,
+// g = vee(N - N^T) and H = trace(N) I - (N + N^T) / 2. The eigenvector (or FOAM's closed form) is
+// good to about eps / gap in relative terms, an error the step removes down to B's own rounding,
+// which is where an SVD's answer lies too (measured by quat_accuracy's align_points rows).
+template <class T>
+[[nodiscard]] constexpr quaternion<T> polish_with_profile(const quaternion<T>& q,
+                                                          const T (&b)[3][3]) noexcept {
+    const rotation_matrix<T> n = rotation_matrix<T>{b} * transpose(to_matrix(q));
+    const T g[3] = {n(2, 1) - n(1, 2), n(0, 2) - n(2, 0), n(1, 0) - n(0, 1)};
+    const T trace = n(0, 0) + n(1, 1) + n(2, 2);
+    T h[3][3] = {};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) h[i][j] = (i == j ? trace : T(0)) - (n(i, j) + n(j, i)) / T(2);
+    T phi[3] = {};
+    if (!detail::solve_positive_definite3(h, g, phi)) return q;
+    const quaternion<T> p = normalize(from_rotation_vector(vec3<T>{phi[0], phi[1], phi[2]}) * q);
+    return p.w < T(0) ? -p : p;
+}
+
+// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs
+// with w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x)
+// (1 - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and
+// A = sum w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest
+// at atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds
+// only its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
+template <class T>
+struct turn {
+    T angle;
+    bool unique;
+};
+
+template <class T, class X, class Y, class Weight>
+[[nodiscard]] constexpr turn<T> best_turn(const vec3<T>& axis, std::size_t count, std::size_t skip,
+                                          X x, Y y, Weight weight) noexcept {
+    T sine = T(0), cosine = T(0), size = T(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const T w = weight(i);
+        if (i == skip || !(w > T(0))) continue;
+        const vec3<T> xi = x(i), yi = y(i);
+        const vec3<T> x_across = accurate_cross(xi, axis), y_across = accurate_cross(yi, axis);
+        sine += w * dot(axis, accurate_cross(xi, yi));
+        cosine += w * dot(x_across, y_across);
+        size += w * norm(x_across) * norm(y_across);
+    }
+    // max(|A|, |S|), not their hypotenuse: squares of tiny sums (weights 1e-300 beside one
+    // of 1) would underflow.
+    const bool unique =
+        detail::max(detail::abs(sine), detail::abs(cosine)) > T(64) * detail::epsilon<T>() * size;
+    return {unique ? detail::atan2(sine, cosine) : T(0), unique};
+}
+
+template <class T>
+[[nodiscard]] constexpr wahba_solution<T> nan_wahba(bool negative) noexcept {
+    const T nan = detail::quiet_nan<T>();
+    const rotation_matrix<T> profile{{{nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}}};
+    return {{{nan, nan, nan, nan}, nan, false}, profile, nan, T(1), T(1), false, negative};
+}
+
+// One pair with infinite weight (scipy >= 1.11's "primary" pair): it is aligned exactly in
+// direction, by the shortest arc P, then the finite pairs choose the turn about its target's
+// direction (best_turn of P s_i onto t_i). Not unique when they have no pull about it.
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr alignment<T> align_with_primary(std::size_t count, std::size_t primary,
+                                                        Target target, Source source,
+                                                        Weight weight) noexcept {
+    const vec3<T> tp = target(primary), sp = source(primary);
+    const T nan = detail::quiet_nan<T>();
+    if (!(squared_norm(tp) > T(0)) || !(squared_norm(sp) > T(0)))
+        return {{nan, nan, nan, nan}, nan, false};  // infinity times a zero vector
+    const quaternion<T> arc = rotation_between(sp, tp);
+    const vec3<T> a = normalize(tp);
+    const rotation_matrix<T> r = to_matrix(arc);
+    const turn<T> best = best_turn(
+        a, count, primary, [&](std::size_t i) { return rotate(r, source(i)); }, target, weight);
+    if (!best.unique) return {arc, T(0), false};  // as for one pair: rotation_between itself
+    const quaternion<T> q = normalize(from_rotation_vector(a * best.angle) * arc);
+    return {q.w < T(0) ? -q : q, T(0), true};
+}
+
+// Davenport's B = sum w t s^T, summed in blocks of summation_block pairs, each block from zero:
+// rounding errors then grow with the block length plus the number of blocks, not with the count.
+// For 1e6 noisy pairs in float the plain running sums put the rotation 114 eps from its long
+// double value; blocked, 2.7 eps (double: 16.6 and 2.5 eps). Returns sum w.
+template <class T>
+struct data_sizes {
+    T target, source, weight, lowest;  // largest |component|, largest |w|, lowest w (or 0)
+};
+
+template <class T, class Target, class Source, class Weight>
+constexpr T profile_of(T (&b)[3][3], data_sizes<T>& sizes, std::size_t count, Target target,
+                       Source source, Weight weight) noexcept {
+    T total = T(0);
+    sizes = {T(0), T(0), T(0), T(0)};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) b[r][c] = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        T block[3][3] = {}, block_total = T(0);
+        for (std::size_t i = start; i < end; ++i) {
+            const T w = weight(i);
+            const vec3<T> u = target(i), s = source(i), t = u * w;
+            // Exact for finite B (a NaN or infinite component makes B so): no checks here.
+            sizes.target = detail::max(
+                sizes.target,
+                detail::max(detail::abs(u.x), detail::max(detail::abs(u.y), detail::abs(u.z))));
+            sizes.source = detail::max(
+                sizes.source,
+                detail::max(detail::abs(s.x), detail::max(detail::abs(s.y), detail::abs(s.z))));
+            sizes.weight = detail::max(sizes.weight, detail::abs(w));
+            sizes.lowest = w < sizes.lowest ? w : sizes.lowest;
+            block[0][0] += t.x * s.x;
+            block[0][1] += t.x * s.y;
+            block[0][2] += t.x * s.z;
+            block[1][0] += t.y * s.x;
+            block[1][1] += t.y * s.y;
+            block[1][2] += t.y * s.z;
+            block[2][0] += t.z * s.x;
+            block[2][1] += t.z * s.y;
+            block[2][2] += t.z * s.z;
+            block_total += w;
+        }
+        total += block_total;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) b[r][c] += block[r][c];
+    }
+    return total;
+}
+
+// sum w_i t_i . (R s_i) = trace(R^T B), so R is the rotation nearest to B: the eigenvector of the
+// largest eigenvalue of Horn's (Davenport's) K of B (Davenport's q-method; Markley & Crassidis,
+// Fundamentals of Spacecraft Attitude Determination and Control, 2014, ch. 5), polished by
+// newton_refine where K's relative eigen-gap leaves it inaccurate. K's eigenvalues are
+// s0 + s1 + s2 and s0 - s1 - s2, ... for B's singular values s0 >= s1 >= |s2| (s2 < 0 when
+// det B < 0). The optimum is unique unless B has rank one or less (the used sources or the used
+// targets collinear, see collinear()) or, where the top two eigenvalues nearly tie, best_turn finds
+// no pull. Collinear data tie them to rounding, so the rank is only examined below sqrt(eps).
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr alignment<T> rotation_of_profile(const T (&b)[3][3], std::size_t count,
+                                                         Target target, Source source,
+                                                         Weight weight) noexcept {
+    const rotation_matrix<T> scaled = unit_scaled(rotation_matrix<T>{b});
+    const horn_solution<T> separated = detail::foam(scaled);
+    // FOAM's error grows as its gap bound shrinks: above 1 (B's singular values within about a
+    // factor 2 of each other) it is within a few eps as it is, below that one polish.
+    if (separated.eigenvalue_gap >= T(1)) return {separated.rotation, T(0), true};
+    if (separated.eigenvalue_gap >= separated_gap<T>())
+        return {polish_with_profile(separated.rotation, b), T(0), true};
+    const symmetric_eigen4<T> eigen = detail::horn_eigen(scaled);
+    const T gap = eigen.values[0] - eigen.values[1];
+    const T tie = detail::sqrt(detail::epsilon<T>());
+    bool unique = gap > tie;
+    quaternion<T> q = eigen.vectors[0];
+    if (!unique) {
+        // One pair outweighing all others together by 1 / eps (w |t| |s|, what it adds to B)
+        // leaves theirs below its rounding in B, in K and in Newton's H: it is then aligned first,
+        // as an infinite weight is, and the others turn about it (what they move it by is below
+        // eps). Such a pair ties K's top two eigenvalues, so it is only looked for here.
+        T heaviest = T(0), others = T(0);
+        std::size_t heavy = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            const T load = weight(i) * norm(target(i)) * norm(source(i));
+            if (load > heaviest) {
+                others += heaviest;
+                heaviest = load;
+                heavy = i;
+            } else {
+                others += load;
+            }
+        }
+        if (count > 1 && others < detail::epsilon<T>() * heaviest)
+            return align_with_primary<T>(count, heavy, target, source, weight);
+        const auto used = [&](std::size_t i) {
+            return weight(i) > T(0) && squared_norm(target(i)) > T(0) &&
+                   squared_norm(source(i)) > T(0);
+        };
+        unique = !collinear<T>(count, source, used) && !collinear<T>(count, target, used);
+    }
+    if (unique && !(gap > tie)) {
+        // The two best eigenvectors v0, v1 nearly tie (weights spread by 1e8 or more, or a
+        // symmetric set): the optimum lies near the circle v0 (cos a + u sin a), u the vector part
+        // of v0* v1, the rotations R(v0) rot(u, 2 a), and B's rounding leaves v0 anywhere on it.
+        // best_turn finds the turn from the pairs themselves; none at all: not unique.
+        const quaternion<T> v0 = eigen.vectors[0], between = conjugate(v0) * eigen.vectors[1];
+        const vec3<T> u = normalize(vec3<T>{between.x, between.y, between.z});
+        const turn<T> best = best_turn(
+            u, count, count, source,
+            [&](std::size_t i) { return rotate(conjugate(v0), target(i)); }, weight);
+        unique = best.unique;
+        if (unique) q = v0 * from_rotation_vector(u * best.angle);
+    }
+    if (unique) {
+        q = normalize(q.w < T(0) ? -q : q);
+        // The eigenvector is good to about eps / gap: polish it where that is coarse. Below
+        // 64 eps, Newton's H is too coarse to converge (each step would cut the error by less
+        // than 32); best_turn's answer is then already good to eps.
+        if (gap < separated_gap<T>() && gap > T(64) * detail::epsilon<T>())
+            q = newton_refine(q, count, target, source, weight);
+        else if (gap >= separated_gap<T>()) q = polish_with_profile(q, b);
+    } else if (count == 1 && eigen.values[0] > T(0)) {
+        q = rotation_between(source(0), target(0));
+    } else {
+        // The optimal rotations span the eigenvectors tied with the largest; of those, the one
+        // nearest the identity (the projection of 1 onto the span), which for collinear pairs
+        // is the shortest arc, as for one pair, and for B = 0 (no data) the identity. When
+        // every optimal rotation is a half turn, the projection is 0 and any of them will do.
+        quaternion<T> nearest{T(0), T(0), T(0), T(0)};
+        for (int n = 0; n < 4; ++n)
+            if (eigen.values[0] - eigen.values[n] <= tie)
+                nearest += eigen.vectors[n] * eigen.vectors[n].w;
+        if (squared_norm(nearest) > T(0)) q = nearest;
+        q = normalize(q.w < T(0) ? -q : q);
+    }
+    return {q, T(0), unique};
+}
+
+// sqrt(sum w |t - R s|^2) from the residuals themselves: scipy's sum w (|t|^2 + |s|^2) -
+// 2 trace(R^T B) cancels down to about sqrt(epsilon) times the vectors' length when they fit
+// exactly. target, source and weight are the data divided by the powers of two in `scale`.
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr T rssd_of(const quaternion<T>& q, std::size_t count, Target target,
+                                  Source source, Weight weight) noexcept {
+    const rotation_matrix<T> r = to_matrix(q);
+    T squares = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        T block = T(0);
+        for (std::size_t i = start; i < end; ++i)
+            block += weight(i) * squared_norm(target(i) - rotate(r, source(i)));
+        squares += block;
+    }
+    return detail::sqrt(squares);
+}
+
+// The data are first summed as they are; only where that overflows, underflows (sizes outside
+// [min()^(1/4), max()^(1/4)]), meets an infinite weight or NaN are they examined closely and
+// divided by powers of two (scale_of), so sizes from subnormal to max() give the same rotation.
+template <class T, class Target, class Source, class Weight>
+[[nodiscard]] constexpr wahba_solution<T> solve_wahba(Target target, Source source,
+                                                      std::size_t count, Weight weight) noexcept {
+    T b[3][3] = {};
+    data_sizes<T> sizes{};
+    T total = profile_of(b, sizes, count, target, source, weight);
+    bool plain = detail::is_finite(total);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) plain = plain && detail::is_finite(b[r][c]);
+    T target_size = sizes.target, source_size = sizes.source, weight_size = sizes.weight,
+      lowest = sizes.lowest;
+    std::size_t infinite = 0, primary = 0;
+    bool finite = true;
+    plain = plain && scale_of(target_size) == T(1) && scale_of(source_size) == T(1) &&
+            scale_of(weight_size) == T(1);
+    if (!plain) {
+        target_size = source_size = weight_size = lowest = T(0);
+        for (std::size_t i = 0; i < count; ++i) {
+            const T w = weight(i);
+            lowest = w < lowest ? w : lowest;
+            if (w == detail::infinity<T>()) {
+                ++infinite;
+                primary = i;
+            } else {
+                finite = finite && detail::is_finite(w);
+                weight_size = detail::max(weight_size, detail::abs(w));
+            }
+            target_size = detail::max(target_size, largest_component(target(i)));
+            source_size = detail::max(source_size, largest_component(source(i)));
+        }
+    }
+    if (!finite || infinite > 1 || !detail::is_finite(target_size) ||
+        !detail::is_finite(source_size))
+        return nan_wahba<T>(lowest < T(0));
+    if (plain) {
+        alignment<T> result = rotation_of_profile(b, count, target, source, weight);
+        result.rssd = rssd_of(result.rotation, count, target, source, weight);
+        return {result, rotation_matrix<T>{b}, total, T(1), T(1), false, lowest < T(0)};
+    }
+    // Separate scales for the rotation (only B's direction counts), one for both in the residuals.
+    const T pt = scale_of(target_size), ps = scale_of(source_size), pw = scale_of(weight_size);
+    const T p = scale_of(detail::max(target_size, source_size));
+    const auto scaled_target = [&](std::size_t i) { return target(i) / pt; };
+    const auto scaled_source = [&](std::size_t i) { return source(i) / ps; };
+    const auto scaled_weight = [&](std::size_t i) {
+        const T w = weight(i);  // an infinite weight's pair is aligned apart, and not in rssd
+        return w == detail::infinity<T>() ? T(0) : w / pw;
+    };
+    total = profile_of(b, sizes, count, scaled_target, scaled_source, scaled_weight);
+    alignment<T> result =
+        infinite == 1
+            ? align_with_primary<T>(count, primary, scaled_target, scaled_source, scaled_weight)
+            : rotation_of_profile(b, count, scaled_target, scaled_source, scaled_weight);
+    // An infinite weight's pair is left out of rssd, as scipy does (its residual is the
+    // difference of the lengths).
+    result.rssd = rssd_of(
+                      result.rotation, count, [&](std::size_t i) { return target(i) / p; },
+                      [&](std::size_t i) { return source(i) / p; }, scaled_weight) *
+                  detail::sqrt(pw) * p;
+    return {result, rotation_matrix<T>{b}, total, pt, ps, infinite != 0, lowest < T(0)};
+}
+
+// scipy's sensitivity mean(w) / zeta (kappa I + B B^T), kappa = s0 s1 + s1 s2 + s2 s0 and
+// zeta = (s0 + s1) (s1 + s2) (s2 + s0) for B's singular values signed as above, here without an
+// SVD: with lambda = s0 + s1 + s2 = trace(R^T B), kappa = (lambda^2 - |B|_F^2) / 2 and
+// zeta = lambda kappa - det B (Markley, "Attitude determination using vector observations: a fast
+// optimal matrix algorithm", J. Astronaut. Sci. 41(2), 1993). B is scaled to a largest element of 1
+// first, and the scale put back at the end (sensitivity scales as 1 / |B|).
+template <class T>
+[[nodiscard]] constexpr matrix3<T> wahba_sensitivity(const wahba_solution<T>& solution,
+                                                     std::size_t count) noexcept {
+    T scale = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scale = detail::max(scale, detail::abs(solution.profile(i, j)));
+    if (!(scale > T(0))) scale = T(1);
+    rotation_matrix<T> b{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) b(i, j) = solution.profile(i, j) / scale;
+    const rotation_matrix<T> r = to_matrix(solution.result.rotation);
+    T lambda = T(0), frobenius = T(0);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            lambda += r(i, j) * b(i, j);
+            frobenius += b(i, j) * b(i, j);
+        }
+    const T kappa = (lambda * lambda - frobenius) / T(2);
+    const T zeta = lambda * kappa - determinant(b);
+    const T factor =
+        solution.total_weight / static_cast<T>(static_cast<double>(count)) / (scale * zeta);
+    // The weights' scale cancels in mean(w) / |B|; the vectors' scales are divided out one at a
+    // time, since their product may overflow where the quotient does not.
+    const T nan = detail::quiet_nan<T>();
+    matrix3<T> sensitivity{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            sensitivity(i, j) =
+                solution.infinite ? nan
+                                  : factor * ((i == j ? kappa : T(0)) + dot(row(b, i), row(b, j))) /
+                                        solution.target_scale / solution.source_scale;
+    return sensitivity;
+}
+
+// solve_wahba over two arrays.
+template <class T, class Weight>
+[[nodiscard]] constexpr wahba_solution<T> solve_wahba(const vec3<T>* targets,
+                                                      const vec3<T>* sources, std::size_t count,
+                                                      Weight weight) noexcept {
+    return solve_wahba<T>([targets](std::size_t i) { return targets[i]; },
+                          [sources](std::size_t i) { return sources[i]; }, count, weight);
 }
 
 }  // namespace detail
-
-/// The rotation at time t on Shoemake's squad through unit `rotations` at strictly increasing
-/// `times` (containers, C arrays and time types as for keyframe_slerp), its control points scaled
-/// for uneven spacing so that the angular velocity is continuous across every keyframe. On segment
-/// i, with h_i = t_(i+1) - t_i: squad(q_i, a_i, a_(i+1), q_(i+1), (t - t_i) / h_i), where
-///     a_i = q_i exp(-(h_(i-1) log(q_i* q_(i+1)) + h_i log(q_i* q_(i-1))) / (2 (h_(i-1) + h_i)))
-/// (neighbours on q_i's hemisphere, as squad_control takes them) and a_0, a_(n-1) are the end
-/// keyframes themselves. Derivation (docs/keyframes.md): near q_i the segment after it is
-/// q_i exp(u (l_i + 2 c)), the one before q_i exp((u - 1) (l_(i-1) - 2 c)), with l the logs of
-/// the steps and c = log(q_i* a_i); equal rates per unit of time on both sides give a_i, and the
-/// tangent (l_(i-1) + l_i) / (h_(i-1) + h_i) of Kochanek and Bartels' adjustment for unequal
-/// intervals (SIGGRAPH 1984), with every control point within a quarter turn of its keyframe.
-/// Evenly spaced times give squad_control's points by the same operations. Exactly rotations[i]
-/// at times[i]; the end keyframes are left and reached at their segment's slerp velocity (as in
-/// rotation_spline: two keyframes give keyframe_slerp) and held outside the times.
-/// Preconditions, debug checks (messages naming keyframe_squad) and release results for bad sizes
-/// or times are keyframe_slerp's. A NaN t gives NaN; a NaN or infinite keyframe k a non-finite
-/// component on segments k - 2 to k + 1, where it is an end or a control point's neighbour.
-template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
-[[nodiscard]] constexpr quaternion<T> keyframe_squad(const Times& times, const Rotations& rotations,
-                                                     detail::type_identity_t<T> t) noexcept {
-    const std::size_t count = detail::size_of(rotations);
-    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
-                "quat::keyframe_squad: times and rotations differ in size or are empty");
-    if (count == 0 || detail::size_of(times) != count) {
-        const T nan = detail::quiet_nan<T>();
-        return {nan, nan, nan, nan};
-    }
-    const auto* time = detail::data_of(times);
-    QUAT_ASSERT(detail::are_keyframe_times<T>(time, count),
-                "quat::keyframe_squad: keyframe times are not increasing, or not finite");
-    const quaternion<T>* rotation = detail::data_of(rotations);
-    const auto at = [time](std::size_t k) { return detail::to_scalar<T>(time[k]); };
-    const T first = at(0), last = at(count - 1);
-    if (count == 1 || t <= first || t >= last) {
-        const quaternion<T>& end = count == 1 || t <= first ? rotation[0] : rotation[count - 1];
-        QUAT_ASSERT(detail::is_near_unit(end),
-                    "quat::keyframe_squad: a rotation is not a unit quaternion");
-        return t == t ? end : end * t;
-    }
-    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to squad
-    const bool first_segment = i == 0, last_segment = i + 2 == count;
-    // The keyframes the segment uses: its ends and, for the control points, their neighbours.
-    QUAT_ASSERT(detail::is_near_unit(rotation[first_segment ? i : i - 1]) &&
-                    detail::is_near_unit(rotation[i]) && detail::is_near_unit(rotation[i + 1]) &&
-                    detail::is_near_unit(rotation[last_segment ? i + 1 : i + 2]),
-                "quat::keyframe_squad: a rotation is not a unit quaternion");
-    const T start = at(i), end = at(i + 1), duration = end - start;
-    const quaternion<T> control_start =
-        first_segment
-            ? rotation[i]
-            : detail::skewed_squad_control(rotation[i - 1], rotation[i], rotation[i + 1],
-                                           detail::duration_skew(start - at(i - 1), duration));
-    const quaternion<T> control_end =
-        last_segment
-            ? rotation[i + 1]
-            : detail::skewed_squad_control(rotation[i], rotation[i + 1], rotation[i + 2],
-                                           detail::duration_skew(duration, at(i + 2) - end));
-    return squad(rotation[i], control_start, control_end, rotation[i + 1], (t - start) / duration);
-}
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_KEYFRAME_SQUAD_HPP_INCLUDED
-// ---- end quat/keyframe_squad.hpp ----
-// ---- begin quat/kinematics.hpp ----
-// Angular velocity between two orientations, and integrating an angular velocity over a time step.
-#ifndef QUAT_KINEMATICS_HPP_INCLUDED
-#define QUAT_KINEMATICS_HPP_INCLUDED
-
+#endif  // QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
+// ---- end quat/fitting/detail/wahba.hpp ----
 
 namespace quat {
+
+/// The rotation that best aligns two sets of vectors, and how well it does (align_vectors).
+template <class T>
+struct alignment {
+    /// Unit quaternion, w >= 0, of the rotation R minimizing sum w_i |targets_i - R sources_i|^2.
+    quaternion<T> rotation;
+    /// sqrt(sum w_i |targets_i - R sources_i|^2), summed from the residuals.
+    T rssd;
+    /// False when other rotations fit as well: one pair, collinear vectors, and a few symmetric
+    /// sets (see align_vectors for the thresholds).
+    bool unique;
+};
+
+/// An alignment and scipy's sensitivity matrix (align_vectors_with_sensitivity): an alignment
+/// with one more field, so it passes wherever an alignment<T> is taken.
+template <class T>
+struct alignment_with_sensitivity : alignment<T> {
+    /// Symmetric 3x3 matrix, read as sensitivity(row, col), proportional to the covariance of the
+    /// rotation's error as a small rotation vector in the targets' frame: scipy's (1.10) matrix
+    /// for return_sensitivity=True.
+    matrix3<T> sensitivity;
+};
 
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
@@ -7130,62 +6882,139 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
-/// Body-frame angular velocity (a gyroscope's reading, radians per unit of dt) that turns unit q0
-/// into unit q1 in time dt at a constant rate: integrate_body(q0, omega, dt) == q1 as rotations,
-/// along the shorter arc (q1 and -q1 give the same omega, |omega dt| <= pi). Relative error of a
-/// few eps even for tiny turns (|omega dt| = 1e-12). Preconditions: unit q0 and q1 (debug-checked)
-/// and dt != 0; a negative dt gives the omega that satisfies the same relation, dt == 0 gives
-/// infinite or NaN components, an infinite dt the limit 0, and any other NaN or infinite input NaN.
-template <class T>
-[[nodiscard]] constexpr vec3<T> body_angular_velocity(const quaternion<T>& q0,
-                                                      const quaternion<T>& q1,
-                                                      detail::type_identity_t<T> dt) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
-                "quat::body_angular_velocity: q0 or q1 is not a unit quaternion");
-    return to_rotation_vector(detail::relative_rotation<true>(q0, q1)) / dt;
+
+/// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
+/// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
+/// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
+/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
+/// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
+/// two first). unique is false when other rotations fit as well: when the sources, or the targets,
+/// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
+/// line (B = sum targets[i] sources[i]^T has rank one or zero), or the two best rotations tie to
+/// rounding (Davenport's K's top two eigenvalues within 32 epsilon of max |B(i, j)|: a few
+/// symmetric sets). Then the optimal rotation nearest the identity: rotation_between(sources[0],
+/// targets[0]) for one pair, the identity for no pairs (rssd 0). A NaN or infinite component gives
+/// a NaN rotation and rssd, unique = false.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
+                                                   const Sources& sources) noexcept {
+    QUAT_ASSERT(detail::same_size(targets, sources),
+                "quat::align_vectors: targets and sources differ in size");
+    if (!detail::same_size(targets, sources)) return detail::nan_wahba<T>(false).result;
+    return detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                  detail::size_of(sources), [](std::size_t) { return T(1); })
+        .result;
 }
 
-/// World-frame (space-fixed axes) angular velocity that turns unit q0 into unit q1 in time dt:
-/// integrate_world(q0, omega, dt) == q1 as rotations; equal to rotate(q0, body_angular_velocity).
-/// Shorter arc, accuracy, preconditions and out-of-domain results as for body_angular_velocity.
-template <class T>
-[[nodiscard]] constexpr vec3<T> world_angular_velocity(const quaternion<T>& q0,
-                                                       const quaternion<T>& q1,
-                                                       detail::type_identity_t<T> dt) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q0) && detail::is_near_unit(q1),
-                "quat::world_angular_velocity: q0 or q1 is not a unit quaternion");
-    return to_rotation_vector(detail::relative_rotation<false>(q0, q1)) / dt;
+/// align_vectors with weights (a container of scalars convertible to T, as long as the vectors;
+/// other lengths as in align_vectors(targets, sources)):
+/// R minimizes sum weights[i] |targets[i] - R sources[i]|^2, and rssd is weighted alike. A zero
+/// weight drops its pair; weights may spread over many orders of magnitude (the rotation is
+/// polished by Newton steps where they leave Davenport's eigenvector coarse). One infinite weight
+/// (scipy >= 1.11): its pair is aligned exactly in direction, by the shortest arc, the others
+/// choose the turn about that pair's target, and rssd leaves that pair out; unique is then false
+/// when the other pairs have no component across that target (the turn is 0). Two or more infinite
+/// weights (scipy raises), a NaN weight, or an infinite weight on a zero vector give a NaN result.
+/// Precondition: weights >= 0 (QUAT_ASSERT; unchecked, a negative weight counts against its pair,
+/// and rssd may be NaN).
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets, const Sources& sources,
+                                                   const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::same_size(targets, sources, weights),
+                "quat::align_vectors: targets, sources and weights differ in size");
+    if (!detail::same_size(targets, sources, weights)) return detail::nan_wahba<T>(false).result;
+    const auto* w = detail::data_of(weights);
+    const detail::wahba_solution<T> solution = detail::solve_wahba<T>(
+        detail::data_of(targets), detail::data_of(sources), detail::size_of(sources),
+        [w](std::size_t i) { return static_cast<T>(w[i]); });
+    QUAT_ASSERT(!solution.negative, "quat::align_vectors: a weight is negative");
+    return solution.result;
 }
 
-/// Orientation after turning unit q0 at the constant body-frame angular velocity omega (radians per
-/// unit of dt, body axes) for dt: q0 * from_rotation_vector(omega * dt), exact for any |omega dt|.
-/// Not renormalized: |q| drifts by a few eps per step, so renormalize a long chain of steps every
-/// few dozen (see tests/test_drift.cpp). NaN or infinite input gives a non-finite result.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> integrate_body(const quaternion<T>& q0, const vec3<T>& omega,
-                                                     detail::type_identity_t<T> dt) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_body: q0 is not a unit quaternion");
-    return q0 * from_rotation_vector(omega * dt);
+namespace detail {
+
+/// The alignment of count pairs, or std::nullopt where it is NaN or its rssd overflows.
+template <class T, class Weight>
+[[nodiscard]] constexpr std::optional<alignment<T>> checked_alignment(const vec3<T>* targets,
+                                                                      const vec3<T>* sources,
+                                                                      std::size_t count,
+                                                                      Weight weight) noexcept {
+    const alignment<T> result = solve_wahba<T>(targets, sources, count, weight).result;
+    if (!is_finite(result.rotation.w) || !is_finite(result.rssd)) return std::nullopt;
+    return result;
 }
 
-/// Orientation after turning unit q0 at the constant world-frame angular velocity omega for dt:
-/// from_rotation_vector(omega * dt) * q0. Renormalization and bad input as for integrate_body.
-template <class T>
-[[nodiscard]] constexpr quaternion<T> integrate_world(const quaternion<T>& q0, const vec3<T>& omega,
-                                                      detail::type_identity_t<T> dt) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q0), "quat::integrate_world: q0 is not a unit quaternion");
-    return from_rotation_vector(omega * dt) * q0;
+}  // namespace detail
+
+/// align_vectors(targets, sources), or std::nullopt for input it does not align: no pairs,
+/// containers of different sizes, a NaN or infinite component, or an rssd beyond max() (vectors
+/// near max() that stay apart). A set that fits other rotations as well is not bad input: it gives
+/// an alignment with unique = false, as align_vectors does. Never asserts.
+template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
+    const Targets& targets, const Sources& sources) noexcept {
+    const std::size_t count = detail::size_of(sources);
+    if (count == 0 || detail::size_of(targets) != count) return std::nullopt;
+    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
+                                        [](std::size_t) { return T(1); });
+}
+
+/// align_vectors(targets, sources, weights), or std::nullopt as try_align_vectors(targets, sources)
+/// and also when the weights differ in size, a weight is negative or NaN, no weight is positive, or
+/// more than one is infinite. Never asserts.
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr std::optional<alignment<T>> try_align_vectors(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    const std::size_t count = detail::size_of(sources);
+    if (count == 0 || detail::size_of(targets) != count || detail::size_of(weights) != count)
+        return std::nullopt;
+    const auto* w = detail::data_of(weights);
+    bool positive = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T wi = static_cast<T>(w[i]);
+        if (!(wi >= T(0))) return std::nullopt;  // negative or NaN: the debug check's case
+        positive = positive || wi > T(0);
+    }
+    if (!positive) return std::nullopt;
+    return detail::checked_alignment<T>(detail::data_of(targets), detail::data_of(sources), count,
+                                        [w](std::size_t i) { return static_cast<T>(w[i]); });
+}
+
+/// align_vectors(targets, sources, weights) and scipy's sensitivity matrix: mean(weights) / zeta
+/// (kappa I + B B^T) with B = sum weights[i] targets[i] sources[i]^T, kappa and zeta symmetric
+/// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
+/// mean of the targets' error variances (weights inversely proportional to them), it is the
+/// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
+/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
+template <class Targets, class Sources, class Weights,
+          class T = detail::element_scalar_t<vec3, Targets>>
+[[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
+    const Targets& targets, const Sources& sources, const Weights& weights) noexcept {
+    QUAT_ASSERT(
+        detail::same_size(targets, sources, weights),
+        "quat::align_vectors_with_sensitivity: targets, sources and weights differ in size");
+    const auto* w = detail::data_of(weights);
+    const detail::wahba_solution<T> solution =
+        detail::same_size(targets, sources, weights)
+            ? detail::solve_wahba<T>(detail::data_of(targets), detail::data_of(sources),
+                                     detail::size_of(sources),
+                                     [w](std::size_t i) { return static_cast<T>(w[i]); })
+            : detail::nan_wahba<T>(false);
+    QUAT_ASSERT(!solution.negative, "quat::align_vectors_with_sensitivity: a weight is negative");
+    return {solution.result, detail::wahba_sensitivity(solution, detail::size_of(sources))};
 }
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_KINEMATICS_HPP_INCLUDED
-// ---- end quat/kinematics.hpp ----
-// ---- begin quat/mean.hpp ----
+#endif  // QUAT_FITTING_ALIGN_VECTORS_HPP_INCLUDED
+// ---- end quat/fitting/align_vectors.hpp ----
+// ---- begin quat/fitting/mean.hpp ----
 // The average of many rotations: the chordal L2 mean, as scipy's Rotation.mean computes it.
-#ifndef QUAT_MEAN_HPP_INCLUDED
-#define QUAT_MEAN_HPP_INCLUDED
+#ifndef QUAT_FITTING_MEAN_HPP_INCLUDED
+#define QUAT_FITTING_MEAN_HPP_INCLUDED
 
 #include <cstddef>
 #include <limits>
@@ -7377,19 +7206,37 @@ template <class Rotations, class Weights, class T = detail::element_scalar_t<qua
 
 }  // namespace quat
 
-#endif  // QUAT_MEAN_HPP_INCLUDED
-// ---- end quat/mean.hpp ----
-// ---- begin quat/random.hpp ----
-// Uniformly distributed random rotations from any standard random bit generator.
-#ifndef QUAT_RANDOM_HPP_INCLUDED
-#define QUAT_RANDOM_HPP_INCLUDED
+#endif  // QUAT_FITTING_MEAN_HPP_INCLUDED
+// ---- end quat/fitting/mean.hpp ----
 
+#endif  // QUAT_FITTING_HPP_INCLUDED
+// ---- end quat/fitting.hpp ----
+// ---- begin quat/paths.hpp ----
+// The paths family: slerp and its relatives (paths/interpolation.hpp), fast slerp approximations,
+// squad, and paths through keyframes (piecewise slerp, squad, the C2 rotation spline).
+// Included by quat.hpp.
+#ifndef QUAT_PATHS_HPP_INCLUDED
+#define QUAT_PATHS_HPP_INCLUDED
+
+// ---- begin quat/paths/keyframe_slerp.hpp ----
+// Piecewise slerp through keyframes at given times: scipy's Slerp(times, rotations)(t).
+#ifndef QUAT_PATHS_KEYFRAME_SLERP_HPP_INCLUDED
+#define QUAT_PATHS_KEYFRAME_SLERP_HPP_INCLUDED
+
+#include <cstddef>
+#include <limits>
+
+// ---- begin quat/paths/detail/segments.hpp ----
+// Finding the segment of a keyframe path that holds a time, and checking keyframe times.
+#ifndef QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED
+#define QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED
+
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 
 
 namespace quat {
-
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
 // `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
@@ -7416,72 +7263,160 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// A uniform number in [0, 1) from generator's bits, as std::generate_canonical defines it (enough
-/// calls for T's digits, combined in base max - min + 1) without <random>, which would double the
-/// parse time of quat.hpp; a rounding up to 1 (LWG 2524) moves to the largest value below 1.
-template <class T, class Generator>
-[[nodiscard]] T uniform_unit_interval(Generator& generator) noexcept(noexcept(generator())) {
-    constexpr long double range =
-        static_cast<long double>(Generator::max() - Generator::min()) + 1.0L;
-    // The fewest calls k with range^k >= 2^digits(T).
-    constexpr int calls = [] {
-        long double needed = 1;
-        for (int i = 0; i < std::numeric_limits<T>::digits; ++i) needed *= 2;
-        int k = 1;
-        for (long double reach = range; reach < needed; reach *= range) ++k;
-        return k;
-    }();
-    T sum = T(0), scale = T(1);
-    for (int i = 0; i < calls; ++i) {
-        sum += static_cast<T>(generator() - Generator::min()) * scale;
-        scale *= static_cast<T>(range);
+/// static_cast<T>(x), except that a floating-point x beyond T's largest finite value gives an
+/// infinity of its sign, as IEEE rounding would (the cast itself is undefined there): a double
+/// time of 1e300 beside float rotations becomes infinite, which the checks then see.
+template <class T, class U>
+[[nodiscard]] constexpr T to_scalar(U x) noexcept {
+    if constexpr (std::is_floating_point_v<T> && std::is_floating_point_v<U> &&
+                  (sizeof(U) > sizeof(T))) {
+        const U largest = static_cast<U>(detail::largest<T>());
+        if (x > largest) return detail::infinity<T>();
+        if (x < -largest) return -detail::infinity<T>();
     }
-    const T u = sum / scale;
-    return u < T(1) ? u : T(1) - detail::epsilon<T>() / T(2);
+    return static_cast<T>(x);
+}
+
+/// The segment i in [0, count - 2] with times[i] <= t < times[i + 1]: 0 for t before times[1]
+/// (and for NaN), count - 2 from times[count - 2] on, and 0 when count < 2 (no segment: callers
+/// check that first). `hint`, a segment tried first together with its successor, makes a walk
+/// through sorted times constant time per step. Unsorted times give some index in [0, count - 2],
+/// never one out of range; callers check the order (the search visits too few times to).
+template <class Time, class T>
+[[nodiscard]] constexpr std::size_t segment_of(const Time* times, std::size_t count, T t,
+                                               std::size_t hint = 0) noexcept {
+    if (count < 2) return 0;  // count - 2 would wrap
+    const auto time = [times](std::size_t i) { return to_scalar<T>(times[i]); };
+    const std::size_t last = count - 2;
+    if (hint <= last && !(t < time(hint))) {
+        if (hint == last || t < time(hint + 1)) return hint;
+        if (hint + 1 == last || t < time(hint + 2)) return hint + 1;
+    }
+    // Binary search for the last i <= last with times[i] <= t (times[0] counts as -infinity).
+    std::size_t low = 0, high = last;
+    while (low < high) {
+        const std::size_t middle = low + (high - low + 1) / 2;
+        if (t < time(middle) || t != t) high = middle - 1;
+        else low = middle;
+    }
+    return low;
+}
+
+/// True when the `count` times, converted to T, are finite and strictly increasing; the debug
+/// check of the keyframe paths. Always true for scalars other than float, double and long double,
+/// so that debug checks ask nothing more of a user scalar.
+template <class T, class Time>
+[[nodiscard]] constexpr bool are_keyframe_times(const Time* times, std::size_t count) noexcept {
+    if constexpr (std::is_floating_point_v<T>) {
+        for (std::size_t i = 0; i < count; ++i) {
+            const T time = to_scalar<T>(times[i]);
+            if (!is_finite(time) || (i > 0 && !(to_scalar<T>(times[i - 1]) < time))) return false;
+        }
+    } else {
+        static_cast<void>(times);
+        static_cast<void>(count);
+    }
+    return true;
 }
 
 }  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
 
-/// A unit quaternion with w >= 0 drawn uniformly over the rotations (the Haar measure: the rotation
-/// angle has density (1 - cos(angle)) / pi on [0, pi] and the rotated axes are uniform on the
-/// sphere). Shoemake's method ("Uniform random rotations", Graphics Gems III, 1992) from three
-/// uniforms, with the second circle's angle in [-pi/2, pi/2] so that w >= 0; negate with
-/// probability 1/2 for a uniform point of the unit 3-sphere. `generator` is any
-/// UniformRandomBitGenerator (std::mt19937, std::mt19937_64, std::minstd_rand, ...); the result
-/// depends only on its state, and no memory is allocated. T is float, double or long double.
-template <class T, class Generator>
-[[nodiscard]] quaternion<T> random_rotation(Generator& generator) noexcept(noexcept(generator())) {
-    static_assert(std::is_floating_point_v<T>, "quat::random_rotation: T must be floating-point");
-    const T u1 = detail::uniform_unit_interval<T>(generator);
-    const T u2 = detail::uniform_unit_interval<T>(generator);
-    const T u3 = detail::uniform_unit_interval<T>(generator);
-    // (x, y) on a circle of radius sqrt(1 - u1) and (w, z) on one of radius sqrt(u1): the squared
-    // radii are uniform, which makes the point uniform on the 3-sphere.
-    const T r1 = detail::sqrt(T(1) - u1), r2 = detail::sqrt(u1);
-    const T theta1 = T(2) * numbers::pi_v<T> * u2, theta2 = numbers::pi_v<T> * (u3 - T(0.5));
-    // |cos|: pi rounded to float exceeds pi, so theta2 can land just past -pi/2 (u3 = 2^-31 gave
-    // w = -3.1e-8); mirroring that sliver keeps w >= 0 and moves no probability.
-    return {r2 * detail::abs(detail::cos(theta2)), r1 * detail::sin(theta1),
-            r1 * detail::cos(theta1), r2 * detail::sin(theta2)};
+#endif  // QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED
+// ---- end quat/paths/detail/segments.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// The rotation at time t on the piecewise slerp through unit `rotations` at strictly increasing
+/// `times` (contiguous containers with data() and size(), or C arrays, of equal size >= 1; times
+/// of any arithmetic type, converted to T): slerp of the two keyframes around t, at constant
+/// angular velocity along the shorter arc within each segment, the same rotations as scipy's
+/// Slerp(times, rotations)(t). Exactly rotations[i] at times[i]; t before the first time or after
+/// the last gives the end keyframe (scipy raises there). The angular velocity jumps at every
+/// keyframe: squad or rotation_spline is smooth.
+/// Preconditions: equal, non-zero sizes, finite and strictly increasing times, unit rotations.
+/// Debug builds check the sizes, every time on every call (O(n): the search alone visits too few
+/// to catch an unsorted list) and the keyframes the result comes from; release builds return NaN
+/// for empty or unequal sizes and an unspecified, possibly NaN, rotation for bad times. A NaN t
+/// gives NaN; a NaN or infinite keyframe gives a non-finite component wherever it is used (held
+/// as it is outside the times, as slerp gives it inside).
+template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
+[[nodiscard]] constexpr quaternion<T> keyframe_slerp(const Times& times, const Rotations& rotations,
+                                                     detail::type_identity_t<T> t) noexcept {
+    const std::size_t count = detail::size_of(rotations);
+    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
+                "quat::keyframe_slerp: times and rotations differ in size or are empty");
+    if (count == 0 || detail::size_of(times) != count) {
+        const T nan = detail::quiet_nan<T>();
+        return {nan, nan, nan, nan};
+    }
+    const auto* time = detail::data_of(times);
+    QUAT_ASSERT(detail::are_keyframe_times<T>(time, count),
+                "quat::keyframe_slerp: keyframe times are not increasing, or not finite");
+    const quaternion<T>* rotation = detail::data_of(rotations);
+    const T first = detail::to_scalar<T>(time[0]), last = detail::to_scalar<T>(time[count - 1]);
+    if (count == 1 || t <= first || t >= last) {
+        const quaternion<T>& end = count == 1 || t <= first ? rotation[0] : rotation[count - 1];
+        // Checked here, as slerp would, so that the message names the function the user called.
+        QUAT_ASSERT(detail::is_near_unit(end),
+                    "quat::keyframe_slerp: a rotation is not a unit quaternion");
+        return t == t ? end : end * t;
+    }
+    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to slerp
+    QUAT_ASSERT(detail::is_near_unit(rotation[i]) && detail::is_near_unit(rotation[i + 1]),
+                "quat::keyframe_slerp: a rotation is not a unit quaternion");
+    const T start = detail::to_scalar<T>(time[i]);
+    return slerp(rotation[i], rotation[i + 1],
+                 (t - start) / (detail::to_scalar<T>(time[i + 1]) - start));
 }
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_RANDOM_HPP_INCLUDED
-// ---- end quat/random.hpp ----
-// ---- begin quat/rigid_batch.hpp ----
-// Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
-// matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
-// (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
-// namespaces are those of batch.hpp.
-#ifndef QUAT_RIGID_BATCH_HPP_INCLUDED
-#define QUAT_RIGID_BATCH_HPP_INCLUDED
+#endif  // QUAT_PATHS_KEYFRAME_SLERP_HPP_INCLUDED
+// ---- end quat/paths/keyframe_slerp.hpp ----
+// ---- begin quat/paths/keyframe_squad.hpp ----
+// Squad through keyframes at given times: Shoemake's spherical cubic with its control points scaled
+// for uneven spacing, so that the angular velocity is continuous across every inner keyframe.
+#ifndef QUAT_PATHS_KEYFRAME_SQUAD_HPP_INCLUDED
+#define QUAT_PATHS_KEYFRAME_SQUAD_HPP_INCLUDED
 
 #include <cstddef>
 
+// ---- begin quat/paths/squad.hpp ----
+// Shoemake's spherical cubic (squad): a path through keyframes whose angular velocity is
+// continuous across them when the keyframes are evenly spaced in time.
+#ifndef QUAT_PATHS_SQUAD_HPP_INCLUDED
+#define QUAT_PATHS_SQUAD_HPP_INCLUDED
+
 
 namespace quat {
+
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
 // `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
@@ -7508,129 +7443,185 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-// The four chains of chained_product for dual quaternions, their running products stored
-// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
-// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
-// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
-// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+/// squad_control with the tangent skewed towards one neighbour: q exp(-((l_n + l_p) + skew (l_n -
+/// l_p)) / 4), l_n = log(q* next), l_p = log(q* previous), neighbours on q's hemisphere. skew = 0
+/// is Shoemake's control point, computed with exactly its operations; keyframe_squad passes
+/// skew = (h_before - h_after) / (h_before + h_after) for keyframes at uneven times.
 template <class T>
-struct dual_chain_components {
-    static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,
-                                       dual_quaternion<T> (&chain)[product_chains]) noexcept {
-        constexpr std::size_t lanes = product_chains;
-        T a[8][lanes] = {};  // real w, x, y, z, then dual w, x, y, z of each chain
-        for (std::size_t j = 0; j < lanes; ++j) a[0][j] = T(1);
-        for (std::size_t i = 0; i < run; ++i) {
-            T b[8][lanes] = {};
-            for (std::size_t j = 0; j < lanes; ++j) {
-                const dual_quaternion<T>& factor = f[j * run + i];
-                const T components[8] = {factor.real.w, factor.real.x, factor.real.y,
-                                         factor.real.z, factor.dual.w, factor.dual.x,
-                                         factor.dual.y, factor.dual.z};
-                for (std::size_t c = 0; c < 8; ++c) b[c][j] = components[c];
-            }
-            for (std::size_t j = 0; j < lanes; ++j) {
-                const quaternion<T> ar{a[0][j], a[1][j], a[2][j], a[3][j]};
-                const quaternion<T> ad{a[4][j], a[5][j], a[6][j], a[7][j]};
-                const quaternion<T> br{b[0][j], b[1][j], b[2][j], b[3][j]};
-                const quaternion<T> bd{b[4][j], b[5][j], b[6][j], b[7][j]};
-                const quaternion<T> real = ar * br, dual = ar * bd + ad * br;
-                const T components[8] = {real.w, real.x, real.y, real.z,
-                                         dual.w, dual.x, dual.y, dual.z};
-                for (std::size_t c = 0; c < 8; ++c) a[c][j] = components[c];
-            }
-        }
-        for (std::size_t j = 0; j < lanes; ++j)
-            chain[j] = {{a[0][j], a[1][j], a[2][j], a[3][j]}, {a[4][j], a[5][j], a[6][j], a[7][j]}};
-    }
-};
+[[nodiscard]] constexpr quaternion<T> skewed_squad_control(const quaternion<T>& previous,
+                                                           const quaternion<T>& current,
+                                                           const quaternion<T>& next,
+                                                           T skew) noexcept {
+    // log of a unit quaternion is half its rotation vector; exp(v) is from_rotation_vector(2 v).
+    const vec3<T> to_next = to_rotation_vector(relative_rotation<true>(current, next));
+    const vec3<T> to_previous = to_rotation_vector(relative_rotation<true>(current, previous));
+    vec3<T> sum = to_next + to_previous;
+    if (skew != T(0)) sum = sum + (to_next - to_previous) * skew;
+    return current * from_rotation_vector(sum * T(-0.25));
+}
 
 }  // namespace detail
 
-/// output[i] = R input[i] + t for i < count (array of structs), the rigid motion of the 4x4 matrix
-/// m: 9 multiplications and 9 additions per point. output == input is allowed; other overlaps are
-/// not. Precondition: last row (0, 0, 0, 1), not read.
+/// Shoemake's inner control point for keyframe `current` of a squad path (K. Shoemake, "Animating
+/// rotation with quaternion curves", SIGGRAPH 1985; Dam, Koch and Lillholm, "Quaternions,
+/// interpolation and animation", 1998, eq. 6.53): a = q exp(-(log(q* next) + log(q* previous)) / 4)
+/// with q = current, `previous` and `next` first taken on q's hemisphere, so the path never takes
+/// the long way round whatever the signs of the keyframes (GLM's glm::intermediate does not align
+/// them). At the ends of a path pass the end keyframe twice, squad_control(q0, q0, q1): the path
+/// then starts (and ends) at half the end segment's slerp speed. keyframe_squad builds the whole
+/// path from keyframes at given times, with these points scaled for uneven spacing.
+/// Preconditions: unit quaternions (checked in debug builds); NaN or infinite input gives NaN.
 template <class T>
-void transform(const homogeneous_matrix<T>& m, const vec3<T>* input, vec3<T>* output,
-               std::size_t count) noexcept {
-    QUAT_ASSERT(
-        detail::same_or_disjoint(input, count * sizeof(vec3<T>), output, count * sizeof(vec3<T>)),
-        "quat::transform: output partially overlaps input");
-    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output, count);
+[[nodiscard]] constexpr quaternion<T> squad_control(const quaternion<T>& previous,
+                                                    const quaternion<T>& current,
+                                                    const quaternion<T>& next) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(previous) && detail::is_near_unit(current) &&
+                    detail::is_near_unit(next),
+                "quat::squad_control: an input is not a unit quaternion");
+    return detail::skewed_squad_control(previous, current, next, T(0));
 }
 
-/// output[i] = transform(dq, input[i]) for unit dq (array of structs): dq becomes a matrix and a
-/// translation once. Aliasing as for the matrix overload.
+/// The spherical cubic from keyframe q1 (t = 0) to keyframe q2 (t = 1) with inner control points
+/// a1 = squad_control(q0, q1, q2) and a2 = squad_control(q1, q2, q3):
+/// slerp(slerp(q1, q2, t), slerp(a1, a2, t), 2t(1 - t)). Returns q1 at t = 0 and q2 (or -q2) at
+/// t = 1 exactly; every slerp takes the shorter arc, so the result depends only on the rotations,
+/// not on the signs of the quaternions. With keyframes evenly spaced in time the angular velocity
+/// is continuous across keyframes; with uneven spacing it jumps by about the ratio of the
+/// neighbouring durations there (the controls know nothing of time): keyframe_squad scales the
+/// controls for the spacing, and rotation_spline is smooth to the acceleration. Argument order:
+/// keyframe, control, control, keyframe (GLM's glm::squad takes q1, q2, s1, s2: a port that keeps
+/// GLM's order compiles and is wrong). Preconditions: unit inputs (debug-checked) and t in
+/// [0, 1]; a NaN or infinite input gives a non-finite component (at t = 0 and t = 1 only where
+/// that keyframe is returned).
 template <class T>
-void transform(const dual_quaternion<T>& dq, const vec3<T>* input, vec3<T>* output,
-               std::size_t count) noexcept {
-    transform(to_homogeneous(dq), input, output, count);
+[[nodiscard]] constexpr quaternion<T> squad(const quaternion<T>& q1, const quaternion<T>& a1,
+                                            const quaternion<T>& a2, const quaternion<T>& q2,
+                                            detail::type_identity_t<T> t) noexcept {
+    // Checked here, although slerp checks too, so that the message names squad, not slerp.
+    QUAT_ASSERT(detail::is_near_unit(q1) && detail::is_near_unit(a1) && detail::is_near_unit(a2) &&
+                    detail::is_near_unit(q2),
+                "quat::squad: an input is not a unit quaternion");
+    return slerp(slerp(q1, q2, t), slerp(a1, a2, t), T(2) * t * (T(1) - t));
 }
-
-/// Struct-of-arrays form of the matrix overload: each output array may be its own input array or
-/// not overlap any input. Precondition: output.count >= input.count.
-template <class T>
-void transform(const homogeneous_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
-               soa_points<T> output) noexcept {
-    QUAT_ASSERT(output.count >= input.count, "quat::transform: output shorter than input");
-    QUAT_ASSERT(detail::soa_same_or_disjoint({input.x, input.y, input.z}, output, input.count),
-                "quat::transform: an output array partially overlaps an input array");
-    detail::transform_points<true>(rotation_block(m), translation_of(m), input, output);
-}
-
-/// Struct-of-arrays form of the dual-quaternion overload; aliasing as for the matrix overload.
-template <class T>
-void transform(const dual_quaternion<T>& dq, soa_points<const detail::type_identity_t<T>> input,
-               soa_points<T> output) noexcept {
-    transform(to_homogeneous(dq), input, output);
-}
-
-/// Container form of the array-of-structs transform by unit dq: any contiguous input and output
-/// of vec3<T>. Precondition: size(output) >= size(input) (QUAT_ASSERT); unchecked, the first
-/// min(size(input), size(output)) points, never past either container.
-template <class T, class Input, class Output,
-          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
-void transform(const dual_quaternion<T>& dq, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
-                "quat::transform: output shorter than input");
-    transform(dq, detail::data_of(input), detail::data_of(output),
-              detail::common_size(input, output));
-}
-/// Container form of the array-of-structs transform by the 4x4 matrix m, with the precondition of
-/// the one by dq.
-template <class T, class Input, class Output,
-          class = detail::if_arrays_of<vec3<T>, vec3<T>, Input, Output>>
-void transform(const homogeneous_matrix<T>& m, const Input& input, Output&& output) noexcept {
-    QUAT_ASSERT(detail::size_of(output) >= detail::size_of(input),
-                "quat::transform: output shorter than input");
-    transform(m, detail::data_of(input), detail::data_of(output),
-              detail::common_size(input, output));
-}
-
-/// The product dq[0] dq[1] ... dq[count - 1] (dq[count - 1] applies first); identity when
-/// count == 0. Four interleaved chains as in the quaternion compose: the same motion by
-/// associativity, rounded differently.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> compose(const dual_quaternion<T>* dq,
-                                                   std::size_t count) noexcept {
-    return detail::chained_product<dual_quaternion<T>, detail::dual_chain_components<T>>(dq, count);
-}
-
-/// compose over any contiguous container or view of dual_quaternion<T>.
-template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range>>
-[[nodiscard]] constexpr dual_quaternion<T> compose(const Range& factors) noexcept {
-    return compose(detail::data_of(factors), detail::size_of(factors));
-}
-
 }  // inline namespace isa_...
+
 }  // namespace quat
 
-#endif  // QUAT_RIGID_BATCH_HPP_INCLUDED
-// ---- end quat/rigid_batch.hpp ----
-// ---- begin quat/rotation_spline.hpp ----
+#endif  // QUAT_PATHS_SQUAD_HPP_INCLUDED
+// ---- end quat/paths/squad.hpp ----
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// (before - after) / (before + after) for positive durations, formed from their ratio so that
+/// neither the sum nor the difference can overflow or underflow: exactly 0 for equal durations,
+/// and +-1 in the limit of one duration negligible beside the other.
+template <class T>
+[[nodiscard]] constexpr T duration_skew(T before, T after) noexcept {
+    if (before > after) {
+        const T ratio = after / before;
+        return (T(1) - ratio) / (T(1) + ratio);
+    }
+    const T ratio = before / after;
+    return (ratio - T(1)) / (T(1) + ratio);
+}
+
+}  // namespace detail
+
+/// The rotation at time t on Shoemake's squad through unit `rotations` at strictly increasing
+/// `times` (containers, C arrays and time types as for keyframe_slerp), its control points scaled
+/// for uneven spacing so that the angular velocity is continuous across every keyframe. On segment
+/// i, with h_i = t_(i+1) - t_i: squad(q_i, a_i, a_(i+1), q_(i+1), (t - t_i) / h_i), where
+///     a_i = q_i exp(-(h_(i-1) log(q_i* q_(i+1)) + h_i log(q_i* q_(i-1))) / (2 (h_(i-1) + h_i)))
+/// (neighbours on q_i's hemisphere, as squad_control takes them) and a_0, a_(n-1) are the end
+/// keyframes themselves. Derivation (docs/keyframes.md): near q_i the segment after it is
+/// q_i exp(u (l_i + 2 c)), the one before q_i exp((u - 1) (l_(i-1) - 2 c)), with l the logs of
+/// the steps and c = log(q_i* a_i); equal rates per unit of time on both sides give a_i, and the
+/// tangent (l_(i-1) + l_i) / (h_(i-1) + h_i) of Kochanek and Bartels' adjustment for unequal
+/// intervals (SIGGRAPH 1984), with every control point within a quarter turn of its keyframe.
+/// Evenly spaced times give squad_control's points by the same operations. Exactly rotations[i]
+/// at times[i]; the end keyframes are left and reached at their segment's slerp velocity (as in
+/// rotation_spline: two keyframes give keyframe_slerp) and held outside the times.
+/// Preconditions, debug checks (messages naming keyframe_squad) and release results for bad sizes
+/// or times are keyframe_slerp's. A NaN t gives NaN; a NaN or infinite keyframe k a non-finite
+/// component on segments k - 2 to k + 1, where it is an end or a control point's neighbour.
+template <class Times, class Rotations, class T = detail::element_scalar_t<quaternion, Rotations>>
+[[nodiscard]] constexpr quaternion<T> keyframe_squad(const Times& times, const Rotations& rotations,
+                                                     detail::type_identity_t<T> t) noexcept {
+    const std::size_t count = detail::size_of(rotations);
+    QUAT_ASSERT(count > 0 && detail::size_of(times) == count,
+                "quat::keyframe_squad: times and rotations differ in size or are empty");
+    if (count == 0 || detail::size_of(times) != count) {
+        const T nan = detail::quiet_nan<T>();
+        return {nan, nan, nan, nan};
+    }
+    const auto* time = detail::data_of(times);
+    QUAT_ASSERT(detail::are_keyframe_times<T>(time, count),
+                "quat::keyframe_squad: keyframe times are not increasing, or not finite");
+    const quaternion<T>* rotation = detail::data_of(rotations);
+    const auto at = [time](std::size_t k) { return detail::to_scalar<T>(time[k]); };
+    const T first = at(0), last = at(count - 1);
+    if (count == 1 || t <= first || t >= last) {
+        const quaternion<T>& end = count == 1 || t <= first ? rotation[0] : rotation[count - 1];
+        QUAT_ASSERT(detail::is_near_unit(end),
+                    "quat::keyframe_squad: a rotation is not a unit quaternion");
+        return t == t ? end : end * t;
+    }
+    const std::size_t i = detail::segment_of(time, count, t);  // a NaN t goes on to squad
+    const bool first_segment = i == 0, last_segment = i + 2 == count;
+    // The keyframes the segment uses: its ends and, for the control points, their neighbours.
+    QUAT_ASSERT(detail::is_near_unit(rotation[first_segment ? i : i - 1]) &&
+                    detail::is_near_unit(rotation[i]) && detail::is_near_unit(rotation[i + 1]) &&
+                    detail::is_near_unit(rotation[last_segment ? i + 1 : i + 2]),
+                "quat::keyframe_squad: a rotation is not a unit quaternion");
+    const T start = at(i), end = at(i + 1), duration = end - start;
+    const quaternion<T> control_start =
+        first_segment
+            ? rotation[i]
+            : detail::skewed_squad_control(rotation[i - 1], rotation[i], rotation[i + 1],
+                                           detail::duration_skew(start - at(i - 1), duration));
+    const quaternion<T> control_end =
+        last_segment
+            ? rotation[i + 1]
+            : detail::skewed_squad_control(rotation[i], rotation[i + 1], rotation[i + 2],
+                                           detail::duration_skew(duration, at(i + 2) - end));
+    return squad(rotation[i], control_start, control_end, rotation[i + 1], (t - start) / duration);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_PATHS_KEYFRAME_SQUAD_HPP_INCLUDED
+// ---- end quat/paths/keyframe_squad.hpp ----
+// ---- begin quat/paths/rotation_spline.hpp ----
 // A C2-continuous rotation spline through keyframes: scipy's RotationSpline, solved to convergence.
-#ifndef QUAT_ROTATION_SPLINE_HPP_INCLUDED
-#define QUAT_ROTATION_SPLINE_HPP_INCLUDED
+#ifndef QUAT_PATHS_ROTATION_SPLINE_HPP_INCLUDED
+#define QUAT_PATHS_ROTATION_SPLINE_HPP_INCLUDED
 
 #include <cstddef>
 #include <limits>
@@ -7638,153 +7629,7 @@ template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range
 #include <type_traits>
 #include <vector>
 
-// ---- begin quat/detail/block_tridiagonal.hpp ----
-// 3x3 matrices and the block tridiagonal solve behind rotation_spline's rates.
-#ifndef QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
-#define QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
-
-#include <cstddef>
-
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-template <class T>
-struct matrix3 {
-    T m[3][3];
-};
-
-/// a I + b [r]x + c [r]x^2, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I.
-template <class T>
-[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
-    const T v[3] = {r.x, r.y, r.z};
-    const T n2 = squared_norm(r);
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = c * v[i] * v[j];
-    for (int i = 0; i < 3; ++i) result.m[i][i] += a - c * n2;
-    result.m[0][1] -= b * v[2];
-    result.m[0][2] += b * v[1];
-    result.m[1][0] += b * v[2];
-    result.m[1][2] -= b * v[0];
-    result.m[2][0] -= b * v[1];
-    result.m[2][1] += b * v[0];
-    return result;
-}
-
-/// u v^T
-template <class T>
-[[nodiscard]] constexpr matrix3<T> outer(const vec3<T>& u, const vec3<T>& v) noexcept {
-    return {{{u.x * v.x, u.x * v.y, u.x * v.z},
-             {u.y * v.x, u.y * v.y, u.y * v.z},
-             {u.z * v.x, u.z * v.y, u.z * v.z}}};
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator+(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] + b.m[i][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator-(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] - b.m[i][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, T s) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] * s;
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            result.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& a, const vec3<T>& v) noexcept {
-    return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
-            a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
-            a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
-}
-
-/// The inverse by cofactors; the blocks it is used on are diagonally dominant.
-template <class T>
-[[nodiscard]] constexpr matrix3<T> inverse(const matrix3<T>& a) noexcept {
-    const auto& m = a.m;
-    matrix3<T> c{{{m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2],
-                   m[0][1] * m[1][2] - m[0][2] * m[1][1]},
-                  {m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
-                   m[0][2] * m[1][0] - m[0][0] * m[1][2]},
-                  {m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1],
-                   m[0][0] * m[1][1] - m[0][1] * m[1][0]}}};
-    const T determinant = m[0][0] * c.m[0][0] + m[0][1] * c.m[1][0] + m[0][2] * c.m[2][0];
-    return c * (T(1) / determinant);
-}
-
-/// Solves the block tridiagonal system lower(k) x(k-1) + diagonal(k) x(k) + upper(k) x(k+1) = b(k)
-/// for k in [0, count), with b coming in x(k) and the solution going out there, by block Gaussian
-/// elimination without pivoting (the block Thomas algorithm), stable for block diagonally dominant
-/// systems. lower and upper return blocks by value, diagonal and x references to storage that is
-/// overwritten; lower(0) and upper(count - 1) are not called. count >= 1.
-template <class Lower, class Diagonal, class Upper, class X>
-constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal diagonal,
-                                       Upper upper, X x) noexcept {
-    for (std::size_t k = 0; k < count; ++k) {
-        if (k > 0) {
-            const auto factor = lower(k) * diagonal(k - 1);  // diagonal(k - 1) is inverted
-            diagonal(k) = diagonal(k) - factor * upper(k - 1);
-            x(k) -= factor * x(k - 1);
-        }
-        diagonal(k) = inverse(diagonal(k));
-    }
-    x(count - 1) = diagonal(count - 1) * x(count - 1);
-    for (std::size_t k = count - 1; k-- > 0;) x(k) = diagonal(k) * (x(k) - upper(k) * x(k + 1));
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
-// ---- end quat/detail/block_tridiagonal.hpp ----
-// ---- begin quat/detail/rotation_vector_jacobian.hpp ----
+// ---- begin quat/lie/detail/rotation_vector_jacobian.hpp ----
 // Derivatives of the exponential map of rotation vectors: how a rotation vector's rate of change
 // turns into an angular velocity, back, and the term its second derivative adds to an angular
 // acceleration. For R(t) = R0 exp([r(t)]x) the body angular velocity is J(r) r' and the angular
@@ -7800,8 +7645,8 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
 // a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
 // only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
 // f(n) = f(n n, n), are those rotation_spline.hpp calls.
-#ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
-#define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#ifndef QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#define QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
 #include <limits>
 #include <type_traits>
@@ -8067,8 +7912,154 @@ template <class T>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
-// ---- end quat/detail/rotation_vector_jacobian.hpp ----
+#endif  // QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+// ---- end quat/lie/detail/rotation_vector_jacobian.hpp ----
+// ---- begin quat/paths/detail/block_tridiagonal.hpp ----
+// 3x3 matrices and the block tridiagonal solve behind rotation_spline's rates.
+#ifndef QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+#define QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+
+#include <cstddef>
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+template <class T>
+struct matrix3 {
+    T m[3][3];
+};
+
+/// a I + b [r]x + c [r]x^2, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
+    const T v[3] = {r.x, r.y, r.z};
+    const T n2 = squared_norm(r);
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = c * v[i] * v[j];
+    for (int i = 0; i < 3; ++i) result.m[i][i] += a - c * n2;
+    result.m[0][1] -= b * v[2];
+    result.m[0][2] += b * v[1];
+    result.m[1][0] += b * v[2];
+    result.m[1][2] -= b * v[0];
+    result.m[2][0] -= b * v[1];
+    result.m[2][1] += b * v[0];
+    return result;
+}
+
+/// u v^T
+template <class T>
+[[nodiscard]] constexpr matrix3<T> outer(const vec3<T>& u, const vec3<T>& v) noexcept {
+    return {{{u.x * v.x, u.x * v.y, u.x * v.z},
+             {u.y * v.x, u.y * v.y, u.y * v.z},
+             {u.z * v.x, u.z * v.y, u.z * v.z}}};
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator+(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] + b.m[i][j];
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator-(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] - b.m[i][j];
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, T s) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] * s;
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, const matrix3<T>& b) noexcept {
+    matrix3<T> result{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            result.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+    return result;
+}
+
+template <class T>
+[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& a, const vec3<T>& v) noexcept {
+    return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
+            a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
+            a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
+}
+
+/// The inverse by cofactors; the blocks it is used on are diagonally dominant.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> inverse(const matrix3<T>& a) noexcept {
+    const auto& m = a.m;
+    matrix3<T> c{{{m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2],
+                   m[0][1] * m[1][2] - m[0][2] * m[1][1]},
+                  {m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
+                   m[0][2] * m[1][0] - m[0][0] * m[1][2]},
+                  {m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1],
+                   m[0][0] * m[1][1] - m[0][1] * m[1][0]}}};
+    const T determinant = m[0][0] * c.m[0][0] + m[0][1] * c.m[1][0] + m[0][2] * c.m[2][0];
+    return c * (T(1) / determinant);
+}
+
+/// Solves the block tridiagonal system lower(k) x(k-1) + diagonal(k) x(k) + upper(k) x(k+1) = b(k)
+/// for k in [0, count), with b coming in x(k) and the solution going out there, by block Gaussian
+/// elimination without pivoting (the block Thomas algorithm), stable for block diagonally dominant
+/// systems. lower and upper return blocks by value, diagonal and x references to storage that is
+/// overwritten; lower(0) and upper(count - 1) are not called. count >= 1.
+template <class Lower, class Diagonal, class Upper, class X>
+constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal diagonal,
+                                       Upper upper, X x) noexcept {
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k > 0) {
+            const auto factor = lower(k) * diagonal(k - 1);  // diagonal(k - 1) is inverted
+            diagonal(k) = diagonal(k) - factor * upper(k - 1);
+            x(k) -= factor * x(k - 1);
+        }
+        diagonal(k) = inverse(diagonal(k));
+    }
+    x(count - 1) = diagonal(count - 1) * x(count - 1);
+    for (std::size_t k = count - 1; k-- > 0;) x(k) = diagonal(k) * (x(k) - upper(k) * x(k + 1));
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+// ---- end quat/paths/detail/block_tridiagonal.hpp ----
 
 namespace quat {
 
@@ -8490,234 +8481,17 @@ bool rotation_spline<T>::build() {
 
 }  // namespace quat
 
-#endif  // QUAT_ROTATION_SPLINE_HPP_INCLUDED
-// ---- end quat/rotation_spline.hpp ----
-// ---- begin quat/sclerp.hpp ----
-// Screw linear interpolation (ScLERP) between rigid motions: the constant-velocity screw motion,
-// the rigid-motion counterpart of slerp.
-#ifndef QUAT_SCLERP_HPP_INCLUDED
-#define QUAT_SCLERP_HPP_INCLUDED
-
-#include <limits>
-#include <type_traits>
-
-
-namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// Screw linear interpolation from unit a (t = 0) to unit b (t = 1): a (a^-1 b)^t, the motion at
-/// constant screw velocity, so the angle about the screw axis and the slide along it grow linearly
-/// in t; equal to the matrix form a exp(t log(a^-1 b)) of the 4x4 transforms. Takes the shorter
-/// path (relative angle in [0, pi], as slerp does); t outside [0, 1] extrapolates along the same
-/// screw. Returns a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar,
-/// which may carry derivatives, to rounding). Stable for equal and nearly equal rotations (a pure
-/// or nearly pure translation) and near half turns: no division by the sine of a small angle.
-/// Precondition: unit a and b (debug-checked real parts); NaN or infinite input gives a non-finite
-/// result.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> sclerp(const dual_quaternion<T>& a,
-                                                  const dual_quaternion<T>& b,
-                                                  detail::type_identity_t<T> t) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(a.real) && detail::is_near_unit(b.real),
-                "quat::sclerp: a or b is not a unit dual quaternion");
-    const dual_quaternion<T> near = dot(a.real, b.real) < T(0) ? -b : b;
-    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a bad other end visible.
-    // Not for a user scalar, whose t may carry a derivative that a constant would drop.
-    if constexpr (std::is_floating_point_v<T>) {
-        if (t == T(0)) return {a.real + (near.real - near.real), a.dual + (near.dual - near.dual)};
-        if (t == T(1)) return {near.real + (a.real - a.real), near.dual + (a.dual - a.dual)};
-    }
-
-    // The relative motion a^-1 near: rotation r (w >= 0, formed accurately for nearly equal
-    // rotations) and translation u, both in a's frame.
-    const quaternion<T> r = detail::relative_rotation<true>(a.real, near.real);
-    const vec3<T> u = rotate(conjugate(a.real), translation_of(near) - translation_of(a));
-    const vec3<T> v{r.x, r.y, r.z};
-    const T s2 = squared_norm(v), s = norm(v);
-    // Everything below is written with v and |v|^2, never the axis v / |v|, and with series
-    // where h, half the relative angle, is small (|v| is read only where it is not): accurate for
-    // tiny h (a pure or nearly pure translation), and a dual-number scalar gets finite derivatives
-    // at h = 0. hs = h / |v|, by atan's series near h = 0 (w = 0, a half turn, is left to atan2,
-    // also in constant evaluation, where 1 / 0 is an error).
-    T hs{}, cosine{}, sine_over_s{};  // h / |v|, cos(t h), sin(t h) / |v|
-    T inverse2{};                     // 1 / |v|^2 where h is not small, else 0
-    if (detail::atan_series_suffices(s2, r.w)) {
-        hs = detail::atan_ratio_series(s2 / (r.w * r.w)) / r.w;
-        const detail::cos_and_sinc<T> turn_t = detail::cos_sinc(t * t * hs * hs * s2, t * hs * s);
-        cosine = turn_t.cos;
-        sine_over_s = t * hs * turn_t.sinc;
-    } else {
-        const T h = detail::atan2(s, r.w), inverse = T(1) / s;
-        hs = h * inverse;
-        cosine = detail::cos(t * h);
-        sine_over_s = detail::sin(t * h) * inverse;
-        inverse2 = inverse * inverse;
-    }
-    const T h2 = hs * hs * s2;
-    // The screw moves u to (A I + B [l]x + (t - A) l l^T) u, l the axis, with A + i B =
-    // sin(t h) / sin(h) e^{i (t - 1) h}: the ratio (1 - e^{i t 2h}) / (1 - e^{i 2h}) by which
-    // (I - R) scales the plane across the axis, while the slide along l is t times u's. With
-    // l = v / |v|, sin(h) = |v| / |r| and cos(h) = w / |r|: A = (sin(t h) / |v|)(cos(t h) w +
-    // sin(t h) |v|), B l = (B / |v|) v and (t - A) l l^T = ((t - A) / |v|^2) v v^T.
-    const T across_cos = sine_over_s * (cosine * r.w + sine_over_s * s2);    // A
-    const T across_sin_over_s = sine_over_s * (sine_over_s * r.w - cosine);  // B / |v|
-    // (t - A) / |v|^2 = m D |r| hs^3 / 2, m = 2t - 1, D = (sinc(h) - sinc(m h)) / h^2, which
-    // cancels in closed form for small h: its series while the first omitted term,
-    // h^6 (m^8 - 1) / 362880, is below epsilon relative to D (at most g^6 / 15120 of it).
-    const T m = t + t - T(1), m2 = m * m;
-    const T g2 = h2 * detail::max(T(1), m2);
-    T slide{};
-    if (g2 * g2 * g2 < T(15120) * detail::epsilon<T>()) {
-        const T d = (m2 - T(1)) / T(6) - h2 * (m2 * m2 - T(1)) / T(120) +
-                    h2 * h2 * (m2 * m2 * m2 - T(1)) / T(5040);
-        slide = m * d * norm(r) * hs * hs * hs / T(2);
-    } else {
-        // (The division only where h is tiny but |t| beyond about 50.)
-        slide = (t - across_cos) * (inverse2 > T(0) ? inverse2 : T(1) / s2);
-    }
-    const vec3<T> moved =
-        u * across_cos + cross(v, u) * across_sin_over_s + v * (dot(v, u) * slide);
-    const vec3<T> turn = v * sine_over_s;
-    return a * to_dual_quaternion(quaternion<T>{cosine, turn.x, turn.y, turn.z}, moved);
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_SCLERP_HPP_INCLUDED
-// ---- end quat/sclerp.hpp ----
-// ---- begin quat/screw.hpp ----
-// Screw parameters of rigid motions: every rigid motion turns about one axis line and slides along
-// it (Chasles' theorem). The form sclerp interpolates in, and the one to read a motion in.
-#ifndef QUAT_SCREW_HPP_INCLUDED
-#define QUAT_SCREW_HPP_INCLUDED
-
-
-namespace quat {
-
-/// A screw motion: a turn by `angle` radians (counter-clockwise about `direction`) about the line
-/// with unit `direction` and `moment` = p x direction for any point p on it, together with a slide
-/// of `displacement` along `direction`. The line's point nearest the origin is direction x moment.
-template <class T>
-struct screw {
-    vec3<T> direction;  ///< Unit direction of the axis line.
-    vec3<T> moment;  ///< p x direction for a point p on the line; zero when it passes the origin.
-    T angle;         ///< Turn about the line, radians.
-    T displacement;  ///< Slide along direction.
-};
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-/// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
-/// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
-/// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
-/// moment: its axis lies far away, and where that is beyond max() (a slide across the axis of more
-/// than about max() times half the angle, as for a subnormal angle) the moment is infinite; a
-/// slide along the axis gives a zero moment at any angle. Precondition: unit dq; a NaN or infinite
-/// component gives NaN in the result.
-template <class T>
-[[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
-    const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
-    const vec3<T> t = translation_of(near);
-    const vec3<T> v{near.real.x, near.real.y, near.real.z};
-    const T s = norm(v);
-    if (s == T(0)) {
-        const T length = norm(t);
-        const vec3<T> direction = length > T(0) ? t / length : vec3<T>{T(1), T(0), T(0)};
-        return {direction, vec3<T>{T(0), T(0), T(0)}, T(0), length};
-    }
-    const vec3<T> l = normalize(v);  // not v / s, which is not unit when v is subnormal
-    const T displacement = dot(t, l);
-    // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
-    // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
-    // across w / s, not across (w / s): w / s overflows for a tiny angle even where across is 0.
-    // across = l x (t x l), from t x v with v and t scaled by powers of two (exact, so v still
-    // lies along the axis) and compensated products: it is exactly zero for a t along v, where
-    // t - l (t . l) keeps |t| eps from the rounding of l, which cot(h) turns into an infinite
-    // moment when the angle is subnormal.
-    const vec3<T> axis = detail::scaled_by_power_of_two(v);
-    const T size = detail::binade_or_one(detail::largest_magnitude(t));
-    const vec3<T> t_cross_axis = detail::accurate_cross(t / size, axis);  // (t x v) / |v| / size
-    const T axis_squared = squared_norm(axis);
-    const vec3<T> across = cross(axis, t_cross_axis) * (size / axis_squared);
-    const vec3<T> moment =
-        (t_cross_axis * (size / detail::sqrt(axis_squared)) + across * near.real.w / s) * T(0.5);
-    return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
-}
-
-/// The unit dual quaternion of the screw motion s: real part (cos(h), sin(h) direction) and dual
-/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement / 2.
-/// from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion).
-/// Precondition: unit direction, and moment orthogonal to it.
-template <class T>
-[[nodiscard]] constexpr dual_quaternion<T> from_screw(const screw<T>& s) noexcept {
-    const T h = s.angle * T(0.5), d = s.displacement * T(0.5);
-    const T c = detail::cos(h), sn = detail::sin(h);
-    const vec3<T> real = s.direction * sn;
-    const vec3<T> dual = s.moment * sn + s.direction * (d * c);
-    return {quaternion<T>{c, real.x, real.y, real.z},
-            quaternion<T>{-d * sn, dual.x, dual.y, dual.z}};
-}
-}  // inline namespace isa_...
-
-}  // namespace quat
-
-#endif  // QUAT_SCREW_HPP_INCLUDED
-// ---- end quat/screw.hpp ----
-// ---- begin quat/slerp_fast.hpp ----
+#endif  // QUAT_PATHS_ROTATION_SPLINE_HPP_INCLUDED
+// ---- end quat/paths/rotation_spline.hpp ----
+// ---- begin quat/paths/slerp_fast.hpp ----
 // Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
 // much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
 // of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
 // double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
 // rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6 samples by
 // `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
-#ifndef QUAT_SLERP_FAST_HPP_INCLUDED
-#define QUAT_SLERP_FAST_HPP_INCLUDED
+#ifndef QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
+#define QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
 
 #include <type_traits>
 
@@ -8851,25 +8625,247 @@ template <class T>
 
 }  // namespace quat
 
-#endif  // QUAT_SLERP_FAST_HPP_INCLUDED
-// ---- end quat/slerp_fast.hpp ----
-// ---- begin quat/swing_twist.hpp ----
-// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
-#ifndef QUAT_SWING_TWIST_HPP_INCLUDED
-#define QUAT_SWING_TWIST_HPP_INCLUDED
+#endif  // QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
+// ---- end quat/paths/slerp_fast.hpp ----
 
-#include <limits>
-#include <optional>
+#endif  // QUAT_PATHS_HPP_INCLUDED
+// ---- end quat/paths.hpp ----
+// ---- begin quat/rigid.hpp ----
+// The rigid-motion family, x -> R x + t: dual quaternions, homogeneous matrices, screw parameters,
+// screw interpolation (sclerp) and dual-quaternion blending. Included by quat.hpp.
+#ifndef QUAT_RIGID_HPP_INCLUDED
+#define QUAT_RIGID_HPP_INCLUDED
+
+// ---- begin quat/rigid/blend.hpp ----
+// Dual-quaternion linear blending of rigid motions (Kavan, Collins, Zara and O'Sullivan, "Skinning
+// with dual quaternions", I3D 2007): skinning without the collapse of blended matrices.
+#ifndef QUAT_RIGID_BLEND_HPP_INCLUDED
+#define QUAT_RIGID_BLEND_HPP_INCLUDED
+
+#include <cstddef>
 
 
 namespace quat {
 
-/// Result of swing_twist: q == swing * twist as rotations (the twist applied first), twist a
-/// rotation about the given axis, swing a rotation about an axis perpendicular to it.
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+
+/// Dual-quaternion linear blending: the sum of weights[i] transforms[i], each term's sign taken so
+/// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
+/// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
+/// twisted by 180 degrees keeps its volume. Weights (scalars convertible to T) need not sum to 1:
+/// they are divided by the largest |weight| first and normalization removes the scale, so any finite
+/// size works, subnormal to max(); they may be negative. Preconditions: unit real parts (QUAT_ASSERT;
+/// unchecked, longer ones count more); a zero blended real part (count 0, zero weights, or weights
+/// cancelling), a NaN or infinite weight or component gives NaN in every component.
+template <class T, class Weight>
+[[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
+                                                 const Weight* weights,
+                                                 std::size_t count) noexcept {
+    T largest = T(0);
+    for (std::size_t i = 0; i < count; ++i) {
+        QUAT_ASSERT(detail::is_near_unit(transforms[i].real),
+                    "quat::blend: a transform's real part is not a unit quaternion");
+        const T w = static_cast<T>(weights[i]), size = w < T(0) ? -w : w;
+        largest = size > largest || !(size == size) ? size : largest;
+    }
+    // A NaN or infinite largest weight propagates as NaN: inf / inf.
+    const T scale = largest > T(0) ? largest : T(1);
+    quaternion<T> real{T(0), T(0), T(0), T(0)}, dual{T(0), T(0), T(0), T(0)};
+    for (std::size_t i = 0; i < count; ++i) {
+        const T scaled = static_cast<T>(weights[i]) / scale;
+        const T w = dot(transforms[i].real, transforms[0].real) < T(0) ? -scaled : scaled;
+        real += transforms[i].real * w;
+        dual += transforms[i].dual * w;
+    }
+    const dual_quaternion<T> result = normalize(dual_quaternion<T>{real, dual});
+    // NaN in every component when any is not finite: a NaN translation beside a finite rotation
+    // would pass for half a result.
+    const T parts[8] = {result.real.w, result.real.x, result.real.y, result.real.z,
+                        result.dual.w, result.dual.x, result.dual.y, result.dual.z};
+    for (const T& part : parts)
+        if (!detail::is_finite(part)) {
+            const T nan = detail::quiet_nan<T>();
+            return {{nan, nan, nan, nan}, {nan, nan, nan, nan}};
+        }
+    return result;
+}
+
+/// blend over contiguous containers (std::vector, std::array, std::span, C arrays) of
+/// dual_quaternion<T> and of scalars convertible to T (the precision is the transforms').
+/// Precondition: equal sizes (QUAT_ASSERT); unchecked, other sizes blend as count 0: NaN.
+template <class Transforms, class Weights,
+          class T = detail::element_scalar_t<dual_quaternion, Transforms>>
+[[nodiscard]] constexpr dual_quaternion<T> blend(const Transforms& transforms,
+                                                 const Weights& weights) noexcept {
+    QUAT_ASSERT(detail::same_size(transforms, weights),
+                "quat::blend: transforms and weights differ in size");
+    return blend(detail::data_of(transforms), detail::data_of(weights),
+                 detail::same_size(transforms, weights) ? detail::size_of(weights) : 0);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_RIGID_BLEND_HPP_INCLUDED
+// ---- end quat/rigid/blend.hpp ----
+// ---- begin quat/rigid/sclerp.hpp ----
+// Screw linear interpolation (ScLERP) between rigid motions: the constant-velocity screw motion,
+// the rigid-motion counterpart of slerp.
+#ifndef QUAT_RIGID_SCLERP_HPP_INCLUDED
+#define QUAT_RIGID_SCLERP_HPP_INCLUDED
+
+#include <limits>
+#include <type_traits>
+
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+/// Screw linear interpolation from unit a (t = 0) to unit b (t = 1): a (a^-1 b)^t, the motion at
+/// constant screw velocity, so the angle about the screw axis and the slide along it grow linearly
+/// in t; equal to the matrix form a exp(t log(a^-1 b)) of the 4x4 transforms. Takes the shorter
+/// path (relative angle in [0, pi], as slerp does); t outside [0, 1] extrapolates along the same
+/// screw. Returns a at t = 0 and b, or -b when -b is nearer a, at t = 1, exactly (a user scalar,
+/// which may carry derivatives, to rounding). Stable for equal and nearly equal rotations (a pure
+/// or nearly pure translation) and near half turns: no division by the sine of a small angle.
+/// Precondition: unit a and b (debug-checked real parts); NaN or infinite input gives a non-finite
+/// result.
 template <class T>
-struct swing_twist_parts {
-    quaternion<T> swing;  ///< The rotation about an axis perpendicular to the given axis.
-    quaternion<T> twist;  ///< The rotation about the given axis.
+[[nodiscard]] constexpr dual_quaternion<T> sclerp(const dual_quaternion<T>& a,
+                                                  const dual_quaternion<T>& b,
+                                                  detail::type_identity_t<T> t) noexcept {
+    QUAT_ASSERT(detail::is_near_unit(a.real) && detail::is_near_unit(b.real),
+                "quat::sclerp: a or b is not a unit dual quaternion");
+    const dual_quaternion<T> near = dot(a.real, b.real) < T(0) ? -b : b;
+    // Exact ends; adding x - x (zero when finite, NaN otherwise) keeps a bad other end visible.
+    // Not for a user scalar, whose t may carry a derivative that a constant would drop.
+    if constexpr (std::is_floating_point_v<T>) {
+        if (t == T(0)) return {a.real + (near.real - near.real), a.dual + (near.dual - near.dual)};
+        if (t == T(1)) return {near.real + (a.real - a.real), near.dual + (a.dual - a.dual)};
+    }
+
+    // The relative motion a^-1 near: rotation r (w >= 0, formed accurately for nearly equal
+    // rotations) and translation u, both in a's frame.
+    const quaternion<T> r = detail::relative_rotation<true>(a.real, near.real);
+    const vec3<T> u = rotate(conjugate(a.real), translation_of(near) - translation_of(a));
+    const vec3<T> v{r.x, r.y, r.z};
+    const T s2 = squared_norm(v), s = norm(v);
+    // Everything below is written with v and |v|^2, never the axis v / |v|, and with series
+    // where h, half the relative angle, is small (|v| is read only where it is not): accurate for
+    // tiny h (a pure or nearly pure translation), and a dual-number scalar gets finite derivatives
+    // at h = 0. hs = h / |v|, by atan's series near h = 0 (w = 0, a half turn, is left to atan2,
+    // also in constant evaluation, where 1 / 0 is an error).
+    T hs{}, cosine{}, sine_over_s{};  // h / |v|, cos(t h), sin(t h) / |v|
+    T inverse2{};                     // 1 / |v|^2 where h is not small, else 0
+    if (detail::atan_series_suffices(s2, r.w)) {
+        hs = detail::atan_ratio_series(s2 / (r.w * r.w)) / r.w;
+        const detail::cos_and_sinc<T> turn_t = detail::cos_sinc(t * t * hs * hs * s2, t * hs * s);
+        cosine = turn_t.cos;
+        sine_over_s = t * hs * turn_t.sinc;
+    } else {
+        const T h = detail::atan2(s, r.w), inverse = T(1) / s;
+        hs = h * inverse;
+        cosine = detail::cos(t * h);
+        sine_over_s = detail::sin(t * h) * inverse;
+        inverse2 = inverse * inverse;
+    }
+    const T h2 = hs * hs * s2;
+    // The screw moves u to (A I + B [l]x + (t - A) l l^T) u, l the axis, with A + i B =
+    // sin(t h) / sin(h) e^{i (t - 1) h}: the ratio (1 - e^{i t 2h}) / (1 - e^{i 2h}) by which
+    // (I - R) scales the plane across the axis, while the slide along l is t times u's. With
+    // l = v / |v|, sin(h) = |v| / |r| and cos(h) = w / |r|: A = (sin(t h) / |v|)(cos(t h) w +
+    // sin(t h) |v|), B l = (B / |v|) v and (t - A) l l^T = ((t - A) / |v|^2) v v^T.
+    const T across_cos = sine_over_s * (cosine * r.w + sine_over_s * s2);    // A
+    const T across_sin_over_s = sine_over_s * (sine_over_s * r.w - cosine);  // B / |v|
+    // (t - A) / |v|^2 = m D |r| hs^3 / 2, m = 2t - 1, D = (sinc(h) - sinc(m h)) / h^2, which
+    // cancels in closed form for small h: its series while the first omitted term,
+    // h^6 (m^8 - 1) / 362880, is below epsilon relative to D (at most g^6 / 15120 of it).
+    const T m = t + t - T(1), m2 = m * m;
+    const T g2 = h2 * detail::max(T(1), m2);
+    T slide{};
+    if (g2 * g2 * g2 < T(15120) * detail::epsilon<T>()) {
+        const T d = (m2 - T(1)) / T(6) - h2 * (m2 * m2 - T(1)) / T(120) +
+                    h2 * h2 * (m2 * m2 * m2 - T(1)) / T(5040);
+        slide = m * d * norm(r) * hs * hs * hs / T(2);
+    } else {
+        // (The division only where h is tiny but |t| beyond about 50.)
+        slide = (t - across_cos) * (inverse2 > T(0) ? inverse2 : T(1) / s2);
+    }
+    const vec3<T> moved =
+        u * across_cos + cross(v, u) * across_sin_over_s + v * (dot(v, u) * slide);
+    const vec3<T> turn = v * sine_over_s;
+    return a * to_dual_quaternion(quaternion<T>{cosine, turn.x, turn.y, turn.z}, moved);
+}
+}  // inline namespace isa_...
+
+}  // namespace quat
+
+#endif  // QUAT_RIGID_SCLERP_HPP_INCLUDED
+// ---- end quat/rigid/sclerp.hpp ----
+// ---- begin quat/rigid/screw.hpp ----
+// Screw parameters of rigid motions: every rigid motion turns about one axis line and slides along
+// it (Chasles' theorem). The form sclerp interpolates in, and the one to read a motion in.
+#ifndef QUAT_RIGID_SCREW_HPP_INCLUDED
+#define QUAT_RIGID_SCREW_HPP_INCLUDED
+
+
+namespace quat {
+
+/// A screw motion: a turn by `angle` radians (counter-clockwise about `direction`) about the line
+/// with unit `direction` and `moment` = p x direction for any point p on it, together with a slide
+/// of `displacement` along `direction`. The line's point nearest the origin is direction x moment.
+template <class T>
+struct screw {
+    vec3<T> direction;  ///< Unit direction of the axis line.
+    vec3<T> moment;  ///< p x direction for a point p on the line; zero when it passes the origin.
+    T angle;         ///< Turn about the line, radians.
+    T displacement;  ///< Slide along direction.
 };
 
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -8896,54 +8892,65 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// swing_twist for a unit axis, or std::nullopt where the twist is undefined.
+/// The screw of the unit dual quaternion dq, with angle in [0, pi] (dq and -dq give the same
+/// screw). A pure translation t gives angle 0, direction t / |t|, moment 0 and displacement |t|;
+/// the identity gives direction (1, 0, 0) and the rest 0. A nearly pure translation has a large
+/// moment: its axis lies far away, and where that is beyond max() (a slide across the axis of more
+/// than about max() times half the angle, as for a subnormal angle) the moment is infinite; a
+/// slide along the axis gives a zero moment at any angle. Precondition: unit dq; a NaN or infinite
+/// component gives NaN in the result.
 template <class T>
-[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist_unit(
-    const quaternion<T>& q, const vec3<T>& unit_axis) noexcept {
-    const T along = dot(vec3<T>{q.x, q.y, q.z}, unit_axis);
-    const T eps = detail::epsilon<T>();
-    if (q.w * q.w + along * along <= eps * eps) return std::nullopt;  // NaN goes on, to NaN parts
-    const vec3<T> v = unit_axis * along;
-    const quaternion<T> twist = normalize(quaternion<T>{q.w, v.x, v.y, v.z});
-    return swing_twist_parts<T>{q * conjugate(twist), twist};
+[[nodiscard]] constexpr screw<T> to_screw(const dual_quaternion<T>& dq) noexcept {
+    const dual_quaternion<T> near = dq.real.w < T(0) ? -dq : dq;
+    const vec3<T> t = translation_of(near);
+    const vec3<T> v{near.real.x, near.real.y, near.real.z};
+    const T s = norm(v);
+    if (s == T(0)) {
+        const T length = norm(t);
+        const vec3<T> direction = length > T(0) ? t / length : vec3<T>{T(1), T(0), T(0)};
+        return {direction, vec3<T>{T(0), T(0), T(0)}, T(0), length};
+    }
+    const vec3<T> l = normalize(v);  // not v / s, which is not unit when v is subnormal
+    const T displacement = dot(t, l);
+    // The part of t across the axis is (I - R) p for the axis point p nearest the origin; with h
+    // half the angle, p = (across + cot(h) l x t) / 2 solves it, and p x l is the moment below.
+    // across w / s, not across (w / s): w / s overflows for a tiny angle even where across is 0.
+    // across = l x (t x l), from t x v with v and t scaled by powers of two (exact, so v still
+    // lies along the axis) and compensated products: it is exactly zero for a t along v, where
+    // t - l (t . l) keeps |t| eps from the rounding of l, which cot(h) turns into an infinite
+    // moment when the angle is subnormal.
+    const vec3<T> axis = detail::scaled_by_power_of_two(v);
+    const T size = detail::binade_or_one(detail::largest_magnitude(t));
+    const vec3<T> t_cross_axis = detail::accurate_cross(t / size, axis);  // (t x v) / |v| / size
+    const T axis_squared = squared_norm(axis);
+    const vec3<T> across = cross(axis, t_cross_axis) * (size / axis_squared);
+    const vec3<T> moment =
+        (t_cross_axis * (size / detail::sqrt(axis_squared)) + across * near.real.w / s) * T(0.5);
+    return {l, moment, T(2) * detail::atan2(s, near.real.w), displacement};
 }
 
-}  // namespace detail
-
-/// Splits the unit rotation q into swing * twist (twist applied first): twist =
-/// normalize(w, (v . a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis
-/// perpendicular to a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of
-/// Unreal's FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the
-/// twist is undefined) the twist is the identity and the swing is q. Preconditions: unit q and a
-/// non-zero finite axis of any length (NaN results otherwise); try_swing_twist checks them.
+/// The unit dual quaternion of the screw motion s: real part (cos(h), sin(h) direction) and dual
+/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement / 2.
+/// from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion).
+/// Precondition: unit direction, and moment orthogonal to it.
 template <class T>
-[[nodiscard]] constexpr swing_twist_parts<T> swing_twist(const quaternion<T>& q,
-                                                         const vec3<T>& axis) noexcept {
-    QUAT_ASSERT(detail::is_near_unit(q), "quat::swing_twist: q is not a unit quaternion");
-    return detail::try_swing_twist_unit(q, normalize(axis))
-        .value_or(swing_twist_parts<T>{q, quaternion<T>::identity()});
+[[nodiscard]] constexpr dual_quaternion<T> from_screw(const screw<T>& s) noexcept {
+    const T h = s.angle * T(0.5), d = s.displacement * T(0.5);
+    const T c = detail::cos(h), sn = detail::sin(h);
+    const vec3<T> real = s.direction * sn;
+    const vec3<T> dual = s.moment * sn + s.direction * (d * c);
+    return {quaternion<T>{c, real.x, real.y, real.z},
+            quaternion<T>{-d * sn, dual.x, dual.y, dual.z}};
 }
-
-/// swing_twist(q, axis), or std::nullopt where the twist is undefined (w^2 + (v . a)^2 <=
-/// epsilon^2), when q is not a unit quaternion (|q|^2 off 1 by more than 1/4096, the debug check of
-/// swing_twist), when the axis is zero, or when q or the axis has a NaN or infinite component.
-/// Never asserts: the path for untrusted input.
-template <class T>
-[[nodiscard]] constexpr std::optional<swing_twist_parts<T>> try_swing_twist(
-    const quaternion<T>& q, const vec3<T>& axis) noexcept {
-    const std::optional<vec3<T>> unit_axis = try_normalize(axis);
-    if (!unit_axis || !detail::is_finite(q) || !detail::is_near_unit(q)) return std::nullopt;
-    return detail::try_swing_twist_unit(q, *unit_axis);
-}
-
 }  // inline namespace isa_...
 
 }  // namespace quat
 
-#endif  // QUAT_SWING_TWIST_HPP_INCLUDED
-// ---- end quat/swing_twist.hpp ----
+#endif  // QUAT_RIGID_SCREW_HPP_INCLUDED
+// ---- end quat/rigid/screw.hpp ----
+
+#endif  // QUAT_RIGID_HPP_INCLUDED
+// ---- end quat/rigid.hpp ----
 
 #endif  // QUAT_QUAT_HPP_INCLUDED
 // ---- end quat/quat.hpp ----

@@ -14,10 +14,10 @@
     ((condition) ? void(0)              \
                  : (std::fprintf(stderr, "%s\n", message), std::fflush(stderr), std::_Exit(3)))
 
-#include <quat/align_points.hpp>
-#include <quat/geodesic_mean.hpp>
-#include <quat/hand_eye.hpp>
+#include <quat/lie/geodesic_mean.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The other order: the vendored single header first, then quat's own headers.
 #include "../../single_include/quat/quat.hpp"
 
-#include <quat/batch.hpp>
+#include <quat/batch/rotations.hpp>
 #include <quat/euler.hpp>
 #include <quat/quat.hpp>
 

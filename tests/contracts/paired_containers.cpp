@@ -14,10 +14,10 @@
 #include <cstdio>
 #include <vector>
 
-#include <quat/align_points.hpp>
-#include <quat/geodesic_mean.hpp>
-#include <quat/hand_eye.hpp>
+#include <quat/lie/geodesic_mean.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 namespace {
 

@@ -27,10 +27,10 @@ static const char* quat_try_last_call = "";
          : (std::fprintf(stdout, "QUAT_ASSERT fired in %s: %s\n", quat_try_last_call, message), \
             std::fflush(stdout), std::abort()))
 
-#include <quat/align_points.hpp>
-#include <quat/geodesic_mean.hpp>
-#include <quat/hand_eye.hpp>
+#include <quat/lie/geodesic_mean.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 namespace {
 

@@ -11,10 +11,10 @@
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
-#include <quat/align_points.hpp>
-#include <quat/align_vectors.hpp>
+#include <quat/fitting/align_vectors.hpp>
 #include <quat/interop/ceres.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

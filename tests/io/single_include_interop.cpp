@@ -6,7 +6,7 @@
 #ifndef QUAT_TEST_FMT
 #define QUAT_TEST_FMT 0
 #endif
-#if __has_include(<quat/homogeneous_matrix.hpp>)
+#if __has_include(<quat/rigid/homogeneous_matrix.hpp>)
 #error "include/ is on the include path: this test must see single_include/ alone"
 #endif
 

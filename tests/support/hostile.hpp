@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include <quat/align_points.hpp>
-#include <quat/hand_eye.hpp>
+#include <quat/lie/se3.hpp>
 #include <quat/quat.hpp>
-#include <quat/se3.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "catch.hpp"
 

@@ -15,7 +15,7 @@
 #include <string>
 
 // so3.hpp for matrix<T, R, C>: the single-header layout has no matrix.hpp of its own.
-#include <quat/so3.hpp>
+#include <quat/lie/so3.hpp>
 
 #include "catch.hpp"
 

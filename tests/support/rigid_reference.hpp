@@ -9,9 +9,9 @@
 #include <cstddef>
 #include <utility>
 
-#include <quat/dual_quaternion.hpp>
-#include <quat/homogeneous_matrix.hpp>
-#include <quat/sclerp.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/sclerp.hpp>
 
 namespace quat::test {
 

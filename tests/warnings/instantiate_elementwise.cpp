@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include <quat/elementwise.hpp>
+#include <quat/batch/elementwise.hpp>
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <array>
 #include <vector>
 
-#include <quat/align_points.hpp>
-#include <quat/align_vectors.hpp>
-#include <quat/hand_eye.hpp>
-#include <quat/mean.hpp>
+#include <quat/fitting/align_vectors.hpp>
+#include <quat/fitting/mean.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 namespace {
 

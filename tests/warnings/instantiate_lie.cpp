@@ -4,10 +4,10 @@
 // not run, by the strict_warnings CTest test.
 #include <vector>
 
-#include <quat/geodesic_mean.hpp>
+#include <quat/lie/geodesic_mean.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/lie/so3.hpp>
 #include <quat/matrix.hpp>
-#include <quat/se3.hpp>
-#include <quat/so3.hpp>
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <random>
 
 #include <quat/conversions.hpp>
-#include <quat/interpolation.hpp>
 #include <quat/kinematics.hpp>
+#include <quat/paths/interpolation.hpp>
 #include <quat/random.hpp>
 #include <quat/swing_twist.hpp>
 

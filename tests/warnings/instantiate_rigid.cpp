@@ -4,12 +4,12 @@
 // run, by the strict_warnings CTest test.
 #include <vector>
 
-#include <quat/blend.hpp>
-#include <quat/dual_quaternion.hpp>
-#include <quat/homogeneous_matrix.hpp>
-#include <quat/rigid_batch.hpp>
-#include <quat/sclerp.hpp>
-#include <quat/screw.hpp>
+#include <quat/batch/rigid_motions.hpp>
+#include <quat/rigid/blend.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/sclerp.hpp>
+#include <quat/rigid/screw.hpp>
 
 namespace {
 

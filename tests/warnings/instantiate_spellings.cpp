@@ -8,11 +8,11 @@
 
 #include <quat/constants.hpp>
 #include <quat/conversions.hpp>
-#include <quat/dual_quaternion.hpp>
-#include <quat/homogeneous_matrix.hpp>
-#include <quat/interpolation.hpp>
-#include <quat/keyframe_squad.hpp>
+#include <quat/paths/interpolation.hpp>
+#include <quat/paths/keyframe_squad.hpp>
 #include <quat/quaternion.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
 #include <quat/rotation_matrix.hpp>
 #include <quat/vec3.hpp>
 

@@ -11,15 +11,15 @@
 #include <string>
 #include <vector>
 
-#include <quat/interpolation.hpp>
-#include <quat/slerp_fast.hpp>
+#include <quat/paths/interpolation.hpp>
+#include <quat/paths/slerp_fast.hpp>
 
 #include "measure.hpp"
 
 namespace accuracy {
 
 /// One member of the family and its documented bounds: rotation angle (rad) and | |r| - 1 |. The
-/// approximations' angle bounds are those of include/quat/slerp_fast.hpp, asserted by
+/// approximations' angle bounds are those of include/quat/paths/slerp_fast.hpp, asserted by
 /// tests/test_slerp_fast.cpp and quoted in the benchmark labels (bench/bench_other.cpp), and their
 /// lengths are unit to 4 eps (tests/support/tolerance.hpp's unit_norm) except slerp_fast's; the
 /// exact slerp's are issue 7's targets (4 eps angle, 2 eps length, as in main.cpp).

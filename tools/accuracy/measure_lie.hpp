@@ -23,8 +23,8 @@
 
 #include <Eigen/Geometry>
 
-#include <quat/se3.hpp>
-#include <quat/so3.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/lie/so3.hpp>
 
 #include "measure.hpp"
 

@@ -16,9 +16,9 @@
 
 #include <Eigen/Geometry>
 
-#include <quat/align_points.hpp>
-#include <quat/hand_eye.hpp>
 #include <quat/quat.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "measure.hpp"
 

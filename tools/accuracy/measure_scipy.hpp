@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include <quat/align_vectors.hpp>
-#include <quat/mean.hpp>
+#include <quat/fitting/align_vectors.hpp>
+#include <quat/fitting/mean.hpp>
 
 #include "data/scipy_reference.hpp"
 #include "measure_scipy_spline.hpp"

@@ -7,7 +7,6 @@
 #include <limits>
 #include <type_traits>
 
-#include "../vec3.hpp"
 #include "math.hpp"
 
 namespace quat {
@@ -63,16 +62,18 @@ template <class T>
 
 /// v divided by the power of two that brings its largest |component| into [1, 2): the same
 /// direction exactly, whatever v's length. Precondition: has_direction(v).
-template <class T>
-[[nodiscard]] constexpr vec3<T> scaled_by_power_of_two(const vec3<T>& v) noexcept {
-    return v / binade_of(largest_magnitude(v));
+/// Written for any vector with x, y and z (vec3 and autodiff vectors alike), so that this
+/// foundation header knows no type of quat's.
+template <class Vector>
+[[nodiscard]] constexpr Vector scaled_by_power_of_two(const Vector& v) noexcept {
+    return v / binade_of(max(max(abs(v.x), abs(v.y)), abs(v.z)));
 }
 
 /// a x b with each component from difference_of_products: relative error at most 2 units of
 /// roundoff per component, also where a and b are nearly parallel or opposite and the naive
 /// cross product keeps only rounding noise.
-template <class T>
-[[nodiscard]] constexpr vec3<T> accurate_cross(const vec3<T>& a, const vec3<T>& b) noexcept {
+template <class Vector>
+[[nodiscard]] constexpr Vector accurate_cross(const Vector& a, const Vector& b) noexcept {
     return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
             difference_of_products(a.x, b.y, a.y, b.x)};
 }

@@ -10,15 +10,15 @@
 #include <cstddef>
 #include <string_view>
 
-#include "../align_vectors.hpp"
 #include "../axis_angle.hpp"
-#include "../dual_quaternion.hpp"
 #include "../euler.hpp"
-#include "../homogeneous_matrix.hpp"
+#include "../fitting/align_vectors.hpp"
 #include "../matrix.hpp"
 #include "../quaternion.hpp"
+#include "../rigid/dual_quaternion.hpp"
+#include "../rigid/homogeneous_matrix.hpp"
+#include "../rigid/screw.hpp"
 #include "../rotation_matrix.hpp"
-#include "../screw.hpp"
 #include "../swing_twist.hpp"
 #include "../vec3.hpp"
 

@@ -25,10 +25,10 @@
 
 #include "../constants.hpp"
 #include "../conversions.hpp"
-#include "../dual_quaternion.hpp"
+#include "../lie/se3.hpp"
+#include "../lie/so3.hpp"
 #include "../quaternion.hpp"
-#include "../se3.hpp"
-#include "../so3.hpp"
+#include "../rigid/dual_quaternion.hpp"
 #include "../vec3.hpp"
 
 namespace quat {

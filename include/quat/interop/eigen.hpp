@@ -9,9 +9,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "../homogeneous_matrix.hpp"
 #include "../matrix.hpp"
 #include "../quaternion.hpp"
+#include "../rigid/homogeneous_matrix.hpp"
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
 

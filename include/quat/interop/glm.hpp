@@ -9,8 +9,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "../homogeneous_matrix.hpp"
 #include "../quaternion.hpp"
+#include "../rigid/homogeneous_matrix.hpp"
 #include "../rotation_matrix.hpp"
 #include "../vec3.hpp"
 

@@ -1,13 +1,13 @@
 // 3x3 matrices and the block tridiagonal solve behind rotation_spline's rates.
-#ifndef QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
-#define QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+#ifndef QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+#define QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
 
 #include <cstddef>
 
-#include "../vec3.hpp"
+#include "../../vec3.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 template <class T>
@@ -119,4 +119,4 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
+#endif  // QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED

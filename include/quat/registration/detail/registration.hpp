@@ -2,21 +2,21 @@
 // align_points.hpp: three passes over the points in blocks of struct-of-arrays form, so that the
 // sums vectorize, and, for data whose sizes the passes cannot take as they are, the same passes on
 // the centred data divided by powers of two.
-#ifndef QUAT_DETAIL_REGISTRATION_HPP_INCLUDED
-#define QUAT_DETAIL_REGISTRATION_HPP_INCLUDED
+#ifndef QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
+#define QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
 
 #include <cstddef>
 #include <optional>
 
-#include "../quaternion.hpp"
-#include "../rotation_matrix.hpp"
-#include "../vec3.hpp"
-#include "math.hpp"
-#include "power_of_two.hpp"
-#include "wahba.hpp"
+#include "../../detail/math.hpp"
+#include "../../detail/power_of_two.hpp"
+#include "../../fitting/detail/wahba.hpp"
+#include "../../quaternion.hpp"
+#include "../../rotation_matrix.hpp"
+#include "../../vec3.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // x -> scale R x + translation, its weighted RMS residual, and whether it is the only best fit.
@@ -313,4 +313,4 @@ template <class T, class Target, class Source, class Weight>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_REGISTRATION_HPP_INCLUDED
+#endif  // QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED

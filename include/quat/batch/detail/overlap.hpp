@@ -1,13 +1,13 @@
 // Whether two arrays overlap: the aliasing preconditions of the functions over many elements
 // (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
-#ifndef QUAT_DETAIL_OVERLAP_HPP_INCLUDED
-#define QUAT_DETAIL_OVERLAP_HPP_INCLUDED
+#ifndef QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
@@ -27,4 +27,4 @@ namespace detail {
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_OVERLAP_HPP_INCLUDED
+#endif  // QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED

@@ -1,12 +1,12 @@
 // The product of many factors in four interleaved chains: compose over an array of quaternions
 // (batch.hpp) and of dual quaternions (rigid_batch.hpp).
-#ifndef QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
-#define QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+#ifndef QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 
 #include <cstddef>
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // The number of chains: enough for a CPU to overlap the products (each waits on its predecessor).
@@ -55,4 +55,4 @@ template <class Value, class Chains = chain_values<Value>>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
+#endif  // QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED

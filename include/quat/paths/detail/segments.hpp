@@ -1,15 +1,15 @@
 // Finding the segment of a keyframe path that holds a time, and checking keyframe times.
-#ifndef QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
-#define QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+#ifndef QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED
+#define QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED
 
 #include <cstddef>
 #include <limits>
 #include <type_traits>
 
-#include "math.hpp"
+#include "../../detail/math.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 /// static_cast<T>(x), except that a floating-point x beyond T's largest finite value gives an
@@ -72,4 +72,4 @@ template <class T, class Time>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_SEGMENTS_HPP_INCLUDED
+#endif  // QUAT_PATHS_DETAIL_SEGMENTS_HPP_INCLUDED

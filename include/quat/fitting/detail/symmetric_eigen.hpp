@@ -1,17 +1,17 @@
 // Eigenvalues and eigenvectors of a symmetric N x N matrix: the one solver behind nearest_rotation,
 // align_vectors and mean, whose answers are eigenvectors of a 4x4 read as quaternions, and
 // hand_eye's 8x8; and the symmetric positive definite 3x3 solve of align_vectors' Newton steps.
-#ifndef QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
-#define QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+#ifndef QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+#define QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
 
 #include <cstddef>
 #include <limits>
 
-#include "../quaternion.hpp"
-#include "math.hpp"
+#include "../../detail/math.hpp"
+#include "../../quaternion.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // align_vectors and mean sum their matrices over the input in blocks of this many elements, each
@@ -173,4 +173,4 @@ template <class T>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED
+#endif  // QUAT_FITTING_DETAIL_SYMMETRIC_EIGEN_HPP_INCLUDED

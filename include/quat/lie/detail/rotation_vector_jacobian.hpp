@@ -13,17 +13,17 @@
 // a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
 // only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
 // f(n) = f(n n, n), are those rotation_spline.hpp calls.
-#ifndef QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
-#define QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#ifndef QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#define QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
 #include <limits>
 #include <type_traits>
 
-#include "../vec3.hpp"
-#include "math.hpp"
+#include "../../detail/math.hpp"
+#include "../../vec3.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // sum over k >= 0 of term_k, with term_0 = first and term_(k+1) = term_k * ratio(k), until the
@@ -259,4 +259,4 @@ template <class T>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
+#endif  // QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED

@@ -1,7 +1,7 @@
 // Non-temporal stores for the batch functions, and the last-level cache size that decides when they
 // pay: the one place quat uses x86 intrinsics and cpuid.
-#ifndef QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
-#define QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
+#ifndef QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +19,7 @@
 namespace quat {
 // Keyed by instruction set (see detail/math.hpp): has_streaming_stores and the code below depend on
 // __SSE__, __AVX__ and __AVX512F__, which the key includes.
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
@@ -156,4 +156,4 @@ inline std::size_t streaming_threshold_bytes() noexcept {
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_STREAMING_STORE_HPP_INCLUDED
+#endif  // QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED

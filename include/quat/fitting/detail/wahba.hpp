@@ -2,20 +2,20 @@
 // with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
 // weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
 // arrays; align_points.hpp on the points less their centroids.
-#ifndef QUAT_DETAIL_WAHBA_HPP_INCLUDED
-#define QUAT_DETAIL_WAHBA_HPP_INCLUDED
+#ifndef QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
+#define QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
 
 #include <cstddef>
 
-#include "../align.hpp"
-#include "../conversions.hpp"
-#include "../matrix.hpp"
+#include "../../align.hpp"
+#include "../../conversions.hpp"
+#include "../../detail/math.hpp"
+#include "../../detail/power_of_two.hpp"
+#include "../../matrix.hpp"
+#include "../../quaternion.hpp"
+#include "../../rotation_matrix.hpp"
+#include "../../vec3.hpp"
 #include "../nearest_rotation.hpp"
-#include "../quaternion.hpp"
-#include "../rotation_matrix.hpp"
-#include "../vec3.hpp"
-#include "math.hpp"
-#include "power_of_two.hpp"
 #include "symmetric_eigen.hpp"
 
 namespace quat {
@@ -23,7 +23,7 @@ namespace quat {
 template <class T>
 struct alignment;  // align_vectors.hpp; complete wherever a solution is made
 
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 template <class T>
@@ -477,4 +477,4 @@ template <class T, class Weight>
 
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_WAHBA_HPP_INCLUDED
+#endif  // QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED

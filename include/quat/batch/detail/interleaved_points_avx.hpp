@@ -14,18 +14,18 @@
 // coordinate, two blends (any of ports 0, 1, 5) and one in-lane permute (port 5) take it out, and
 // the same permute and two blends put it back. Per 8 points: 6 port-5 permutes, 12 blends, 3 lane
 // inserts and 9 multiply-adds, 30 uops over three ports, 1.25 cycles per point.
-#ifndef QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
-#define QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+#ifndef QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstring>
 
-#include "../rotation_matrix.hpp"
-#include "../vec3.hpp"
+#include "../../rotation_matrix.hpp"
+#include "../../vec3.hpp"
 #include "streaming_store.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 #if defined(__AVX__) && defined(__has_builtin)
@@ -229,4 +229,4 @@ template <bool Translate, bool Stream = false>
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
+#endif  // QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED

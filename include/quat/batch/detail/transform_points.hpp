@@ -3,21 +3,21 @@
 // arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
 // its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
 // last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
-#ifndef QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
-#define QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#ifndef QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
-#include "../rotation_matrix.hpp"
+#include "../../rotation_matrix.hpp"
+#include "../../vec3.hpp"
 #include "../soa.hpp"
-#include "../vec3.hpp"
 #include "interleaved_points_avx.hpp"
 #include "streaming_store.hpp"
 
 namespace quat {
-#include "isa_namespace.inc"
+#include "../../detail/isa_namespace.inc"
 namespace detail {
 
 // Points per block where a block is computed into a local buffer first: the streaming rotation.
@@ -194,4 +194,4 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<
 }  // inline namespace isa_...
 }  // namespace quat
 
-#endif  // QUAT_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
+#endif  // QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED

@@ -1,0 +1,12 @@
+// The rigid-motion family, x -> R x + t: dual quaternions, homogeneous matrices, screw parameters,
+// screw interpolation (sclerp) and dual-quaternion blending. Included by quat.hpp.
+#ifndef QUAT_RIGID_HPP_INCLUDED
+#define QUAT_RIGID_HPP_INCLUDED
+
+#include "rigid/blend.hpp"
+#include "rigid/dual_quaternion.hpp"
+#include "rigid/homogeneous_matrix.hpp"
+#include "rigid/sclerp.hpp"
+#include "rigid/screw.hpp"
+
+#endif  // QUAT_RIGID_HPP_INCLUDED
