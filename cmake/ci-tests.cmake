@@ -21,6 +21,25 @@ if(Python3_Interpreter_FOUND)
     set_tests_properties(single_header_sync PROPERTIES LABELS "ci")
 endif()
 
+# The layers of include/quat (docs/architecture.md): no lower header includes an upper one.
+if(Python3_Interpreter_FOUND)
+    add_test(NAME include_layers
+             COMMAND "${Python3_EXECUTABLE}" "${PROJECT_SOURCE_DIR}/tools/check_layers.py")
+    set_tests_properties(include_layers PROPERTIES LABELS "ci")
+endif()
+
+# Every include path of quat 1.0 still compiles alone and brings its header.
+set(_quat_standard 17)
+if(CMAKE_CXX_STANDARD)
+    set(_quat_standard ${CMAKE_CXX_STANDARD})
+endif()
+add_test(NAME old_include_paths
+         COMMAND "${CMAKE_COMMAND}" "-DCXX=${CMAKE_CXX_COMPILER}" "-DSTANDARD=${_quat_standard}"
+                 "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                 "-DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/old-include-paths"
+                 -P "${PROJECT_SOURCE_DIR}/cmake/old-include-paths.cmake")
+set_tests_properties(old_include_paths PROPERTIES LABELS "ci")
+
 # The consumer projects are built with this configuration's compiler, standard and flags, so the
 # sanitizer and -Werror settings of the preset apply to them too.
 set(_quat_consumer_options
