@@ -17,6 +17,7 @@ fresh generation:
 
     python3 tools/amalgamate.py           write single_include/quat/quat.hpp and the opt-in headers
     python3 tools/amalgamate.py --check   exit 1 if a committed file is out of date
+    python3 tools/amalgamate.py --list-opt-in   print the opt-in headers, one a line; write nothing
 """
 import argparse
 import difflib
@@ -200,8 +201,14 @@ def main() -> int:
                         help="compare with the committed files instead of writing them")
     parser.add_argument("--output-dir", type=Path, default=OUTPUT_DIR,
                         help="directory of the files to write or check")
+    parser.add_argument("--list-opt-in", action="store_true",
+                        help="print the opt-in headers (relative to include/quat), write nothing")
     args = parser.parse_args()
 
+    if args.list_opt_in:
+        _, held = generate()
+        print("\n".join(opt_in_headers(held)))
+        return 0
     outputs = generate_all()
     if args.check:
         status = 0
