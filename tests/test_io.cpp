@@ -8,8 +8,15 @@
 #include <string>
 
 #include <quat/io.hpp>
+// The families whose results are printed below: io.hpp prints them where their headers are
+// included.
+#include <quat/fitting/align_vectors.hpp>
+#include <quat/lie/se3.hpp>
 #include <quat/registration/align_points.hpp>
 #include <quat/registration/hand_eye.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/screw.hpp>
 
 #include "support/catch.hpp"
 #include "support/read_back.hpp"
@@ -109,6 +116,8 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};
     CHECK(text_of(s) == "screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}");
+    const quat::se3::twist<T> t{{T(1), T(-2), T(0)}, {T(0), T(0), T(0.5)}};
+    CHECK(text_of(t) == "se3::twist{vec3{1, -2, 0}, vec3{0, 0, 0.5}}");
     // The stream's default precision is 6 significant digits, for every T alike.
     CHECK(text_of(vec3<T>{T(1) / T(3), T(2) / T(3), T(-100) / T(3)}) ==
           "vec3{0.333333, 0.666667, -33.3333}");

@@ -9,19 +9,26 @@
 //   axis_angle{vec3{0, 0, 1}, 1.5}                            axis, angle
 //   euler<zyx, intrinsic>{0.5, 0.25, 0.125}                   e[0], e[1], e[2]
 //   euler_extraction{euler<zyx, intrinsic>{0.5, 0, 0}, true}  angles, gimbal_lock
-//   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
-//   alignment_with_sensitivity{alignment{...}, matrix{...}}
 //   swing_twist_parts{quaternion{...}, quaternion{...}}       swing, twist
+//   zyx   intrinsic                                           sequence and frame: their names
+// and the families' results, which print where the user includes their header too (this header
+// includes only the value types above, so printing a vec3 compiles no solver):
+// fitting/align_vectors.hpp
+//   alignment{quaternion{1, 0, 0, 0}, 0.25, true}             rotation, rssd, unique
+//   alignment_with_sensitivity{alignment{...}, matrix{...}}   sensitivity
+// rigid/dual_quaternion.hpp, rigid/homogeneous_matrix.hpp, rigid/screw.hpp
 //   dual_quaternion{quaternion{...}, quaternion{...}}         real, dual
 //   homogeneous_matrix{{1, 0, 0, 0}, ..., {0, 0, 0, 1}}       rows
-//   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle, displacement
-//   point_alignment{dual_quaternion{...}, 0.25, true}          motion, rms, unique
-//   similarity_alignment{point_alignment{...}, 2}              scale
+//   screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}              direction, moment, angle,
+//                                                             displacement
+// registration/align_points.hpp, registration/hand_eye.hpp
+//   point_alignment{dual_quaternion{...}, 0.25, true}         motion, rms, unique
+//   similarity_alignment{point_alignment{...}, 2}             scale
 //   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true, 0.01}
 //                                                             mount, rotation_rms, translation_rms,
 //                                                             unique, ambiguity
-// (the last three where align_points.hpp or hand_eye.hpp is included too)
-//   zyx   intrinsic                                           sequence and frame: their names
+// lie/se3.hpp
+//   se3::twist{vec3{1, 0, 0}, vec3{0, 0, 0.5}}                linear, angular
 //
 // operator<< works like std::complex's: the stream's flags, precision and locale apply to every
 // component (so at std::setprecision(std::numeric_limits<T>::max_digits10) the text reads back to
@@ -52,12 +59,8 @@
 #include "axis_angle.hpp"
 #include "detail/print_layout.hpp"
 #include "euler.hpp"
-#include "fitting/align_vectors.hpp"
 #include "matrix.hpp"
 #include "quaternion.hpp"
-#include "rigid/dual_quaternion.hpp"
-#include "rigid/homogeneous_matrix.hpp"
-#include "rigid/screw.hpp"
 #include "rotation_matrix.hpp"
 #include "swing_twist.hpp"
 #include "vec3.hpp"
@@ -163,32 +166,32 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, extraction);
 }
 
-/// Prints alignment{quaternion{...}, rssd, unique} with unique as true or false; stream settings as
-/// for vec3.
+/// Prints alignment{quaternion{...}, rssd, unique} with unique as true or false
+/// (fitting/align_vectors.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const alignment<T>& a) {
     return detail::print_to_stream(os, a);
 }
 
-/// Prints alignment_with_sensitivity{alignment{...}, matrix{...}}, the
-/// sensitivity matrix by rows; stream settings as for vec3.
+/// Prints alignment_with_sensitivity{alignment{...}, matrix{...}}, the sensitivity matrix by rows
+/// (fitting/align_vectors.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const alignment_with_sensitivity<T>& a) {
     return detail::print_to_stream(os, a);
 }
 
-/// Prints point_alignment{dual_quaternion{...}, rms, unique} (align_points.hpp); stream settings as
-/// for vec3.
+/// Prints point_alignment{dual_quaternion{...}, rms, unique} (registration/align_points.hpp);
+/// stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const point_alignment<T>& a) {
     return detail::print_to_stream(os, a);
 }
 
-/// Prints similarity_alignment{point_alignment{...}, scale} (align_points.hpp); stream settings as
-/// for vec3.
+/// Prints similarity_alignment{point_alignment{...}, scale} (registration/align_points.hpp);
+/// stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const similarity_alignment<T>& a) {
@@ -196,8 +199,7 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
 }
 
 /// Prints hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
-/// ambiguity}
-/// (hand_eye.hpp); stream settings as for vec3.
+/// ambiguity} (registration/hand_eye.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const hand_eye_calibration<T>& c) {
@@ -212,29 +214,44 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, parts);
 }
 
-/// Prints dual_quaternion{quaternion{...}, quaternion{...}}, real then dual; stream settings as for
-/// vec3.
+/// Prints dual_quaternion{quaternion{...}, quaternion{...}}, real then dual
+/// (rigid/dual_quaternion.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const dual_quaternion<T>& dq) {
     return detail::print_to_stream(os, dq);
 }
 
-/// Prints homogeneous_matrix{{m00, m01, m02, m03}, ..., {m30, m31, m32, m33}}, row by row; stream
-/// settings as for vec3.
+/// Prints homogeneous_matrix{{m00, m01, m02, m03}, ..., {m30, m31, m32, m33}}, row by row
+/// (rigid/homogeneous_matrix.hpp); stream settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const homogeneous_matrix<T>& m) {
     return detail::print_to_stream(os, m);
 }
 
-/// Prints screw{vec3{direction}, vec3{moment}, angle, displacement}; stream settings as for vec3.
+/// Prints screw{vec3{direction}, vec3{moment}, angle, displacement} (rigid/screw.hpp); stream
+/// settings as for vec3.
 template <class T, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const screw<T>& s) {
     return detail::print_to_stream(os, s);
 }
 }  // inline namespace isa_...
+
+namespace se3 {
+
+#include "detail/isa_namespace.inc"  // NOLINT(readability-duplicate-include): opened again
+
+/// Prints se3::twist{vec3{linear}, vec3{angular}} (lie/se3.hpp); stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const twist<T>& t) {
+    return ::quat::detail::print_to_stream(os, t);
+}
+}  // inline namespace isa_...
+
+}  // namespace se3
 
 }  // namespace quat
 
@@ -287,8 +304,8 @@ template <class T, class CharT>
 struct formatter<::quat::alignment<T>, CharT>
     : ::quat::value_formatter<::quat::alignment<T>, std::formatter<T, CharT>> {};
 
-/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
-/// spec applies to each number.
+/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the spec applies to each
+/// number.
 template <class T, class CharT>
 struct formatter<::quat::alignment_with_sensitivity<T>, CharT>
     : ::quat::value_formatter<::quat::alignment_with_sensitivity<T>, std::formatter<T, CharT>> {};
@@ -304,8 +321,7 @@ struct formatter<::quat::similarity_alignment<T>, CharT>
     : ::quat::value_formatter<::quat::similarity_alignment<T>, std::formatter<T, CharT>> {};
 
 /// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
-/// ambiguity}; the
-/// spec applies to each number.
+/// ambiguity}; the spec applies to each number.
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>
     : ::quat::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
@@ -329,6 +345,12 @@ struct formatter<::quat::homogeneous_matrix<T>, CharT>
 template <class T, class CharT>
 struct formatter<::quat::screw<T>, CharT>
     : ::quat::value_formatter<::quat::screw<T>, std::formatter<T, CharT>> {};
+
+/// Formats se3::twist{vec3{...}, vec3{...}}, linear then angular; the spec applies to each
+/// component.
+template <class T, class CharT>
+struct formatter<::quat::se3::twist<T>, CharT>
+    : ::quat::value_formatter<::quat::se3::twist<T>, std::formatter<T, CharT>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class CharT>

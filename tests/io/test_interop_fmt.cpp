@@ -9,6 +9,15 @@
 #include <string>
 
 #include <quat/interop/fmt.hpp>
+// The families whose results are printed below: io.hpp prints them where their headers are
+// included.
+#include <quat/fitting/align_vectors.hpp>
+#include <quat/lie/se3.hpp>
+#include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
+#include <quat/rigid/dual_quaternion.hpp>
+#include <quat/rigid/homogeneous_matrix.hpp>
+#include <quat/rigid/screw.hpp>
 
 #include "support/catch.hpp"
 #include "support/read_back.hpp"
@@ -58,6 +67,8 @@ TEMPLATE_TEST_CASE("fmt::format prints the documented format", "[io][fmt]", floa
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};
     CHECK(fmt::format("{}", s) == "screw{vec3{0, 0, 1}, vec3{0, -1, 0}, 1.5, 2}");
+    const quat::se3::twist<T> t{{T(1), T(-2), T(0)}, {T(0), T(0), T(0.5)}};
+    CHECK(fmt::format("{}", t) == "se3::twist{vec3{1, -2, 0}, vec3{0, 0, 0.5}}");
 }
 
 // fmt 9 writes a long double with 20 significant digits (0.1L as 0.10000000000000000555), which
@@ -99,6 +110,8 @@ TEST_CASE("a fmt::format spec applies to each component", "[io][fmt]") {
     CHECK(fmt::format("{:e}", vec3<double>{1, 0.5, -3}) ==
           "vec3{1.000000e+00, 5.000000e-01, -3.000000e+00}");
     CHECK(fmt::format("{:>6.2}", vec3<double>{1. / 3, 2, -0.5}) == "vec3{  0.33,      2,   -0.5}");
+    CHECK(fmt::format("{:.1f}", quat::se3::twist<double>{{1, 2, 3}, {0, 0, 0.5}}) ==
+          "se3::twist{vec3{1.0, 2.0, 3.0}, vec3{0.0, 0.0, 0.5}}");
     CHECK(fmt::format("{:+}", euler<float>{1, -2, 0}) == "euler<zyx, intrinsic>{+1, -2, +0}");
     CHECK(fmt::format("{:*<5g}", axis_angle<double>{{0, 0, 1}, 2}) ==
           "axis_angle{vec3{0****, 0****, 1****}, 2****}");

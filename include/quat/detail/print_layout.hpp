@@ -10,28 +10,52 @@
 #include <cstddef>
 #include <string_view>
 
-#include "../axis_angle.hpp"
-#include "../euler.hpp"
-#include "../fitting/align_vectors.hpp"
-#include "../matrix.hpp"
-#include "../quaternion.hpp"
-#include "../rigid/dual_quaternion.hpp"
-#include "../rigid/homogeneous_matrix.hpp"
-#include "../rigid/screw.hpp"
-#include "../rotation_matrix.hpp"
-#include "../swing_twist.hpp"
-#include "../vec3.hpp"
-
 namespace quat {
 
-// The opt-in headers' results, printed where those headers are included: align_points.hpp,
-// hand_eye.hpp.
+// The types laid out below, declared here and defined by their own headers: this file is part of
+// detail/, which includes no public header, so printing a vec3 does not compile the families'
+// solvers. io.hpp includes the value types' headers; a family's results (fitting/, rigid/,
+// registration/, lie/se3.hpp) print where the user includes that family's header too, as the
+// layout is instantiated only for a type that is complete. The declarations repeat no default
+// argument (euler's are in euler.hpp), so they agree with the definitions in either order.
+enum class sequence;
+enum class frame;
+template <class T>
+struct vec3;
+template <class T>
+struct quaternion;
+template <class T>
+struct rotation_matrix;
+template <class T, int Rows, int Cols>
+struct matrix;
+template <class T>
+struct axis_angle;
+template <class T, sequence S, frame F>
+struct euler;
+template <class T, sequence S, frame F>
+struct euler_extraction;
+template <class T>
+struct swing_twist_parts;
+template <class T>
+struct alignment;
+template <class T>
+struct alignment_with_sensitivity;
+template <class T>
+struct dual_quaternion;
+template <class T>
+struct homogeneous_matrix;
+template <class T>
+struct screw;
 template <class T>
 struct point_alignment;
 template <class T>
 struct similarity_alignment;
 template <class T>
 struct hand_eye_calibration;
+namespace se3 {
+template <class T>
+struct twist;
+}  // namespace se3
 
 #include "isa_namespace.inc"
 namespace detail {
@@ -224,6 +248,15 @@ void write_layout(Printer& p, const screw<T>& s) {
     p.value(s.angle);
     p.text(", ");
     p.value(s.displacement);
+    p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const se3::twist<T>& t) {
+    p.text("se3::twist{");
+    write_layout(p, t.linear);
+    p.text(", ");
+    write_layout(p, t.angular);
     p.text("}");
 }
 

@@ -1,5 +1,6 @@
 // Opt-in {fmt} support (not included by quat.hpp; needs {fmt} 9 or later): fmt::formatter for every
-// quat type, printing the format documented in quat/io.hpp. "{}" prints each component as
+// quat type, printing the format documented in quat/io.hpp (a family's results, such as
+// se3::twist, where that family's header is included too). "{}" prints each component as
 // fmt::format("{}", component) does, the shortest text that reads back exactly (fmt 9 writes a
 // long double with 20 significant digits: exact, not shortest); a spec is the scalar's ("{:.3f}",
 // "{:e}", "{:>8}") and applies to each component; sequence and frame take a string spec.
@@ -63,8 +64,8 @@ template <class T, class Char>
 struct formatter<::quat::alignment<T>, Char>
     : ::quat::value_formatter<::quat::alignment<T>, fmt::formatter<T, Char>> {};
 
-/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the
-/// spec applies to each number.
+/// Formats alignment_with_sensitivity{alignment{...}, matrix{...}}; the spec applies to each
+/// number.
 template <class T, class Char>
 struct formatter<::quat::alignment_with_sensitivity<T>, Char>
     : ::quat::value_formatter<::quat::alignment_with_sensitivity<T>, fmt::formatter<T, Char>> {};
@@ -80,8 +81,7 @@ struct formatter<::quat::similarity_alignment<T>, Char>
     : ::quat::value_formatter<::quat::similarity_alignment<T>, fmt::formatter<T, Char>> {};
 
 /// Formats hand_eye_calibration{dual_quaternion{...}, rotation_rms, translation_rms, unique,
-/// ambiguity}; the
-/// spec applies to each number.
+/// ambiguity}; the spec applies to each number.
 template <class T, class Char>
 struct formatter<::quat::hand_eye_calibration<T>, Char>
     : ::quat::value_formatter<::quat::hand_eye_calibration<T>, fmt::formatter<T, Char>> {};
@@ -105,6 +105,12 @@ struct formatter<::quat::homogeneous_matrix<T>, Char>
 template <class T, class Char>
 struct formatter<::quat::screw<T>, Char>
     : ::quat::value_formatter<::quat::screw<T>, fmt::formatter<T, Char>> {};
+
+/// Formats se3::twist{vec3{...}, vec3{...}}, linear then angular; the spec applies to each
+/// component.
+template <class T, class Char>
+struct formatter<::quat::se3::twist<T>, Char>
+    : ::quat::value_formatter<::quat::se3::twist<T>, fmt::formatter<T, Char>> {};
 
 /// Formats the sequence's name; the spec is a string's (width, fill, alignment).
 template <class Char>
