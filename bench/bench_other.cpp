@@ -182,7 +182,7 @@ void slerp_batch(benchmark::State& state, long long n) {
 
 // The slerp_fast family, slerp_fast/quat/<method>/<type>, each labelled with its largest
 // rotation-angle error: the bounds tests/test_slerp_fast.cpp asserts for nlerp, corrected_nlerp and
-// slerp_fast ("eberly"), and for the exact slerp issue 7's 4 eps that `quat_accuracy --slerp-fast`
+// slerp_fast ("eberly"), and for the exact slerp the 4 eps target that `quat_accuracy --slerp-fast`
 // checks (tools/accuracy/measure_fast_slerp.hpp). Keep these strings equal to those bounds.
 struct slerp_fast_labels {
     const char *nlerp, *corrected_nlerp, *eberly, *slerp;

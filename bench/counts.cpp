@@ -61,7 +61,7 @@ int print_counts() {
         "    alone) instead of the thesis's two full Hamilton products q p q* (32 mul, 24 add, "
         "the naive\n"
         "    row); v + w t + u x t would be 18 mul, 12 add but keeps |v| only to 5.4 eps "
-        "(issue 12).\n"
+        "for q from normalize.\n"
         "  - quaternion from axis + angle: the half angle costs one multiplication that the "
         "thesis's\n"
         "    (wrong) full-angle formula 2.26 skipped; the rotation itself is again rotate(q, "

@@ -179,7 +179,7 @@ constexpr const char* instruction_set =
     "SSE2";
 #endif
 #if defined(__AVX2__)
-constexpr bool wide_vectors = true;  // x86-64-v3 or native: where issue 16's in-cache goals apply
+constexpr bool wide_vectors = true;  // x86-64-v3 or native: where the in-cache goals apply
 #else
 constexpr bool wide_vectors = false;
 #endif
@@ -234,9 +234,9 @@ void print_targets(const std::vector<measurement>& all) {
                        ratio(peer, ours), 1.0, true);
         }
     }
-    // Per-element batches (issue 27): the array-of-structs form at its shuffle bound (issue 16
-    // counted about 1.6x), the struct-of-arrays form, which needs no shuffles, twice the peers'
-    // array-of-structs loops.
+    // Per-element batches: the array-of-structs form at its shuffle bound (about 1.6x by the uop
+    // count in docs/performance.md), the struct-of-arrays form, which needs no shuffles, twice the
+    // peers' array-of-structs loops.
     for (const char* operation : {"rotate_each", "compose_each"}) {
         const std::string op = operation;
         const double ours = find(all, op + "/quat/quaternion/float/1024");
@@ -263,7 +263,7 @@ void print_targets(const std::vector<measurement>& all) {
     target("slerp_fast corrected_nlerp (<= 1e-3 rad): glm slerp / quat",
            ratio(glm_slerp, find(all, "slerp_fast/quat/corrected_nlerp/float")), 5.0, true);
 
-    // Point-set registration (issue 26): Eigen's umeyama on the same points, and one read of them.
+    // Point-set registration: Eigen's umeyama on the same points, and one read of them.
     for (const char* n : {"4", "64", "4096"}) {
         const std::string size = n;
         target("align_points " + size + ": eigen umeyama / quat",
@@ -297,7 +297,7 @@ void print_targets(const std::vector<measurement>& all) {
            ratio(find(all, "rigid_chain/glm/matrix/float/1024"),
                  find(all, "rigid_chain/quat/dual_quaternion/float/1024")),
            1.5, true);
-    // Estimation (issue 25, double): each analytic Jacobian against ceres::Jet autodiff of the same
+    // Estimation (double): each analytic Jacobian against ceres::Jet autodiff of the same
     // function, and SO(3)'s exp and log against the conversions they call (the same work: the
     // 5 % leaves room for the noise of a shared machine).
     for (const char* operation :

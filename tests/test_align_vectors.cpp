@@ -337,7 +337,7 @@ static_assert(quarter.rotation.w - 0.70710678118654752 < 1e-15 &&
               0.70710678118654752 - quarter.rotation.z < 1e-15);
 
 // ---- Edges: weights spread over hundreds of orders of magnitude, infinite weights, sizes from
-// subnormal to huge (issue 23) ----
+// subnormal to huge ----
 
 namespace {
 
@@ -360,8 +360,8 @@ TEST_CASE("one pair outweighing the others by 1e10: still their exact answer, un
           "[align_vectors][edges]") {
     // x -> y with weight 1e10 and (1, 1, 0) -> (0, 1, 1) with weight 1: the third of a turn about
     // (1, 1, 1) fits both exactly (cost 0). Davenport's K alone cannot tell its top two
-    // eigenvalues apart at this spread (they differ by 2e-10 of the largest): the earlier rule
-    // called it not unique and returned a quarter turn about z with cost 2.
+    // eigenvalues apart at this spread (they differ by 2e-10 of the largest): a uniqueness rule read
+    // from that gap alone calls it not unique and returns a quarter turn about z with cost 2.
     const std::vector<vec3<double>> targets{{0, 1, 0}, {0, 1, 1}}, sources{{1, 0, 0}, {1, 1, 0}};
     const quat::alignment<double> result =
         quat::align_vectors(targets, sources, std::vector<double>{1e10, 1});
@@ -374,7 +374,7 @@ TEST_CASE("one pair outweighing the others by 1e10: still their exact answer, un
 TEMPLATE_TEST_CASE("exact data with one weight from 1e6 to 1e300 times the others: the truth",
                    "[align_vectors][edges]", float, double) {
     // Measured (double, 100 sets per spread, 2 to 5 pairs): at most 12.5 eps at every spread;
-    // scipy 1.10 is 2.4e-6 off at 1e10, and the earlier quat wrong in 4 of 100 sets at 1e8.
+    // scipy 1.10 is 2.4e-6 off at 1e10.
     using T = TestType;
     const int top = std::numeric_limits<T>::max_exponent10 - 2;  // 36 for float, 306 for double
     quat::test::random_rotations random;
@@ -395,7 +395,7 @@ TEST_CASE("noisy data with one weight 1e2 to 1e40 times the others: the long dou
           "[align_vectors][edges]") {
     // No exact answer here; long double (64-bit significand on x86) carries 11 more bits through
     // the same steps. Measured at most 17.9 eps at 1e2, 5.2 eps from 1e4 on (100 sets per
-    // spread); the earlier quat was 1.7e6 eps off at 1e6 and wrong by a half turn at 1e8.
+    // spread).
     quat::test::random_rotations random;
     for (int exponent = 2; exponent <= 40; exponent += 2) {
         for (int trial = 0; trial < 40; ++trial) {
@@ -473,8 +473,9 @@ TEMPLATE_TEST_CASE("every size from subnormal to near max() gives the same rotat
     using T = TestType;
     quat::test::random_rotations random;
     // Noisy pairs of length up to 2, scaled by powers of ten: the inputs round, so the rotation
-    // moves by a few eps; rssd scales with them. The earlier code gave the identity (unique false)
-    // at 1e-200 and NaN at 1e200.
+    // moves by a few eps; rssd scales with them. Unscaled sums (align_vectors scales the data by
+    // powers of two) underflow at 1e-200 to the identity (unique false) and overflow at 1e200 to
+    // NaN.
     const std::vector<double> scales =
         std::is_same_v<T, float>
             ? std::vector<double>{1e-38, 1e-30, 1e-20, 1e20, 1e30, 1e38}

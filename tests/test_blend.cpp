@@ -111,12 +111,12 @@ TEST_CASE("blend is constexpr", "[blend][constexpr]") {
     STATIC_REQUIRE(middle.dual.x == 0.5);  // half of a translation by 1
 }
 
-// ---- Edges (issue 23): weights of any finite size, mixed precisions ----
+// ---- Edges: weights of any finite size, mixed precisions ----
 
 TEMPLATE_TEST_CASE("weights from subnormal to max() blend as their ratios", "[blend][edges]", float,
                    double) {
     // The weights are divided by the largest |weight| first, so these are the same sums bit for
-    // bit. The earlier sums overflowed at max() (NaN) and lost the subnormals' digits.
+    // bit. Unscaled sums overflow at max() (NaN) and lose the subnormals' digits.
     using T = TestType;
     quat::test::random_rotations random;
     const T max = std::numeric_limits<T>::max(), tiny = std::numeric_limits<T>::denorm_min();

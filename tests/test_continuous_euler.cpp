@@ -116,9 +116,9 @@ TEMPLATE_TEST_CASE("through gimbal lock the free angle keeps its previous value"
 
 TEMPLATE_TEST_CASE("exactly at the lock the free angle is held whatever its size",
                    "[euler][continuous]", float, double) {
-    // Regression: the hold used to need |middle-angle distance to the lock| * |change of the third
-    // angle| <= 2 eps; a middle angle extracted a few ulp off the lock with a third angle of 1.5
-    // rad missed it, and the output jumped to the plain extraction's split (third angle 0).
+    // A hold that needs |middle-angle distance to the lock| * |change of the third angle| <= 2 eps
+    // misses a middle angle extracted a few ulp off the lock with a third angle of 1.5 rad, and
+    // the output jumps to the plain extraction's split (third angle 0).
     using T = TestType;
     const T eps = std::numeric_limits<T>::epsilon();
     const T pi = quat::numbers::pi_v<T>;

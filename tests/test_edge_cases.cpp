@@ -1,4 +1,4 @@
-// Edge cases of issue 7: identity, half turns, gimbal lock in all 24 conventions, extreme
+// Edge cases: identity, half turns, gimbal lock in all 24 conventions, extreme
 // magnitudes, q against -q, non-unit input, NaN/Inf, non-rotation matrices, constexpr = run time.
 #include <array>
 #include <cmath>
@@ -375,7 +375,7 @@ TEMPLATE_TEST_CASE("constexpr results equal run-time results within constexpr_vs
     }
 }
 
-// ---- Issue 23: every function documented for "any non-zero length/scale" keeps its answer from
+// ---- Every function documented for "any non-zero length/scale" keeps its answer from
 // the smallest subnormal to the largest finite scale (norms formed from user input are scaled by
 // the largest component first, as hypot does).
 

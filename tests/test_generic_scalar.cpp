@@ -295,7 +295,7 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     const vec3<double> twist_axis_d{0, 2, 1};
     check_same(swing_twist(a, twist_axis).twist, swing_twist(ad, twist_axis_d).twist);
     check_same(try_swing_twist(a, twist_axis)->swing, try_swing_twist(ad, twist_axis_d)->swing);
-    // Keyframe paths (issue 14).
+    // Keyframe paths.
     const quaternion<R> c = slerp(a, b, r(0.7));
     const quatd cd = slerp(ad, bd, 0.7);
     check_same(squad(a, squad_control(a, a, b), squad_control(a, b, c), b, r(0.4)),
@@ -327,7 +327,7 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     slerp(a, b, ts, slerped);
     check_same(slerped[1], slerp(ad, bd, 0.3));
 
-    // Rigid motions (issue 15).
+    // Rigid motions.
     const dual_quaternion<R> da = to_dual_quaternion(a, vec3<R>{r(1), r(-2), r(0.5)});
     const dual_quaternion<R> db = to_dual_quaternion(b, vec3<R>{r(0.3), r(0), r(2)});
     const dual_quaterniond dad = to_dual_quaternion(ad, vec3<double>{1, -2, 0.5});
@@ -347,7 +347,7 @@ TEMPLATE_TEST_CASE("every operation instantiates with a user-defined scalar and 
     check_same(blend(bones, std::vector<R>{r(0.3), r(0.7)}).dual,
                blend(bones_d, std::vector<double>{0.3, 0.7}).dual);
     check_same(compose(bones).dual, compose(bones_d).dual);
-    // Registration and hand-eye calibration (issue 26).
+    // Registration and hand-eye calibration.
     const std::vector<vec3<R>> cloud{from, to, cross(from, to), vec3<R>{r(0.2), r(0.4), r(-1)}};
     const std::vector<vec3<double>> cloud_d{from_d, to_d, cross(from_d, to_d), {0.2, 0.4, -1}};
     std::vector<vec3<R>> moved;

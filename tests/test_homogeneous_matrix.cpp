@@ -242,7 +242,7 @@ TEMPLATE_TEST_CASE("a translation with components up to max() reads back through
     using T = TestType;
     const T largest = std::numeric_limits<T>::max();
     // The dual part (t / 2) q never overflows, but 2 dual real* rounds within a few units of
-    // max() and used to overflow on the doubling. Reference: the translation as given, exact.
+    // max() and overflows if doubled before the product. Reference: the translation as given, exact.
     quat::test::random_rotations random;
     int rounded_past = 0;
     for (int n = 0; n < 200; ++n) {

@@ -1,4 +1,4 @@
-// Hostile inputs (issue 23): NaN, +Inf and -Inf in every component of every argument of every
+// Hostile inputs: NaN, +Inf and -Inf in every component of every argument of every
 // public function, for float and double, each checked against its doc comment; and the extreme
 // magnitudes (subnormal, tiny, huge, max()) for the functions documented as accepting any non-zero
 // scale or length. tests/test_nan_propagation.cpp puts the bad value in one place only; here the

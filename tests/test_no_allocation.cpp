@@ -56,7 +56,7 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     quat::rotate(a, big_points, big_out);
     sink += quat::compose(factors).w;
     quat::slerp(a, b, ts, slerped);
-    // Issue 13: aligning, averaging, sampling and motion.
+    // Aligning, averaging, sampling and motion.
     const quat::vec3<float> u{1, 2, 3}, v{-3, 1, 2};
     sink += quat::rotation_between(u, v).w + quat::try_rotation_between(u, v)->w;
     sink += quat::look_rotation(u, v).w + quat::try_look_rotation(u, v)->w;
@@ -69,7 +69,7 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     sink += quat::rotate_towards(a, b, 0.1f).w + quat::body_angular_velocity(a, b, 0.1f).x;
     sink += quat::integrate_world(a, u, 0.1f).w + quat::to_mrp(a).x + quat::from_mrp(u).w;
     sink += quat::to_euler(a, quat::euler<float>{0.1f, 0.2f, 0.3f})[0];
-    // Issue 15: rigid motions.
+    // Rigid motions.
     const auto da = quat::to_dual_quaternion(a, u), db = quat::to_dual_quaternion(b, v);
     sink += (da * db).dual.x + quat::inverse(da).dual.y + quat::normalize(db).dual.z;
     sink += quat::try_normalize(da)->real.w + quat::transform(da, u).x;

@@ -227,7 +227,7 @@ TEMPLATE_TEST_CASE("is_unit measures | |q| - 1 | against the tolerance", "[quate
 
 TEST_CASE("rotate by a q from normalize keeps |v| within 4 eps and the direction within 4 eps",
           "[quaternion][accuracy]") {
-    // As users meet it (issue 12): q = normalize(p) of an arbitrary p is unit only to a few eps, and
+    // As users meet it: q = normalize(p) of an arbitrary p is unit only to a few eps, and
     // rotate must not scale v by that rounding. v + w t + u x t (t = 2 u x v) ignores it and reaches
     // 5.2 eps here; quat_accuracy measures the same on its own inputs beside GLM and Eigen.
     // Reference in long double: q normalized in long double, then q (0, v) q* by Hamilton products.

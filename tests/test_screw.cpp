@@ -119,7 +119,7 @@ TEMPLATE_TEST_CASE("to_screw of a subnormal turn with a slide along its axis has
     using L = std::numeric_limits<T>;
     // The turn (1, d a) about a / |a| by about 2 |a| d, then a slide by k a, along that axis: the
     // axis passes the origin, so the moment is zero. Across the axis is only the rounding of the
-    // unit direction, |t| eps, which cot(angle / 2) ~ 1 / d used to make huge or infinite.
+    // unit direction, |t| eps, which a factor cot(angle / 2) ~ 1 / d would make huge or infinite.
     // Reference: the exact screw, in long double.
     const vec3<T> directions[] = {{1, 0, 1}, {1, 2, 3}, {3, 1, 2}, {1, 2, 0}};
     for (const T d : {L::denorm_min(), L::denorm_min() * T(7), L::min() / T(64)}) {

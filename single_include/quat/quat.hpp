@@ -3069,7 +3069,7 @@ using if_arrays_of = std::enable_if_t<
 // builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
 // from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
 // non-temporal stores): <immintrin.h> alone doubled the compile time of a translation unit
-// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
+// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s with <xmmintrin.h>).
 //
 // Why: x, y, z interleaved in memory must be separated (de-interleaved) before 8 points can share a
 // vector multiply, and joined again after. Compiled from a plain loop, g++ 12 does this with 12
@@ -3241,8 +3241,7 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
     return largest;
 }
 
-// The fixed threshold of earlier versions, and the last resort where no cache size can be read:
-// 16 MiB of output.
+// The last resort where no cache size can be read: 16 MiB of output.
 inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
 
 // The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
@@ -3258,7 +3257,7 @@ inline std::size_t last_level_cache_bytes() noexcept {
 // data one call touches, input and output (twice the output), exceeds the last-level cache, so
 // the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
 // each line only adds a third to the memory traffic; below that plain stores, which leave the
-// result in cache. Without a cache size, the fixed 16 MiB of earlier versions.
+// result in cache. Without a cache size, the fixed default_streaming_bytes.
 inline std::size_t streaming_threshold_bytes() noexcept {
     const std::size_t cache = last_level_cache_bytes();
     return cache == 0 ? default_streaming_bytes : cache / 2;
@@ -4822,10 +4821,10 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<
                       vec3<T>* output, std::size_t count) noexcept {
     // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
     // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
-    // 32 MiB L3 (issue 27, g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms
-    // against 3.9-4.1 plain, streaming copy 3.2-3.8. Earlier machines, under the fixed 16 MiB
-    // threshold this rule replaces: the Xeon of issue 16 (streaming won at every level, SSE2 5.7
-    // ms against 6.6, AVX2 4.7-4.9 against 5.2-6.0), the Zen 5 of issue 6 (won only with AVX-512).
+    // 32 MiB L3 (g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms against
+    // 3.9-4.1 plain, streaming copy 3.2-3.8. With a fixed 16 MiB threshold instead: on a Xeon with
+    // a 480 MiB L3 streaming won at every level (SSE2 5.7 ms against 6.6, AVX2 4.7-4.9 against
+    // 5.2-6.0), on a Zen 5 only with AVX-512.
     if constexpr (std::is_same_v<T, float>) {
         if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
             transform_streaming<Translate>(m, t, input, output, count);
@@ -5300,7 +5299,7 @@ struct asin_ratio_coefficients {
 /// direction divided by the norm it has, but h = asin(sin h), sin u and cos u by polynomials
 /// instead of asinf and sincosf. Why: on a Zen 4 with AVX2, glibc's asinf (a division, and a
 /// square root past 0.5) and sincosf, called one after the other behind the square root of the
-/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed (issue 27). Here
+/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed. Here
 /// the series of asin(x) / x starts from x^2 (the chord squared) while the square roots and the
 /// one division run beside it, and the result is rounded to float once (float products are exact
 /// in double, the sums and series err by about 1e-9 relative at most), within a unit in the last

@@ -1,6 +1,6 @@
 // quat_accuracy: max and RMS error of quat, GLM and Eigen against a high-precision reference, in
 // float and double, on random inputs (fixed seed) and on edge-case families; prints a markdown
-// table. Exit status 1 when any of quat's targets (issue 7) is missed.
+// table. Exit status 1 when any of quat's targets is missed beyond its ceiling.
 //   quat_accuracy [--quick] [--worst] [--conventions]
 //   quat_accuracy --slerp-fast [--quick]   (nlerp, corrected_nlerp, slerp_fast, slerp: errors in
 //                                           radians; exit 1 above a bound, measure_fast_slerp.hpp)
@@ -42,7 +42,7 @@ struct options {
     bool rigid = false;        // the rigid-motion tables of measure_rigid.hpp instead
 };
 
-// quat's targets from issue 7, in eps (double; float in the same ratio to its epsilon).
+// quat's targets, in eps (double; float in the same ratio to its epsilon).
 constexpr double target_matrix_round_trip = 3;
 constexpr double target_euler = 4;
 constexpr double target_slerp_norm = 2;
@@ -50,7 +50,7 @@ constexpr double target_slerp_angle = 4;
 constexpr double target_normalize = 1;
 constexpr double target_exp_log = 2;
 constexpr double target_rotate = 4;
-constexpr double target_rotate_direction = 4;  // issue 12: a length fix must not cost direction
+constexpr double target_rotate_direction = 4;  // a length fix must not cost direction
 constexpr double target_align = 4;  // rotation_between and look_rotation, angle to the reference
 // Ceilings for the misses docs/accuracy.md explains (see the section "Targets missed"):
 // Euler angles are three stored angles of magnitude up to pi, each rounded to half an ulp (1 eps in

@@ -22,7 +22,7 @@ namespace accuracy {
 /// approximations' angle bounds are those of include/quat/paths/slerp_fast.hpp, asserted by
 /// tests/test_slerp_fast.cpp and quoted in the benchmark labels (bench/bench_other.cpp), and their
 /// lengths are unit to 4 eps (tests/support/tolerance.hpp's unit_norm) except slerp_fast's; the
-/// exact slerp's are issue 7's targets (4 eps angle, 2 eps length, as in main.cpp).
+/// exact slerp's are the main table's targets (4 eps angle, 2 eps length, as in main.cpp).
 struct fast_slerp_method {
     const char* name;
     double angle_bound_float, angle_bound_double;

@@ -1,4 +1,4 @@
-// Lie-group rows of the main table (issue 25, "accuracy tool rows"): so3 and se3 exp -> log round
+// Lie-group rows of the main table: so3 and se3 exp -> log round
 // trips, so3::exp's value, and the Jacobians of so3.hpp and se3.hpp, quat only (GLM has none; Eigen
 // has AngleAxis, measured beside the so3 round trip). Every reference is computed here in `real`
 // with no quat code in its path: exp from the cosine and sine of the half angle, Jr = I - a W + b W^2
@@ -36,7 +36,7 @@ namespace lie {
 // error is that of the translation's roundings relative to |xi| = |rho|).
 constexpr double target_round_trip = 4;
 constexpr double target_se3_round_trip = 8;
-// so3::exp's value: issue 7's target for exp, as main.cpp's exp row (max 1.40, near pi).
+// so3::exp's value: the target of main.cpp's exp row (max 1.40, near pi).
 constexpr double target_exp_value = 2;
 // so3 Jacobians: max 5.38 (float, exp's Jacobian near pi, formed from the rounded quaternion's
 // half-angle sine; right_jacobian itself 3.29); se3 Jacobians: max 5.69 (float,

@@ -1,4 +1,4 @@
-// Registration rows of the main table (issue 26): align_points and align_points_with_scale against
+// Registration rows of the main table: align_points and align_points_with_scale against
 // Eigen::umeyama on the same point sets, and hand_eye (both methods; no GLM or Eigen counterpart).
 // align_points' reference is the least-squares solution of the rounded sets computed here in
 // `real`, with no quat code in its path: centroids in two passes, B = sum (t - ct)(s - cs)^T, the

@@ -71,7 +71,7 @@ struct asin_ratio_coefficients {
 /// direction divided by the norm it has, but h = asin(sin h), sin u and cos u by polynomials
 /// instead of asinf and sincosf. Why: on a Zen 4 with AVX2, glibc's asinf (a division, and a
 /// square root past 0.5) and sincosf, called one after the other behind the square root of the
-/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed (issue 27). Here
+/// chord, made one slerp a long chain of dependent operations, 0.9x GLM's speed. Here
 /// the series of asin(x) / x starts from x^2 (the chord squared) while the square roots and the
 /// one division run beside it, and the result is rounded to float once (float products are exact
 /// in double, the sums and series err by about 1e-9 relative at most), within a unit in the last

@@ -3,7 +3,7 @@
 // builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
 // from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
 // non-temporal stores): <immintrin.h> alone doubled the compile time of a translation unit
-// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s now).
+// including quat.hpp with -march=native (0.16 s to 0.33 s, g++ 12; 0.17 s with <xmmintrin.h>).
 //
 // Why: x, y, z interleaved in memory must be separated (de-interleaved) before 8 points can share a
 // vector multiply, and joined again after. Compiled from a plain loop, g++ 12 does this with 12

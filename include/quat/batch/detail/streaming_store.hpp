@@ -129,8 +129,7 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
     return largest;
 }
 
-// The fixed threshold of earlier versions, and the last resort where no cache size can be read:
-// 16 MiB of output.
+// The last resort where no cache size can be read: 16 MiB of output.
 inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
 
 // The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
@@ -146,7 +145,7 @@ inline std::size_t last_level_cache_bytes() noexcept {
 // data one call touches, input and output (twice the output), exceeds the last-level cache, so
 // the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
 // each line only adds a third to the memory traffic; below that plain stores, which leave the
-// result in cache. Without a cache size, the fixed 16 MiB of earlier versions.
+// result in cache. Without a cache size, the fixed default_streaming_bytes.
 inline std::size_t streaming_threshold_bytes() noexcept {
     const std::size_t cache = last_level_cache_bytes();
     return cache == 0 ? default_streaming_bytes : cache / 2;

@@ -139,10 +139,10 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<
                       vec3<T>* output, std::size_t count) noexcept {
     // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
     // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
-    // 32 MiB L3 (issue 27, g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms
-    // against 3.9-4.1 plain, streaming copy 3.2-3.8. Earlier machines, under the fixed 16 MiB
-    // threshold this rule replaces: the Xeon of issue 16 (streaming won at every level, SSE2 5.7
-    // ms against 6.6, AVX2 4.7-4.9 against 5.2-6.0), the Zen 5 of issue 6 (won only with AVX-512).
+    // 32 MiB L3 (g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms against
+    // 3.9-4.1 plain, streaming copy 3.2-3.8. With a fixed 16 MiB threshold instead: on a Xeon with
+    // a 480 MiB L3 streaming won at every level (SSE2 5.7 ms against 6.6, AVX2 4.7-4.9 against
+    // 5.2-6.0), on a Zen 5 only with AVX-512.
     if constexpr (std::is_same_v<T, float>) {
         if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
             transform_streaming<Translate>(m, t, input, output, count);
