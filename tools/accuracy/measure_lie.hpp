@@ -38,9 +38,9 @@ constexpr double target_round_trip = 4;
 constexpr double target_se3_round_trip = 8;
 // so3::exp's value: the target of main.cpp's exp row (max 1.40, near pi).
 constexpr double target_exp_value = 2;
-// so3 Jacobians: max 5.38 (float, exp's Jacobian near pi, formed from the rounded quaternion's
-// half-angle sine; right_jacobian itself 3.29); se3 Jacobians: max 5.69 (float,
-// right_jacobian_inverse, random xi).
+// so3 Jacobians: the largest error is in float, near pi, where exp's Jacobian is formed from the
+// rounded quaternion's half-angle sine; se3 Jacobians: in float, right_jacobian_inverse of random
+// twists (docs/accuracy.md has the measured maxima).
 constexpr double target_jacobian = 8;
 constexpr double target_se3_jacobian = 12;
 
