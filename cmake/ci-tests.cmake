@@ -210,7 +210,7 @@ if(QUAT_BUILD_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     add_test(NAME clang_o1_sanitize_werror
              COMMAND "${CMAKE_CXX_COMPILER}" -std=c++17 -O1 -fsanitize=address,undefined
                      -Wall -Wextra -Wpedantic -Werror -I "${PROJECT_SOURCE_DIR}/include"
-                     -I "${PROJECT_SOURCE_DIR}/tests" -c "${PROJECT_SOURCE_DIR}/tests/test_batch.cpp"
+                     -I "${PROJECT_SOURCE_DIR}/tests" -c "${PROJECT_SOURCE_DIR}/tests/test_rotations.cpp"
                      -o "${PROJECT_BINARY_DIR}/clang_o1_sanitize_werror.o")
     set_tests_properties(clang_o1_sanitize_werror PROPERTIES LABELS "ci;lint")
 endif()
