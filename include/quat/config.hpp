@@ -3,7 +3,7 @@
 #define QUAT_CONFIG_HPP_INCLUDED
 
 #define QUAT_VERSION_MAJOR 1
-#define QUAT_VERSION_MINOR 0
+#define QUAT_VERSION_MINOR 1
 #define QUAT_VERSION_PATCH 0
 
 /// Precondition check used throughout quat: QUAT_ASSERT(condition, message), the message a string
