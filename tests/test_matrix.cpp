@@ -94,7 +94,7 @@ TEST_CASE("blocks read and write the given rows and columns only", "[matrix]") {
     CHECK(quat::block<1, 6>(m, 2, 0) == matrix<double, 1, 6>{{{0, 0, 0, 7, 8, 9}}});
 }
 
-TEST_CASE("+=, -= and to_matrix3 keep every value", "[matrix]") {
+TEST_CASE("+=, -=, to_matrix3 and to_rotation_matrix keep every value", "[matrix]") {
     matrix3<double> m = matrix3<double>::identity();
     m += matrix3<double>::identity();
     CHECK(m == matrix3<double>::identity() * 2.0);
@@ -105,6 +105,9 @@ TEST_CASE("+=, -= and to_matrix3 keep every value", "[matrix]") {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) CHECK(same(i, j) == r(i, j));
     CHECK(same != matrix3<double>::identity());
+    CHECK(quat::to_rotation_matrix(same) == r);
+    static_assert(!std::is_convertible_v<matrix3<double>, quat::rotation_matrix<double>>);
+    static_assert(!std::is_convertible_v<quat::rotation_matrix<double>, matrix3<double>>);
 }
 
 TEST_CASE("float and long double matrices instantiate", "[matrix]") {

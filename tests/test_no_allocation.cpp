@@ -156,7 +156,7 @@ TEST_CASE("the estimation families allocate nothing: Lie groups, means, registra
     quat::matrix<double, 3, 6> j36{};
     sink += quat::so3::exp(w, &j3).w + quat::so3::log(a, &j3).x + j3(1, 2);
     sink += quat::so3::plus(a, w, &j3, &k3).y + quat::so3::minus(b, a, &j3, &k3).z;
-    sink += quat::so3::plus_left(w, a, &j3, &k3).w + quat::so3::minus_left(b, a, &j3, &k3).x;
+    sink += quat::so3::plus_left(a, w, &k3, &j3).w + quat::so3::minus_left(b, a, &j3, &k3).x;
     sink += quat::so3::compose(a, b, &j3, &k3).w + quat::so3::inverse(a, &j3).x;
     sink += quat::so3::act(a, w, &j3, &k3).y + quat::so3::between(a, b, &j3, &k3).z;
     sink += quat::so3::right_jacobian_inverse(w)(0, 0) + quat::so3::left_jacobian(w)(1, 1);
@@ -164,7 +164,7 @@ TEST_CASE("the estimation families allocate nothing: Lie groups, means, registra
     sink += quat::se3::exp(t, &j6).real.w + quat::se3::log(x, &j6).linear.x + j6(5, 5);
     sink += quat::se3::log(quat::to_homogeneous(x), &j6).angular.y;
     sink += quat::se3::plus(x, t, &j6, &k6).dual.x + quat::se3::minus(y, x, &j6, &k6).angular.z;
-    sink += quat::se3::plus_left(t, x, &j6, &k6).real.x;
+    sink += quat::se3::plus_left(x, t, &k6, &j6).real.x;
     sink += quat::se3::minus_left(y, x, &j6, &k6).linear.y;
     sink += quat::se3::compose(x, y, &j6, &k6).real.y + quat::se3::inverse(x, &j6).dual.z;
     sink += quat::se3::act(x, w, &j36, &j3).z + quat::se3::between(x, y, &j6, &k6).real.z;

@@ -307,7 +307,7 @@ TEST_CASE("se3 Jacobians equal central differences through the right plus and mi
                                          },
                                          h)),
                   tolerance);
-            const dq<double> ql = se3::plus_left(t, x, &d1, &d2);
+            const dq<double> ql = se3::plus_left(x, t, &d2, &d1);
             check("plus_left d_t",
                   relative_error(d1, central_differences<6, 6>(
                                          [&](const arr6& d) {
@@ -467,7 +467,7 @@ TEMPLATE_TEST_CASE("se3 instantiates for float, double and long double", "", flo
     (void)se3::between(x, x, &d1, &d2);
     (void)se3::plus(x, t, &d1, &d2);
     (void)se3::minus(x, x, &d1, &d2);
-    (void)se3::plus_left(t, x, &d1, &d2);
+    (void)se3::plus_left(x, t, &d2, &d1);
     (void)se3::minus_left(x, x, &d1, &d2);
     (void)se3::left_jacobian(t);
     (void)se3::left_jacobian_inverse(t);
@@ -538,10 +538,10 @@ TEST_CASE("se3 a literal nullptr skips any Jacobian of every se3 function") {
     CHECK((same(se3::minus(y, x, &one, nullptr), m) && one == full1));
     CHECK((same(se3::minus(y, x, nullptr, &one), m) && one == full2));
 
-    const dq<double> pl = se3::plus_left(t, x, &full1, &full2);
-    CHECK(se3::plus_left(t, x, nullptr, nullptr) == pl);
-    CHECK((se3::plus_left(t, x, &one, nullptr) == pl && one == full1));
-    CHECK((se3::plus_left(t, x, nullptr, &one) == pl && one == full2));
+    const dq<double> pl = se3::plus_left(x, t, &full1, &full2);
+    CHECK(se3::plus_left(x, t, nullptr, nullptr) == pl);
+    CHECK((se3::plus_left(x, t, &one, nullptr) == pl && one == full1));
+    CHECK((se3::plus_left(x, t, nullptr, &one) == pl && one == full2));
 
     const twist<double> ml = se3::minus_left(y, x, &full1, &full2);
     CHECK(same(se3::minus_left(y, x, nullptr, nullptr), ml));

@@ -105,6 +105,14 @@ TEST_CASE(
     }
 }
 
+TEST_CASE("so3::adjoint holds the numbers of to_matrix, as a matrix3") {
+    test::random_rotations random;
+    for (int k = 0; k < 100; ++k) {
+        const quatd q = random.unit_quaternion<double>();
+        CHECK(so3::adjoint(q) == to_matrix3(to_matrix(q)));
+    }
+}
+
 TEST_CASE(
     "so3 Jacobians satisfy Jr(w) = Jl(-w), Jl = R Jr, Jr^-1 Jr = I and the adjoint identity") {
     test::random_rotations random;
@@ -294,7 +302,7 @@ TEST_CASE("so3 Jacobians equal central differences through the right plus and mi
                                          h)),
                   tolerance);
             // plus_left
-            const quatd pl = so3::plus_left(w, x, &d1, &d2);
+            const quatd pl = so3::plus_left(x, w, &d2, &d1);
             check(std::string("plus_left d_w") + at,
                   relative_error(d1, central_differences<3, 3>(
                                          [&](const std::array<ld, 3>& d) {
@@ -447,7 +455,7 @@ TEMPLATE_TEST_CASE("so3 instantiates for float, double and long double", "", flo
     (void)so3::between(q, q, &d1, &d2);
     (void)so3::plus(q, w, &d1, &d2);
     (void)so3::minus(q, q, &d1, &d2);
-    (void)so3::plus_left(w, q, &d1, &d2);
+    (void)so3::plus_left(q, w, &d2, &d1);
     (void)so3::minus_left(q, q, &d1, &d2);
     (void)so3::left_jacobian(w);
     (void)so3::left_jacobian_inverse(w);
@@ -566,10 +574,10 @@ TEST_CASE("so3 a literal nullptr skips any Jacobian of every so3 function") {
     CHECK((so3::minus(y, x, &one, nullptr) == m && one == full1));
     CHECK((so3::minus(y, x, nullptr, &one) == m && one == full2));
 
-    const quatd pl = so3::plus_left(w, x, &full1, &full2);
-    CHECK(so3::plus_left(w, x, nullptr, nullptr) == pl);
-    CHECK((so3::plus_left(w, x, &one, nullptr) == pl && one == full1));
-    CHECK((so3::plus_left(w, x, nullptr, &one) == pl && one == full2));
+    const quatd pl = so3::plus_left(x, w, &full1, &full2);
+    CHECK(so3::plus_left(x, w, nullptr, nullptr) == pl);
+    CHECK((so3::plus_left(x, w, &one, nullptr) == pl && one == full1));
+    CHECK((so3::plus_left(x, w, nullptr, &one) == pl && one == full2));
 
     const vec3<double> ml = so3::minus_left(y, x, &full1, &full2);
     CHECK(so3::minus_left(y, x, nullptr, nullptr) == ml);
@@ -686,7 +694,7 @@ vec3<double> spelled_as_documented(const quatd& x, const quatd& y, const vec3<do
     const vec3<double> l = so3::log(x) + log(x, &j);
     const quatd i = so3::inverse(x) * inverse(x, &j);
     const quatd e =
-        exp(w) * exp(w, &j) * compose(x, y) * between(x, y) * plus(x, w) * plus_left(w, x);
+        exp(w) * exp(w, &j) * compose(x, y) * between(x, y) * plus(x, w) * plus_left(x, w);
     const vec3<double> m = minus(y, x) + minus_left(y, x) + act(x, w);
     const matrix3<double> jacobians = hat(w) * adjoint(x) * right_jacobian(w) * left_jacobian(w) *
                                       right_jacobian_inverse(w) * left_jacobian_inverse(w);

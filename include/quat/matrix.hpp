@@ -49,7 +49,8 @@ struct matrix {
     }
 };
 
-/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
+/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors). A rotation
+/// is a rotation_matrix; to_matrix3 and to_rotation_matrix convert between the two.
 template <class T>
 using matrix3 = matrix<T, 3, 3>;
 /// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
@@ -57,13 +58,24 @@ template <class T>
 using matrix6 = matrix<T, 6, 6>;
 
 #include "detail/isa_namespace.inc"
-/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians.
+/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians. The inverse of
+/// to_rotation_matrix; the two types do not convert implicitly.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> to_matrix3(const rotation_matrix<T>& m) noexcept {
     matrix3<T> out{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) out(i, j) = m(i, j);
     return out;
+}
+
+/// The same 3x3 numbers as a rotation_matrix, the inverse of to_matrix3: for a matrix the caller
+/// knows to be a rotation (R(q) = so3::adjoint(q), say), or one to hand to nearest_rotation or
+/// try_to_quaternion, which accept any 3x3 matrix. Nothing is checked: a rotation_matrix that is
+/// not a rotation breaks the preconditions of the functions that expect one.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> to_rotation_matrix(const matrix3<T>& m) noexcept {
+    return {
+        {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}}};
 }
 
 /// Element-wise sum.

@@ -264,10 +264,11 @@ namespace detail {
 
 /// The matrix of q with the vector part's factor 2 already applied by the caller: entries
 /// 1 - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
-/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys,
-                                                         T zs) noexcept {
+/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order. Matrix is the 3x3
+/// type to build, rotation_matrix or, for a Jacobian block (so3::adjoint), matrix3: the same
+/// entries, built in place.
+template <template <class> class Matrix = rotation_matrix, class T>
+[[nodiscard]] constexpr Matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys, T zs) noexcept {
     const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
     const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
     const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;

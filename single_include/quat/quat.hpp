@@ -1380,10 +1380,11 @@ namespace detail {
 
 /// The matrix of q with the vector part's factor 2 already applied by the caller: entries
 /// 1 - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
-/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order.
-template <class T>
-[[nodiscard]] constexpr rotation_matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys,
-                                                         T zs) noexcept {
+/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order. Matrix is the 3x3
+/// type to build, rotation_matrix or, for a Jacobian block (so3::adjoint), matrix3: the same
+/// entries, built in place.
+template <template <class> class Matrix = rotation_matrix, class T>
+[[nodiscard]] constexpr Matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys, T zs) noexcept {
     const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
     const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
     const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
@@ -5801,7 +5802,8 @@ struct matrix {
     }
 };
 
-/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors).
+/// A 3x3 matrix: Jacobians and covariances on SO(3)'s tangent space (rotation vectors). A rotation
+/// is a rotation_matrix; to_matrix3 and to_rotation_matrix convert between the two.
 template <class T>
 using matrix3 = matrix<T, 3, 3>;
 /// A 6x6 matrix: Jacobians and covariances on SE(3)'s tangent space (twists, linear part first).
@@ -5832,13 +5834,24 @@ inline namespace isa_sse {
 inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
-/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians.
+/// The same 3x3 numbers as a general matrix: to chain a rotation with Jacobians. The inverse of
+/// to_rotation_matrix; the two types do not convert implicitly.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> to_matrix3(const rotation_matrix<T>& m) noexcept {
     matrix3<T> out{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) out(i, j) = m(i, j);
     return out;
+}
+
+/// The same 3x3 numbers as a rotation_matrix, the inverse of to_matrix3: for a matrix the caller
+/// knows to be a rotation (R(q) = so3::adjoint(q), say), or one to hand to nearest_rotation or
+/// try_to_quaternion, which accept any 3x3 matrix. Nothing is checked: a rotation_matrix that is
+/// not a rotation breaks the preconditions of the functions that expect one.
+template <class T>
+[[nodiscard]] constexpr rotation_matrix<T> to_rotation_matrix(const matrix3<T>& m) noexcept {
+    return {
+        {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}}};
 }
 
 /// Element-wise sum.
@@ -6005,6 +6018,82 @@ constexpr void set_block(matrix<T, R, C>& m, int row, int col,
 #include <cstddef>
 #include <limits>
 
+// ---- begin quat/detail/summation.hpp ----
+// Sums over many elements in blocks: the fits (fitting/) and the geodesic means (lie/) add up
+// thousands to millions of terms, and a plain running sum loses digits as it grows.
+#ifndef QUAT_DETAIL_SUMMATION_HPP_INCLUDED
+#define QUAT_DETAIL_SUMMATION_HPP_INCLUDED
+
+#include <cstddef>
+
+namespace quat {
+
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// The sums run over the input in blocks of this many elements, each block from zero, then add the
+// blocks' sums: rounding errors grow with the block length plus the number of blocks instead of
+// with the count.
+inline constexpr std::size_t summation_block = 256;
+
+// sum term(i) weight(i) and sum weight(i) over i in [0, count), in blocks.
+template <class Value, class T>
+struct weighted_sum {
+    Value sum;
+    T total;
+};
+
+// `zero` is Value's zero; term(i) returns a Value, weight(i) a T, and Value supports + and * T.
+template <class T, class Value, class Term, class Weight>
+[[nodiscard]] constexpr weighted_sum<Value, T> blocked_weighted_sum(std::size_t count,
+                                                                    const Value& zero, Term term,
+                                                                    Weight weight) noexcept {
+    Value sum = zero;
+    T total = T(0);
+    for (std::size_t start = 0; start < count; start += summation_block) {
+        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+        Value block = zero;
+        T block_total = T(0);
+        for (std::size_t i = start; i < end; ++i) {
+            const T w = weight(i);
+            block = block + term(i) * w;
+            block_total = block_total + w;
+        }
+        sum = sum + block;
+        total = total + block_total;
+    }
+    return {sum, total};
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_DETAIL_SUMMATION_HPP_INCLUDED
+// ---- end quat/detail/summation.hpp ----
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -6032,11 +6121,6 @@ inline namespace isa_generic {
 #endif
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
-
-// align_vectors and mean sum their matrices over the input in blocks of this many elements, each
-// block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
-// number of blocks instead of with the count.
-inline constexpr std::size_t summation_block = 256;
 
 // Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
 // sweeps), each with its unit eigenvector: vectors[n] belongs to values[n].
@@ -7743,11 +7827,6 @@ template <class T>
     if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
     return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
 }
-/// n_minus_sin_over_cube(n n, n).
-template <class T>
-[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
-    return n_minus_sin_over_cube(n * n, n);
-}
 
 /// quartic_coefficient's closed form, for n >= 2, given a = one_minus_cos_over_square(n2, n) and
 /// sin n.
@@ -7766,11 +7845,6 @@ template <class T>
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
     });
 }
-/// quartic_coefficient(n n, n).
-template <class T>
-[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
-    return quartic_coefficient(n * n, n);
-}
 
 /// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
 /// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
@@ -7781,11 +7855,6 @@ template <class T>
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
     });
-}
-/// quintic_coefficient(n n, n).
-template <class T>
-[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
-    return quintic_coefficient(n * n, n);
 }
 
 /// (n^2 + 2 cos n - 2) / (2 n^4) = (1/2 - (1 - cos n) / n^2) / n^2 = 1/24 - n^2/720 + n^4/40320
@@ -7815,6 +7884,18 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
     return inverse_jacobian_coefficient(n * n, n);
+}
+
+/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the
+/// shape of every Jr, Jl and inverse here (so3.hpp) and of the blocks of rotation_spline's solve.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
+    const T diagonal = a - c * squared_norm(r);
+    const T bx = b * r.x, by = b * r.y, bz = b * r.z;
+    const T cxy = c * r.x * r.y, cxz = c * r.x * r.z, cyz = c * r.y * r.z;
+    return {{{diagonal + c * r.x * r.x, cxy - bz, cxz + by},
+             {cxy + bz, diagonal + c * r.y * r.y, cyz - bx},
+             {cxz - by, cyz + bx, diagonal + c * r.z * r.z}}};
 }
 
 /// The coefficients of Jr = I - a [r]x + b [r]x^2 and of Jr^-1 = I + [r]x / 2 + c [r]x^2.
@@ -7914,7 +7995,7 @@ template <class T>
 #endif  // QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 // ---- end quat/lie/detail/rotation_vector_jacobian.hpp ----
 // ---- begin quat/paths/detail/block_tridiagonal.hpp ----
-// 3x3 matrices and the block tridiagonal solve behind rotation_spline's rates.
+// The block tridiagonal solve behind rotation_spline's rates, on 3x3 blocks (matrix3).
 #ifndef QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
 #define QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
 
@@ -7948,29 +8029,6 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-template <class T>
-struct matrix3 {
-    T m[3][3];
-};
-
-/// a I + b [r]x + c [r]x^2, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I.
-template <class T>
-[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
-    const T v[3] = {r.x, r.y, r.z};
-    const T n2 = squared_norm(r);
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = c * v[i] * v[j];
-    for (int i = 0; i < 3; ++i) result.m[i][i] += a - c * n2;
-    result.m[0][1] -= b * v[2];
-    result.m[0][2] += b * v[1];
-    result.m[1][0] += b * v[2];
-    result.m[1][2] -= b * v[0];
-    result.m[2][0] -= b * v[1];
-    result.m[2][1] += b * v[0];
-    return result;
-}
-
 /// u v^T
 template <class T>
 [[nodiscard]] constexpr matrix3<T> outer(const vec3<T>& u, const vec3<T>& v) noexcept {
@@ -7979,57 +8037,18 @@ template <class T>
              {u.z * v.x, u.z * v.y, u.z * v.z}}};
 }
 
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator+(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] + b.m[i][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator-(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] - b.m[i][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, T s) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) result.m[i][j] = a.m[i][j] * s;
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr matrix3<T> operator*(const matrix3<T>& a, const matrix3<T>& b) noexcept {
-    matrix3<T> result{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            result.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-    return result;
-}
-
-template <class T>
-[[nodiscard]] constexpr vec3<T> operator*(const matrix3<T>& a, const vec3<T>& v) noexcept {
-    return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
-            a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
-            a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
-}
-
 /// The inverse by cofactors; the blocks it is used on are diagonally dominant.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> inverse(const matrix3<T>& a) noexcept {
-    const auto& m = a.m;
-    matrix3<T> c{{{m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2],
-                   m[0][1] * m[1][2] - m[0][2] * m[1][1]},
-                  {m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
-                   m[0][2] * m[1][0] - m[0][0] * m[1][2]},
-                  {m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1],
-                   m[0][0] * m[1][1] - m[0][1] * m[1][0]}}};
-    const T determinant = m[0][0] * c.m[0][0] + m[0][1] * c.m[1][0] + m[0][2] * c.m[2][0];
+    const auto& m = a.elements;
+    const matrix3<T> c{
+        {{m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2],
+          m[0][1] * m[1][2] - m[0][2] * m[1][1]},
+         {m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0],
+          m[0][2] * m[1][0] - m[0][0] * m[1][2]},
+         {m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1],
+          m[0][0] * m[1][1] - m[0][1] * m[1][0]}}};
+    const T determinant = m[0][0] * c(0, 0) + m[0][1] * c(1, 0) + m[0][2] * c(2, 0);
     return c * (T(1) / determinant);
 }
 
@@ -8337,7 +8356,7 @@ bool rotation_spline<T>::build() {
         S dt;
         vec3<S> r;
         detail::jacobian_rate_coefficients<S> k;
-        detail::matrix3<S> to_velocity, from_velocity, diagonal;
+        matrix3<S> to_velocity, from_velocity, diagonal;
         vec3<S> start, jump, step, saved;
     };
     std::vector<record> work(segments);
@@ -8419,7 +8438,7 @@ bool rotation_spline<T>::build() {
             // from segments m (before it) and m + 1 (after it).
             detail::solve_block_tridiagonal(
                 inner, [&](std::size_t m) { return work[m].to_velocity * (S(2) / work[m].dt); },
-                [&](std::size_t m) -> detail::matrix3<S>& { return work[m].diagonal; },
+                [&](std::size_t m) -> matrix3<S>& { return work[m].diagonal; },
                 [&](std::size_t m) { return work[m + 1].from_velocity * (S(2) / work[m + 1].dt); },
                 [&](std::size_t m) -> vec3<S>& { return work[m].step; });
             S longest_step = S(0), largest_velocity = S(0);

@@ -19,7 +19,7 @@ T lie() {
     const quaternion<T> x = so3::exp(w, &a), y = so3::plus(x, w, &a, &b);
     T sum = so3::log(y, &a).x + so3::minus(y, x, &a, &b).y + so3::minus_left(y, x, &a, &b).z;
     sum += so3::compose(x, y, &a, &b).w + so3::inverse(x, &a).x + so3::between(x, y, &a, &b).y;
-    sum += so3::act(x, p, &a, &b).z + so3::plus_left(w, x, &a, &b).w + so3::vee(so3::hat(w)).x;
+    sum += so3::act(x, p, &a, &b).z + so3::plus_left(x, w, &b, &a).w + so3::vee(so3::hat(w)).x;
     sum += (so3::right_jacobian(w) * so3::left_jacobian(w) * so3::right_jacobian_inverse(w) *
             so3::left_jacobian_inverse(w) * so3::adjoint(x))(0, 0);
     const se3::twist<T> t{p, w};
@@ -30,7 +30,7 @@ T lie() {
            se3::minus_left(n, m, &c, &d).linear.z + se3::log(to_homogeneous(m), &c).linear.y;
     sum += se3::compose(m, n, &c, &d).real.w + se3::inverse(m, &c).dual.x +
            se3::between(m, n, &c, &d).real.y + se3::act(m, p, &e, &a).z +
-           se3::plus_left(t, m, &c, &d).real.z;
+           se3::plus_left(m, t, &d, &c).real.z;
     sum += se3::vee(se3::hat(t - t + -t)).angular.x + se3::to_twist(se3::to_vector(t)).linear.x;
     sum += (se3::right_jacobian(t) * se3::left_jacobian(t) * se3::right_jacobian_inverse(t) *
             se3::left_jacobian_inverse(t) * se3::adjoint(m))(5, 5);

@@ -2,7 +2,8 @@
 // twists, SE(3)'s Jacobians, and the group operations with their Jacobians, in so3.hpp's convention
 // (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018;
 // manif's): J = d (f(X exp(tau)) (-) f(X)) / d tau at tau = 0 with the right plus and minus,
-// Jacobians as optional out-parameters. A twist is (rho, omega), linear part first as in Sophus and
+// Jacobians as optional out-parameters named J_out_in, after the inputs in their order; every plus
+// and minus takes the element first. A twist is (rho, omega), linear part first as in Sophus and
 // manif; exp(rho, omega) is the motion x -> exp(omega) x + Jl(omega) rho. The Jacobians' Q block is
 // T. Barfoot, "State Estimation for Robotics", 2017, eq. 7.86 (Sola et al. eq. 180).
 // docs/lie-groups.md compares the conventions of Sophus, manif, GTSAM and Barfoot.
@@ -35,8 +36,7 @@ namespace detail {
 ///     Q = [(1/2 - c2 n^2) rho + (2 c2 - c1) d omega]x + c1 (rho omega^T + omega rho^T)
 ///         - 2 c3 d omega omega^T + 2 d (c3 n^2 - c1) I.
 template <class T>
-[[nodiscard]] constexpr ::quat::matrix<T, 3, 3> se3_q_block(const vec3<T>& rho,
-                                                            const vec3<T>& omega) noexcept {
+[[nodiscard]] constexpr matrix3<T> se3_q_block(const vec3<T>& rho, const vec3<T>& omega) noexcept {
     const T n = norm(omega), n2 = squared_angle(omega, n);
     const T c1 = n_minus_sin_over_cube(n2, n), c2 = cosine_remainder_coefficient(n2, n);
     const T c3 = quintic_coefficient(n2, n) * T(-0.5);
@@ -44,7 +44,7 @@ template <class T>
     const vec3<T> k = rho * (T(0.5) - c2 * n2) + omega * ((c2 + c2 - c1) * d);
     const T diagonal = T(2) * d * (c3 * n2 - c1), e = T(-2) * c3 * d;
     const T r[3] = {rho.x, rho.y, rho.z}, w[3] = {omega.x, omega.y, omega.z};
-    ::quat::matrix<T, 3, 3> q = so3::hat(k);
+    matrix3<T> q = so3::hat(k);
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j)
             q(i, j) = q(i, j) + c1 * (r[i] * w[j] + w[i] * r[j]) + e * w[i] * w[j];
@@ -62,9 +62,9 @@ template <class T>
 
 /// [[a, b], [0, a]] from 3x3 blocks.
 template <class T>
-[[nodiscard]] constexpr ::quat::matrix<T, 6, 6> upper_block_triangular(
-    const ::quat::matrix<T, 3, 3>& a, const ::quat::matrix<T, 3, 3>& b) noexcept {
-    ::quat::matrix<T, 6, 6> m = ::quat::matrix<T, 6, 6>::zero();
+[[nodiscard]] constexpr matrix6<T> upper_block_triangular(const matrix3<T>& a,
+                                                          const matrix3<T>& b) noexcept {
+    matrix6<T> m = matrix6<T>::zero();
     set_block(m, 0, 0, a);
     set_block(m, 0, 3, b);
     set_block(m, 3, 3, a);
@@ -170,9 +170,13 @@ template <class T>
     return left_jacobian_inverse(-t);
 }
 
-/// The rotation matrix of a unit dual quaternion, as a matrix3.
+/// R(x), x's rotation, as a matrix3: not a rotation_matrix, whose home is to_matrix(rotation_of(x)).
+/// so3::adjoint(x.real) is the same 3x3 block for Jacobians.
 template <class T>
-[[nodiscard]] constexpr matrix3<T> rotation_matrix_of(const dual_quaternion<T>& x) noexcept {
+[[deprecated(
+    "use to_matrix(rotation_of(x)) for the rotation_matrix, or so3::adjoint(x.real) for the "
+    "matrix3 Jacobian block")]] [[nodiscard]] constexpr matrix3<T>
+rotation_matrix_of(const dual_quaternion<T>& x) noexcept {
     return so3::adjoint(x.real);
 }
 
@@ -180,30 +184,30 @@ template <class T>
 /// Precondition: unit X.
 template <class T>
 [[nodiscard]] constexpr matrix6<T> adjoint(const dual_quaternion<T>& x) noexcept {
-    const matrix3<T> r = rotation_matrix_of(x);
+    const matrix3<T> r = so3::adjoint(x.real);
     return quat::detail::upper_block_triangular(r, so3::hat(translation_of(x)) * r);
 }
 
-/// The inverse motion of a unit X: both parts conjugated, exact for unit X (dot(real, dual) = 0);
-/// *d = -Ad(X).
+/// i = X^-1, both parts conjugated, exact for unit X (dot(real, dual) = 0); *J_i_x = -Ad(X).
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> inverse(
-    const dual_quaternion<T>& x, quat::detail::type_identity_t<matrix6<T>>* d = nullptr) noexcept {
-    if (d != nullptr) *d = -adjoint(x);
+    const dual_quaternion<T>& x,
+    quat::detail::type_identity_t<matrix6<T>>* J_i_x = nullptr) noexcept {
+    if (J_i_x != nullptr) *J_i_x = -adjoint(x);
     return quat::detail::rigid_inverse(x);
 }
 
-/// exp(t): the motion x -> exp(omega) x + Jl(omega) rho as a unit dual quaternion; *jacobian =
-/// Jr(t). Any finite twist; a NaN or infinite component gives NaN in every component.
+/// x = exp(t): the motion p -> exp(omega) p + Jl(omega) rho as a unit dual quaternion;
+/// *J_x_t = Jr(t). Any finite twist; a NaN or infinite component gives NaN in every component.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> exp(
-    const twist<T>& t, quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
+    const twist<T>& t, quat::detail::type_identity_t<matrix6<T>>* J_x_t = nullptr) noexcept {
     // Jl(omega) = Jr(omega)^T ([omega]x is skew, [omega]x^2 symmetric): the translation needs Jr
     // even when the Jacobian is not asked for.
     matrix3<T> jr{};
     const quaternion<T> rotation = so3::exp(t.angular, &jr);
-    if (jacobian != nullptr)
-        *jacobian = quat::detail::upper_block_triangular(
+    if (J_x_t != nullptr)
+        *J_x_t = quat::detail::upper_block_triangular(
             jr, quat::detail::se3_q_block(-t.linear, -t.angular));
     const dual_quaternion<T> motion = to_dual_quaternion(rotation, transpose(jr) * t.linear);
     if constexpr (std::is_floating_point_v<T>) {
@@ -214,117 +218,128 @@ template <class T>
     return motion;
 }
 
-/// log(X): the twist with |omega| in [0, pi] whose exp is X (X and -X alike); *jacobian =
-/// Jr(log X)^-1. Precondition: unit X.
+/// t = log(X): the twist with |omega| in [0, pi] whose exp is X (X and -X alike);
+/// *J_t_x = Jr(t)^-1. Precondition: unit X.
 template <class T>
 [[nodiscard]] constexpr twist<T> log(
     const dual_quaternion<T>& x,
-    quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
+    quat::detail::type_identity_t<matrix6<T>>* J_t_x = nullptr) noexcept {
     // Jl(omega)^-1 = (Jr(omega)^-1)^T ([omega]x is skew, [omega]x^2 symmetric).
     matrix3<T> a{};
     const vec3<T> omega = so3::log(x.real, &a);
     const twist<T> t{transpose(a) * translation_of(x), omega};
-    if (jacobian != nullptr)
-        *jacobian = quat::detail::upper_block_triangular(
+    if (J_t_x != nullptr)
+        *J_t_x = quat::detail::upper_block_triangular(
             a, -(a * quat::detail::se3_q_block(-t.linear, -t.angular) * a));
     return t;
 }
 
-/// log of the rigid motion m = [R t; 0 1]: log(to_dual_quaternion(m)), with the same Jacobian (one
-/// group element, two forms; to_homogeneous(exp(t)) is the other way). Precondition: m rigid.
+/// log of the rigid motion m = [R t; 0 1]: log(to_dual_quaternion(m)), with the same Jacobian
+/// *J_t_m (one group element, two forms; to_homogeneous(exp(t)) is the other way). Precondition:
+/// m rigid.
 template <class T>
 [[nodiscard]] constexpr twist<T> log(
     const homogeneous_matrix<T>& m,
-    quat::detail::type_identity_t<matrix6<T>>* jacobian = nullptr) noexcept {
-    return log(to_dual_quaternion(m), jacobian);
+    quat::detail::type_identity_t<matrix6<T>>* J_t_m = nullptr) noexcept {
+    return log(to_dual_quaternion(m), J_t_m);
 }
 
-/// a * b (b first); *d_a = Ad(b)^-1, *d_b = I. Precondition: unit a and b.
+/// c = a * b (b first); *J_c_a = Ad(b)^-1, *J_c_b = I. Precondition: unit a and b.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> compose(
     const dual_quaternion<T>& a, const dual_quaternion<T>& b,
-    quat::detail::type_identity_t<matrix6<T>>* d_a = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_b = nullptr) noexcept {
-    if (d_a != nullptr) *d_a = adjoint(quat::detail::rigid_inverse(b));
-    if (d_b != nullptr) *d_b = matrix6<T>::identity();
+    quat::detail::type_identity_t<matrix6<T>>* J_c_a = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_c_b = nullptr) noexcept {
+    if (J_c_a != nullptr) *J_c_a = adjoint(quat::detail::rigid_inverse(b));
+    if (J_c_b != nullptr) *J_c_b = matrix6<T>::identity();
     return a * b;
 }
 
-/// transform(X, p) = R p + t; *d_x = [R, -R [p]x] (3x6), *d_p = R. Precondition: unit X.
+/// u = transform(X, p) = R p + t; *J_u_x = [R, -R [p]x] (3x6), *J_u_p = R. Precondition: unit X.
 template <class T>
 [[nodiscard]] constexpr vec3<T> act(
     const dual_quaternion<T>& x, const vec3<T>& p,
-    quat::detail::type_identity_t<matrix<T, 3, 6>>* d_x = nullptr,
-    quat::detail::type_identity_t<matrix3<T>>* d_p = nullptr) noexcept {
-    if (d_x != nullptr || d_p != nullptr) {
-        const matrix3<T> r = rotation_matrix_of(x);
-        if (d_x != nullptr) {
-            set_block(*d_x, 0, 0, r);
-            set_block(*d_x, 0, 3, -(r * so3::hat(p)));
+    quat::detail::type_identity_t<matrix<T, 3, 6>>* J_u_x = nullptr,
+    quat::detail::type_identity_t<matrix3<T>>* J_u_p = nullptr) noexcept {
+    if (J_u_x != nullptr || J_u_p != nullptr) {
+        const matrix3<T> r = so3::adjoint(x.real);
+        if (J_u_x != nullptr) {
+            set_block(*J_u_x, 0, 0, r);
+            set_block(*J_u_x, 0, 3, -(r * so3::hat(p)));
         }
-        if (d_p != nullptr) *d_p = r;
+        if (J_u_p != nullptr) *J_u_p = r;
     }
     return transform(x, p);
 }
 
-/// x^-1 y, the motion from x to y in x's frame; *d_x = -Ad(x^-1 y)^-1, *d_y = I. Unit x and y.
+/// d = x^-1 y, the motion from x to y in x's frame; *J_d_x = -Ad(d)^-1, *J_d_y = I. Unit x and y.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> between(
     const dual_quaternion<T>& x, const dual_quaternion<T>& y,
-    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr) noexcept {
+    quat::detail::type_identity_t<matrix6<T>>* J_d_x = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_d_y = nullptr) noexcept {
     const dual_quaternion<T> d = quat::detail::rigid_inverse(x) * y;
-    if (d_x != nullptr) *d_x = -adjoint(quat::detail::rigid_inverse(d));
-    if (d_y != nullptr) *d_y = matrix6<T>::identity();
+    if (J_d_x != nullptr) *J_d_x = -adjoint(quat::detail::rigid_inverse(d));
+    if (J_d_y != nullptr) *J_d_y = matrix6<T>::identity();
     return d;
 }
 
-/// x (+) t = x exp(t); *d_x = Ad(exp t)^-1, *d_t = Jr(t). Precondition: unit x.
+/// y = x (+) t = x exp(t); *J_y_x = Ad(exp t)^-1, *J_y_t = Jr(t). Precondition: unit x.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> plus(
     const dual_quaternion<T>& x, const twist<T>& t,
-    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_t = nullptr) noexcept {
-    const dual_quaternion<T> e = exp(t, d_t);
-    if (d_x != nullptr) *d_x = adjoint(quat::detail::rigid_inverse(e));
+    quat::detail::type_identity_t<matrix6<T>>* J_y_x = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_y_t = nullptr) noexcept {
+    const dual_quaternion<T> e = exp(t, J_y_t);
+    if (J_y_x != nullptr) *J_y_x = adjoint(quat::detail::rigid_inverse(e));
     return x * e;
 }
 
-/// y (-) x = log(x^-1 y); *d_y = Jr(t)^-1, *d_x = -Jl(t)^-1 for t the result. Unit x and y.
+/// t = y (-) x = log(x^-1 y); *J_t_y = Jr(t)^-1, *J_t_x = -Jl(t)^-1. Unit x and y.
 template <class T>
 [[nodiscard]] constexpr twist<T> minus(
     const dual_quaternion<T>& y, const dual_quaternion<T>& x,
-    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
-    const twist<T> t = log(quat::detail::rigid_inverse(x) * y, d_y);
-    if (d_x != nullptr) *d_x = -left_jacobian_inverse(t);
+    quat::detail::type_identity_t<matrix6<T>>* J_t_y = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_t_x = nullptr) noexcept {
+    const twist<T> t = log(quat::detail::rigid_inverse(x) * y, J_t_y);
+    if (J_t_x != nullptr) *J_t_x = -left_jacobian_inverse(t);
     return t;
 }
 
-/// exp(t) x, the left plus; *d_t = Ad(x)^-1 Jr(t), *d_x = I (right-convention Jacobians, as
-/// everywhere here). Precondition: unit x.
+/// y = exp(t) x, the left plus, element first as in plus; *J_y_x = I, *J_y_t = Ad(x)^-1 Jr(t)
+/// (right-convention Jacobians, as everywhere here). Precondition: unit x.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> plus_left(
-    const twist<T>& t, const dual_quaternion<T>& x,
-    quat::detail::type_identity_t<matrix6<T>>* d_t = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
-    if (d_t != nullptr) *d_t = adjoint(quat::detail::rigid_inverse(x)) * right_jacobian(t);
-    if (d_x != nullptr) *d_x = matrix6<T>::identity();
+    const dual_quaternion<T>& x, const twist<T>& t,
+    quat::detail::type_identity_t<matrix6<T>>* J_y_x = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_y_t = nullptr) noexcept {
+    if (J_y_t != nullptr) *J_y_t = adjoint(quat::detail::rigid_inverse(x)) * right_jacobian(t);
+    if (J_y_x != nullptr) *J_y_x = matrix6<T>::identity();
     return exp(t) * x;
 }
 
-/// log(y x^-1), the left minus; *d_y = Jr(t)^-1 Ad(x), *d_x = -Jr(t)^-1 Ad(x) for t the result
+/// plus_left with the tangent first, the order before 1.1.0: plus_left(x, t) with the Jacobians in
+/// this call's order (*J_y_t, then *J_y_x). Kept until 2.0.0 so that code written for 1.0 compiles.
+template <class T>
+[[deprecated("use plus_left(x, t): element first")]] [[nodiscard]] constexpr dual_quaternion<T>
+plus_left(const twist<T>& t, const dual_quaternion<T>& x,
+          quat::detail::type_identity_t<matrix6<T>>* J_y_t = nullptr,
+          quat::detail::type_identity_t<matrix6<T>>* J_y_x = nullptr) noexcept {
+    return plus_left(x, t, J_y_x, J_y_t);
+}
+
+/// t = y (-)left x = log(y x^-1), the left minus; *J_t_y = Jr(t)^-1 Ad(x), *J_t_x = -Jr(t)^-1 Ad(x)
 /// (right-convention Jacobians). Precondition: unit x and y.
 template <class T>
 [[nodiscard]] constexpr twist<T> minus_left(
     const dual_quaternion<T>& y, const dual_quaternion<T>& x,
-    quat::detail::type_identity_t<matrix6<T>>* d_y = nullptr,
-    quat::detail::type_identity_t<matrix6<T>>* d_x = nullptr) noexcept {
+    quat::detail::type_identity_t<matrix6<T>>* J_t_y = nullptr,
+    quat::detail::type_identity_t<matrix6<T>>* J_t_x = nullptr) noexcept {
     const twist<T> t = log(y * quat::detail::rigid_inverse(x));
-    if (d_y != nullptr || d_x != nullptr) {
+    if (J_t_y != nullptr || J_t_x != nullptr) {
         const matrix6<T> j = right_jacobian_inverse(t) * adjoint(x);
-        if (d_y != nullptr) *d_y = j;
-        if (d_x != nullptr) *d_x = -j;
+        if (J_t_y != nullptr) *J_t_y = j;
+        if (J_t_x != nullptr) *J_t_x = -j;
     }
     return t;
 }

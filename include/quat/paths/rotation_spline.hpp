@@ -273,7 +273,7 @@ bool rotation_spline<T>::build() {
         S dt;
         vec3<S> r;
         detail::jacobian_rate_coefficients<S> k;
-        detail::matrix3<S> to_velocity, from_velocity, diagonal;
+        matrix3<S> to_velocity, from_velocity, diagonal;
         vec3<S> start, jump, step, saved;
     };
     std::vector<record> work(segments);
@@ -355,7 +355,7 @@ bool rotation_spline<T>::build() {
             // from segments m (before it) and m + 1 (after it).
             detail::solve_block_tridiagonal(
                 inner, [&](std::size_t m) { return work[m].to_velocity * (S(2) / work[m].dt); },
-                [&](std::size_t m) -> detail::matrix3<S>& { return work[m].diagonal; },
+                [&](std::size_t m) -> matrix3<S>& { return work[m].diagonal; },
                 [&](std::size_t m) { return work[m + 1].from_velocity * (S(2) / work[m + 1].dt); },
                 [&](std::size_t m) -> vec3<S>& { return work[m].step; });
             S longest_step = S(0), largest_velocity = S(0);

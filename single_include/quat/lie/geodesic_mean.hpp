@@ -116,32 +116,21 @@ template <class T, class Weight>
                                                               std::size_t count,
                                                               Weight weight) noexcept {
     const quaternion<T> back = conjugate(mean);
-    vec3<T> sum{T(0), T(0), T(0)};
-    T total = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
-        vec3<T> block{T(0), T(0), T(0)};
-        T block_total = T(0);
-        for (std::size_t i = start; i < end; ++i) {
-            const T w = weight(i);
-            block = block + to_rotation_vector(back * rotations[i]) * w;
-            block_total = block_total + w;
-        }
-        sum = sum + block;
-        total = total + block_total;
-    }
-    const vec3<T> delta = total > T(0) ? sum / total : sum * quiet_nan<T>();
+    const weighted_sum<vec3<T>, T> s = blocked_weighted_sum<T>(
+        count, vec3<T>{T(0), T(0), T(0)},
+        [&](std::size_t i) { return to_rotation_vector(back * rotations[i]); }, weight);
+    const vec3<T> delta = s.total > T(0) ? s.sum / s.total : s.sum * quiet_nan<T>();
     return {delta, norm(delta)};
 }
 
-// The largest angle from mean to a rotation of positive weight.
-template <class T, class Weight>
-[[nodiscard]] constexpr T rotation_spread(const quaternion<T>& mean, const quaternion<T>* rotations,
+// The largest angle from mean to rotation(i), over the i of positive weight.
+template <class T, class Rotation, class Weight>
+[[nodiscard]] constexpr T rotation_spread(const quaternion<T>& mean, Rotation rotation,
                                           std::size_t count, Weight weight) noexcept {
     T spread = T(0);
     for (std::size_t i = 0; i < count; ++i)
         if (weight(i) > T(0))
-            spread = max(spread, norm(to_rotation_vector(conjugate(mean) * rotations[i])));
+            spread = max(spread, norm(to_rotation_vector(conjugate(mean) * rotation(i))));
     return spread;
 }
 
@@ -171,7 +160,8 @@ template <bool checked, class T, class Weight>
             return moved.w < T(0) ? -moved : moved;
         });
     outcome.converged = outcome.converged && chordal.valid;
-    outcome.spread = rotation_spread(outcome.mean, rotations, count, weight);
+    outcome.spread = rotation_spread(
+        outcome.mean, [rotations](std::size_t i) { return rotations[i]; }, count, weight);
     return outcome;
 }
 
@@ -200,21 +190,10 @@ template <class T, class Weight>
                                                  T length) noexcept {
     const dual_quaternion<T> back = se3::inverse(mean);
     const vec3<T> zero{T(0), T(0), T(0)};
-    se3::twist<T> sum{zero, zero};
-    T total = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
-        se3::twist<T> block{zero, zero};
-        T block_total = T(0);
-        for (std::size_t i = start; i < end; ++i) {
-            const T w = weight(i);
-            block = block + se3::log(back * motions[i]) * w;
-            block_total = block_total + w;
-        }
-        sum = sum + block;
-        total = total + block_total;
-    }
-    const se3::twist<T> delta = sum * (total > T(0) ? T(1) / total : quiet_nan<T>());
+    const weighted_sum<se3::twist<T>, T> s = blocked_weighted_sum<T>(
+        count, se3::twist<T>{zero, zero},
+        [&](std::size_t i) { return se3::log(back * motions[i]); }, weight);
+    const se3::twist<T> delta = s.sum * (s.total > T(0) ? T(1) / s.total : quiet_nan<T>());
     return {delta, max(norm(delta.angular), norm(delta.linear) / length)};
 }
 
@@ -262,12 +241,8 @@ template <bool checked, class T, class Weight>
         outcome.mean = {nan_quaternion<T>(), nan_quaternion<T>()};
         outcome.converged = false;
     }
-    T spread = T(0);
-    for (std::size_t i = 0; i < count; ++i)
-        if (weight(i) > T(0))
-            spread = max(spread,
-                         norm(to_rotation_vector(conjugate(outcome.mean.real) * motions[i].real)));
-    outcome.spread = spread;
+    outcome.spread = rotation_spread(
+        outcome.mean.real, [motions](std::size_t i) { return motions[i].real; }, count, weight);
     return outcome;
 }
 

@@ -33,8 +33,10 @@
 // with the right (local) plus and minus, X (+) tau = X exp(tau) and Y (-) X = log(X^-1 Y); where an
 // input or output is a vector, plain + and -. Jacobians are optional out-parameters (nullptr skips
 // them; the pointers' types are not deduced, so that a literal nullptr converts), after the
-// inputs; the left operations plus_left and minus_left change the operation, not the convention of
-// their Jacobians. docs/lie-groups.md compares Sophus, GTSAM and Barfoot.
+// inputs and in their order, named J_out_in (J_c_a for c = compose(a, b)); every plus and minus
+// takes the element first and the tangent second. The left operations plus_left and minus_left
+// change the operation, not the convention of their Jacobians. docs/conventions.md lists the names;
+// docs/lie-groups.md compares Sophus, GTSAM and Barfoot.
 #ifndef QUAT_LIE_SO3_HPP_INCLUDED
 #define QUAT_LIE_SO3_HPP_INCLUDED
 
@@ -43,47 +45,6 @@
 #include "../quat.hpp"
 
 namespace quat {
-
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// a I + b [w]x + c [w]x^2 as a matrix, with [w]x^2 = w w^T - n2 I (n2 = |w|^2).
-template <class T>
-[[nodiscard]] constexpr ::quat::matrix<T, 3, 3> skew_series(const vec3<T>& w, T n2, T a, T b,
-                                                            T c) noexcept {
-    const T diagonal = a - c * n2;
-    const T bx = b * w.x, by = b * w.y, bz = b * w.z;
-    const T cxy = c * w.x * w.y, cxz = c * w.x * w.z, cyz = c * w.y * w.z;
-    return {{{diagonal + c * w.x * w.x, cxy - bz, cxz + by},
-             {cxy + bz, diagonal + c * w.y * w.y, cyz - bx},
-             {cxz - by, cyz + bx, diagonal + c * w.z * w.z}}};
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
 
 // so3 holds the instruction-set key inside it, as se3 does (which must: its twist type stays
 // outside the key like every value type), so that quat::so3 and quat::se3 name one namespace each.
@@ -134,7 +95,7 @@ template <class T>
 [[nodiscard]] constexpr matrix3<T> right_jacobian(const vec3<T>& w) noexcept {
     const detail::right_jacobian_coefficients<T> k =
         detail::right_jacobian_coefficients_of(w, false);
-    return detail::skew_series(w, squared_norm(w), T(1), -k.a, k.b);
+    return detail::skew_polynomial(w, T(1), -k.a, k.b);
 }
 
 /// The left Jacobian Jl(w) = Jr(-w) = R(w) Jr(w): exp(w + d) = exp(Jl(w) d) exp(w). Any w.
@@ -142,7 +103,7 @@ template <class T>
 [[nodiscard]] constexpr matrix3<T> left_jacobian(const vec3<T>& w) noexcept {
     const detail::right_jacobian_coefficients<T> k =
         detail::right_jacobian_coefficients_of(w, false);
-    return detail::skew_series(w, squared_norm(w), T(1), k.a, k.b);
+    return detail::skew_polynomial(w, T(1), k.a, k.b);
 }
 
 /// Jr(w)^-1 = I + [w]x / 2 + (1/n^2 - (1 + cos n)/(2 n sin n)) [w]x^2. Precondition: |w| < 2 pi
@@ -151,7 +112,7 @@ template <class T>
 [[nodiscard]] constexpr matrix3<T> right_jacobian_inverse(const vec3<T>& w) noexcept {
     const detail::right_jacobian_coefficients<T> k =
         detail::right_jacobian_coefficients_of(w, true);
-    return detail::skew_series(w, squared_norm(w), T(1), T(0.5), k.c);
+    return detail::skew_polynomial(w, T(1), T(0.5), k.c);
 }
 
 /// Jl(w)^-1 = Jr(-w)^-1 = I - [w]x / 2 + (1/n^2 - (1 + cos n)/(2 n sin n)) [w]x^2.
@@ -160,139 +121,152 @@ template <class T>
 [[nodiscard]] constexpr matrix3<T> left_jacobian_inverse(const vec3<T>& w) noexcept {
     const detail::right_jacobian_coefficients<T> k =
         detail::right_jacobian_coefficients_of(w, true);
-    return detail::skew_series(w, squared_norm(w), T(1), T(-0.5), k.c);
+    return detail::skew_polynomial(w, T(1), T(-0.5), k.c);
 }
 
-/// The adjoint of q, Ad(q) = R(q): q exp(w) = exp(R w) q. Precondition: unit q.
+/// The adjoint of q, Ad(q) = R(q): q exp(w) = exp(R w) q. The entries of to_matrix(q), as the
+/// matrix3 that Jacobians chain with. Precondition: unit q.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> adjoint(const quaternion<T>& q) noexcept {
-    return to_matrix3(to_matrix(q));
+    QUAT_ASSERT(detail::is_near_unit(q), "quat::so3::adjoint: q is not a unit quaternion");
+    return detail::scaled_matrix<matrix3>(q, q.x + q.x, q.y + q.y, q.z + q.z);
 }
 
-/// exp(w) = from_rotation_vector(w), the rotation by |w| about w / |w|; *jacobian = Jr(w).
+/// q = exp(w) = from_rotation_vector(w), the rotation by |w| about w / |w|; *J_q_w = Jr(w).
 /// Any finite w; NaN in w gives NaN.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(
-    const vec3<T>& w, detail::type_identity_t<matrix3<T>>* jacobian = nullptr) noexcept {
+    const vec3<T>& w, detail::type_identity_t<matrix3<T>>* J_q_w = nullptr) noexcept {
     if constexpr (std::is_floating_point_v<T>) {
         // from_rotation_vector(w) and right_jacobian(w) from one sincos of the half angle.
         const detail::cos_and_sinc<T> half = detail::half_angle_of(w);
-        if (jacobian != nullptr) {
+        if (J_q_w != nullptr) {
             const T n = norm(w);
             const detail::right_jacobian_coefficients<T> k =
                 detail::right_jacobian_coefficients_of(n * n, n, half, false);
-            *jacobian = detail::skew_series(w, squared_norm(w), T(1), -k.a, k.b);
+            *J_q_w = detail::skew_polynomial(w, T(1), -k.a, k.b);
         }
         const T scale = half.sinc * T(0.5);
         return {half.cos, w.x * scale, w.y * scale, w.z * scale};
     } else {
-        if (jacobian != nullptr) *jacobian = right_jacobian(w);
+        if (J_q_w != nullptr) *J_q_w = right_jacobian(w);
         return from_rotation_vector(w);
     }
 }
 
-/// log(q) = to_rotation_vector(q), angle in [0, pi], q and -q alike; *jacobian = Jr(log q)^-1.
+/// w = log(q) = to_rotation_vector(q), angle in [0, pi], q and -q alike; *J_w_q = Jr(w)^-1.
 /// Precondition for the Jacobian: unit q (the value accepts any non-zero scale of q).
 template <class T>
-[[nodiscard]] constexpr vec3<T> log(
-    const quaternion<T>& q, detail::type_identity_t<matrix3<T>>* jacobian = nullptr) noexcept {
+[[nodiscard]] constexpr vec3<T> log(const quaternion<T>& q,
+                                    detail::type_identity_t<matrix3<T>>* J_w_q = nullptr) noexcept {
     const vec3<T> w = to_rotation_vector(q);
     // Not q's own half-angle cosine and sine in place of right_jacobian_inverse's sincos: they
     // belong to q's angle, not to the rounded |w|, and measure 2.7 epsilon against 1.6 (double).
-    if (jacobian != nullptr) *jacobian = right_jacobian_inverse(w);
+    if (J_w_q != nullptr) *J_w_q = right_jacobian_inverse(w);
     return w;
 }
 
-/// a * b; *d_a = R(b)^T, *d_b = I. Precondition: unit a and b.
+/// c = a * b; *J_c_a = R(b)^T, *J_c_b = I. Precondition: unit a and b.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(
     const quaternion<T>& a, const quaternion<T>& b,
-    detail::type_identity_t<matrix3<T>>* d_a = nullptr,
-    detail::type_identity_t<matrix3<T>>* d_b = nullptr) noexcept {
-    if (d_a != nullptr) *d_a = transpose(adjoint(b));
-    if (d_b != nullptr) *d_b = matrix3<T>::identity();
+    detail::type_identity_t<matrix3<T>>* J_c_a = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_c_b = nullptr) noexcept {
+    if (J_c_a != nullptr) *J_c_a = transpose(adjoint(b));
+    if (J_c_b != nullptr) *J_c_b = matrix3<T>::identity();
     return a * b;
 }
 
-/// q^-1 = conjugate(q); *d = -R(q). Precondition: unit q.
+/// i = q^-1 = conjugate(q); *J_i_q = -R(q). Precondition: unit q.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> inverse(
-    const quaternion<T>& q, detail::type_identity_t<matrix3<T>>* d = nullptr) noexcept {
-    if (d != nullptr) *d = -adjoint(q);
+    const quaternion<T>& q, detail::type_identity_t<matrix3<T>>* J_i_q = nullptr) noexcept {
+    if (J_i_q != nullptr) *J_i_q = -adjoint(q);
     return conjugate(q);
 }
 
-/// rotate(q, v) = R v; *d_q = -R [v]x, *d_v = R. Precondition: unit q.
+/// u = rotate(q, v) = R v; *J_u_q = -R [v]x, *J_u_v = R. Precondition: unit q.
 template <class T>
 [[nodiscard]] constexpr vec3<T> act(const quaternion<T>& q, const vec3<T>& v,
-                                    detail::type_identity_t<matrix3<T>>* d_q = nullptr,
-                                    detail::type_identity_t<matrix3<T>>* d_v = nullptr) noexcept {
-    if (d_q != nullptr || d_v != nullptr) {
+                                    detail::type_identity_t<matrix3<T>>* J_u_q = nullptr,
+                                    detail::type_identity_t<matrix3<T>>* J_u_v = nullptr) noexcept {
+    if (J_u_q != nullptr || J_u_v != nullptr) {
         const matrix3<T> r = adjoint(q);
-        if (d_q != nullptr) *d_q = -(r * hat(v));
-        if (d_v != nullptr) *d_v = r;
+        if (J_u_q != nullptr) *J_u_q = -(r * hat(v));
+        if (J_u_v != nullptr) *J_u_v = r;
     }
     return rotate(q, v);
 }
 
-/// x^-1 y, the motion from x to y in x's frame; *d_x = -R(x^-1 y)^T, *d_y = I. Unit x and y.
+/// d = x^-1 y, the motion from x to y in x's frame; *J_d_x = -R(d)^T, *J_d_y = I. Unit x and y.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> between(
     const quaternion<T>& x, const quaternion<T>& y,
-    detail::type_identity_t<matrix3<T>>* d_x = nullptr,
-    detail::type_identity_t<matrix3<T>>* d_y = nullptr) noexcept {
+    detail::type_identity_t<matrix3<T>>* J_d_x = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_d_y = nullptr) noexcept {
     const quaternion<T> d = conjugate(x) * y;
-    if (d_x != nullptr) *d_x = -transpose(adjoint(d));
-    if (d_y != nullptr) *d_y = matrix3<T>::identity();
+    if (J_d_x != nullptr) *J_d_x = -transpose(adjoint(d));
+    if (J_d_y != nullptr) *J_d_y = matrix3<T>::identity();
     return d;
 }
 
-/// x (+) w = x exp(w); *d_x = R(exp w)^T, *d_w = Jr(w). Precondition: unit x.
+/// y = x (+) w = x exp(w); *J_y_x = R(exp w)^T, *J_y_w = Jr(w). Precondition: unit x.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> plus(
-    const quaternion<T>& x, const vec3<T>& w, detail::type_identity_t<matrix3<T>>* d_x = nullptr,
-    detail::type_identity_t<matrix3<T>>* d_w = nullptr) noexcept {
-    const quaternion<T> e = exp(w, d_w);
-    if (d_x != nullptr) *d_x = transpose(adjoint(e));
+    const quaternion<T>& x, const vec3<T>& w, detail::type_identity_t<matrix3<T>>* J_y_x = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_y_w = nullptr) noexcept {
+    const quaternion<T> e = exp(w, J_y_w);
+    if (J_y_x != nullptr) *J_y_x = transpose(adjoint(e));
     return x * e;
 }
 
-/// y (-) x = log(x^-1 y), angle in [0, pi]; *d_y = Jr(t)^-1, *d_x = -Jl(t)^-1 for t the result.
+/// w = y (-) x = log(x^-1 y), angle in [0, pi]; *J_w_y = Jr(w)^-1, *J_w_x = -Jl(w)^-1.
 /// Precondition: unit x and y.
 template <class T>
-[[nodiscard]] constexpr vec3<T> minus(const quaternion<T>& y, const quaternion<T>& x,
-                                      detail::type_identity_t<matrix3<T>>* d_y = nullptr,
-                                      detail::type_identity_t<matrix3<T>>* d_x = nullptr) noexcept {
-    const vec3<T> t = log(conjugate(x) * y, d_y);
-    if (d_x != nullptr) *d_x = -left_jacobian_inverse(t);
-    return t;
+[[nodiscard]] constexpr vec3<T> minus(
+    const quaternion<T>& y, const quaternion<T>& x,
+    detail::type_identity_t<matrix3<T>>* J_w_y = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_w_x = nullptr) noexcept {
+    const vec3<T> w = log(conjugate(x) * y, J_w_y);
+    if (J_w_x != nullptr) *J_w_x = -left_jacobian_inverse(w);
+    return w;
 }
 
-/// exp(w) x, the left plus; *d_w = R(x)^T Jr(w), *d_x = I (right-convention Jacobians, as
-/// everywhere here). Precondition: unit x.
+/// y = exp(w) x, the left plus, element first as in plus; *J_y_x = I, *J_y_w = R(x)^T Jr(w)
+/// (right-convention Jacobians, as everywhere here). Precondition: unit x.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> plus_left(
-    const vec3<T>& w, const quaternion<T>& x, detail::type_identity_t<matrix3<T>>* d_w = nullptr,
-    detail::type_identity_t<matrix3<T>>* d_x = nullptr) noexcept {
-    if (d_w != nullptr) *d_w = transpose(adjoint(x)) * right_jacobian(w);
-    if (d_x != nullptr) *d_x = matrix3<T>::identity();
+    const quaternion<T>& x, const vec3<T>& w, detail::type_identity_t<matrix3<T>>* J_y_x = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_y_w = nullptr) noexcept {
+    if (J_y_w != nullptr) *J_y_w = transpose(adjoint(x)) * right_jacobian(w);
+    if (J_y_x != nullptr) *J_y_x = matrix3<T>::identity();
     return from_rotation_vector(w) * x;
 }
 
-/// log(y x^-1), the left minus, angle in [0, pi]; *d_y = Jr(t)^-1 R(x), *d_x = -Jr(t)^-1 R(x) for t
-/// the result (right-convention Jacobians). Precondition: unit x and y.
+/// plus_left with the tangent first, the order before 1.1.0: plus_left(x, w) with the Jacobians in
+/// this call's order (*J_y_w, then *J_y_x). Kept until 2.0.0 so that code written for 1.0 compiles.
+template <class T>
+[[deprecated("use plus_left(x, w): element first")]] [[nodiscard]] constexpr quaternion<T>
+plus_left(const vec3<T>& w, const quaternion<T>& x,
+          detail::type_identity_t<matrix3<T>>* J_y_w = nullptr,
+          detail::type_identity_t<matrix3<T>>* J_y_x = nullptr) noexcept {
+    return plus_left(x, w, J_y_x, J_y_w);
+}
+
+/// w = y (-)left x = log(y x^-1), the left minus, angle in [0, pi]; *J_w_y = Jr(w)^-1 R(x),
+/// *J_w_x = -Jr(w)^-1 R(x) (right-convention Jacobians). Precondition: unit x and y.
 template <class T>
 [[nodiscard]] constexpr vec3<T> minus_left(
     const quaternion<T>& y, const quaternion<T>& x,
-    detail::type_identity_t<matrix3<T>>* d_y = nullptr,
-    detail::type_identity_t<matrix3<T>>* d_x = nullptr) noexcept {
-    const vec3<T> t = to_rotation_vector(y * conjugate(x));
-    if (d_y != nullptr || d_x != nullptr) {
-        const matrix3<T> j = right_jacobian_inverse(t) * adjoint(x);
-        if (d_y != nullptr) *d_y = j;
-        if (d_x != nullptr) *d_x = -j;
+    detail::type_identity_t<matrix3<T>>* J_w_y = nullptr,
+    detail::type_identity_t<matrix3<T>>* J_w_x = nullptr) noexcept {
+    const vec3<T> w = to_rotation_vector(y * conjugate(x));
+    if (J_w_y != nullptr || J_w_x != nullptr) {
+        const matrix3<T> j = right_jacobian_inverse(w) * adjoint(x);
+        if (J_w_y != nullptr) *J_w_y = j;
+        if (J_w_x != nullptr) *J_w_x = -j;
     }
-    return t;
+    return w;
 }
 
 }  // inline namespace isa_...

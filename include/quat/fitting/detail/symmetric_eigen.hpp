@@ -8,16 +8,12 @@
 #include <limits>
 
 #include "../../detail/math.hpp"
+#include "../../detail/summation.hpp"
 #include "../../quaternion.hpp"
 
 namespace quat {
 #include "../../detail/isa_namespace.inc"
 namespace detail {
-
-// align_vectors and mean sum their matrices over the input in blocks of this many elements, each
-// block from zero, then add the blocks' sums: rounding errors grow with the block length plus the
-// number of blocks instead of with the count.
-inline constexpr std::size_t summation_block = 256;
 
 // Eigenvalues in descending order (equal ones in the order of their diagonal positions after the
 // sweeps), each with its unit eigenvector: vectors[n] belongs to values[n].

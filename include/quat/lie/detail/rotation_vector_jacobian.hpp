@@ -20,6 +20,7 @@
 #include <type_traits>
 
 #include "../../detail/math.hpp"
+#include "../../matrix.hpp"
 #include "../../vec3.hpp"
 
 namespace quat {
@@ -91,11 +92,6 @@ template <class T>
     if (n2 >= T(4)) return (n - detail::sin(n)) / (n2 * n);
     return power_series(T(1) / T(6), [n2](int k) { return -n2 / T((2 * k + 4) * (2 * k + 5)); });
 }
-/// n_minus_sin_over_cube(n n, n).
-template <class T>
-[[nodiscard]] constexpr T n_minus_sin_over_cube(T n) noexcept {
-    return n_minus_sin_over_cube(n * n, n);
-}
 
 /// quartic_coefficient's closed form, for n >= 2, given a = one_minus_cos_over_square(n2, n) and
 /// sin n.
@@ -114,11 +110,6 @@ template <class T>
         return -n2 * T(k) / T((k - 1) * (2 * k + 1) * (2 * k + 2));
     });
 }
-/// quartic_coefficient(n n, n).
-template <class T>
-[[nodiscard]] constexpr T quartic_coefficient(T n) noexcept {
-    return quartic_coefficient(n * n, n);
-}
 
 /// (3 sin n - n cos n - 2n) / n^5 = -1/60 + n^2/1260 - n^4/60480 + ... (scipy 1.10 writes the
 /// second term n^2/12604 in its series branch; at its switch, n < 1e-4, that changes nothing).
@@ -129,11 +120,6 @@ template <class T>
         const int k = j + 2;
         return -n2 * T(k) / T((k - 1) * (2 * k + 2) * (2 * k + 3));
     });
-}
-/// quintic_coefficient(n n, n).
-template <class T>
-[[nodiscard]] constexpr T quintic_coefficient(T n) noexcept {
-    return quintic_coefficient(n * n, n);
 }
 
 /// (n^2 + 2 cos n - 2) / (2 n^4) = (1/2 - (1 - cos n) / n^2) / n^2 = 1/24 - n^2/720 + n^4/40320
@@ -163,6 +149,18 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr T inverse_jacobian_coefficient(T n) noexcept {
     return inverse_jacobian_coefficient(n * n, n);
+}
+
+/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the
+/// shape of every Jr, Jl and inverse here (so3.hpp) and of the blocks of rotation_spline's solve.
+template <class T>
+[[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
+    const T diagonal = a - c * squared_norm(r);
+    const T bx = b * r.x, by = b * r.y, bz = b * r.z;
+    const T cxy = c * r.x * r.y, cxz = c * r.x * r.z, cyz = c * r.y * r.z;
+    return {{{diagonal + c * r.x * r.x, cxy - bz, cxz + by},
+             {cxy + bz, diagonal + c * r.y * r.y, cyz - bx},
+             {cxz - by, cyz + bx, diagonal + c * r.z * r.z}}};
 }
 
 /// The coefficients of Jr = I - a [r]x + b [r]x^2 and of Jr^-1 = I + [r]x / 2 + c [r]x^2.
