@@ -56,7 +56,8 @@ void apply_composed(benchmark::State& state, long long n) {
     state.SetItemsProcessed(state.iterations() * n);
 }
 
-// The same k rotations applied one after another to each point (last factor first, like the product).
+// The same k rotations applied one after another to each point (last factor first, like the
+// product).
 template <class Lib, class Rep>
 void apply_each(benchmark::State& state, long long n) {
     const auto r = rotations<Lib, Rep>(apply_k);
@@ -100,7 +101,8 @@ void register_library() {
     benchmark::RegisterBenchmark(name("compose", L::name, "matrix", type).c_str(),
                                  compose<L, matrix_rep>);
     for (const long long k : {2LL, 8LL, 64LL, 1024LL}) {
-        // quat's quaternion entry is its compose(span); the sequential loop runs as chain_sequential.
+        // quat's quaternion entry is its compose(span); the sequential loop runs as
+        // chain_sequential.
         const std::string library = L::name;
         if (library == "quat") {
             benchmark::RegisterBenchmark(name("chain", "quat", "quaternion", type, k).c_str(),

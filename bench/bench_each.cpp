@@ -1,7 +1,7 @@
-// Per-element batches (quat/batch/elementwise.hpp): rotate_each (point i by rotation i), compose_each
-// (a[i] * b[i]), to_matrix_each and to_quaternion_each. GLM and Eigen run the loops their users
-// write, out[i] = q[i] * p[i] and so on, which g++ vectorizes too. One iteration is a whole batch;
-// items are elements.
+// Per-element batches (quat/batch/elementwise.hpp): rotate_each (point i by rotation i),
+// compose_each (a[i] * b[i]), to_matrix_each and to_quaternion_each. GLM and Eigen run the loops
+// their users write, out[i] = q[i] * p[i] and so on, which g++ vectorizes too. One iteration is a
+// whole batch; items are elements.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>

@@ -1,8 +1,8 @@
-// align_vectors (Wahba's problem), align_points (Kabsch, against Eigen's umeyama on the same points)
-// and mean over n inputs, beside the two costs they cannot avoid:
-// reading the input once (read_input: only the sums B = sum w t s^T, or sum q q^T for mean) and
-// one 4x4 symmetric eigen-solve (eigen_solve). The target: align_vectors and mean within
-// 2x of read_input + eigen_solve.
+// align_vectors (Wahba's problem), align_points (Kabsch, against Eigen's umeyama on the same
+// points) and mean over n inputs, beside the two costs they cannot avoid: reading the input once
+// (read_input: only the sums B = sum w t s^T, or sum q q^T for mean) and one 4x4 symmetric
+// eigen-solve (eigen_solve). The target: align_vectors and mean within 2x of read_input +
+// eigen_solve.
 #include <cstddef>
 #include <vector>
 

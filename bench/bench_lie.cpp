@@ -1,4 +1,4 @@
-// so3.hpp and se3.hpp: each analytic Jacobian (jacobian/quat/<op>/double, the value and its
+// lie/so3.hpp and lie/se3.hpp: each analytic Jacobian (jacobian/quat/<op>/double, the value and its
 // Jacobians in one call) against the same Jacobian by automatic differentiation with ceres::Jet
 // (jacobian/jet/<op>/double: the function evaluated on Jets, its ambient derivatives read into the
 // tangent Jacobian of the right plus and minus, as tests/test_so3.cpp and test_se3.cpp check them),

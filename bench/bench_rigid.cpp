@@ -34,7 +34,8 @@ struct motion {
 
 motion random_motion(random_source& random) {
     motion m{random.rotation(), {}};
-    // One statement per draw: the order of draws, hence the motion, must not depend on the compiler.
+    // One statement per draw: the order of draws, hence the motion, must not depend on the
+    // compiler.
     m.translation.x = random.uniform(-1, 1);
     m.translation.y = random.uniform(-1, 1);
     m.translation.z = random.uniform(-1, 1);
@@ -279,7 +280,8 @@ void register_rigid() {
     const std::vector<long long> sizes = {1024, 4194304};  // in L1/L2, and far beyond L3
     constexpr long long k = 1024;
     // quat's rigid_chain entry for dual quaternions is its compose(span), registered below; the
-    // sequential loop runs as rigid_chain_sequential, as chain and chain_sequential do for rotations.
+    // sequential loop runs as rigid_chain_sequential, as chain and chain_sequential do for
+    // rotations.
     for (const long long n : sizes) {
         benchmark::RegisterBenchmark(
             name("transform_batch", "quat", "dual_quaternion", type, n).c_str(),

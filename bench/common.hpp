@@ -1,5 +1,6 @@
 // Shared pieces of quat_bench: seeded inputs, one adapter per library (quat, GLM, Eigen) with the
-// same static functions, and the benchmark naming scheme <operation>/<library>/<representation>/<type>[/<n>].
+// same static functions, and the benchmark naming scheme
+// <operation>/<library>/<representation>/<type>[/<n>].
 #pragma once
 
 #include <cstddef>

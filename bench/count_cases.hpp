@@ -172,7 +172,7 @@ inline quat::operation_counts rigid_point_pair() {
     const auto p = point();
     return count([&] { (void)(quat::rotate(m.q, p) + m.t); });
 }
-/// Batch transform by a dual quaternion (rigid_batch.hpp), per point (rounded down):
+/// Batch transform by a dual quaternion (batch/rigid_motions.hpp), per point (rounded down):
 /// to_homogeneous once, then R p + t each.
 inline quat::operation_counts rigid_batch_dual_per_point(std::size_t n) {
     const DQ dq = quat::to_dual_quaternion(unit_quaternion(), translation());

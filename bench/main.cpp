@@ -41,8 +41,8 @@ public:
             if (run.run_type != Run::RT_Iteration || run.error_occurred) continue;
             const auto items = run.counters.find("items_per_second");
             if (items == run.counters.end() || !(items->second.value > 0)) continue;
-            // items_per_second is per CPU second; CPU time is also what the table shows, because on a
-            // shared machine the real time includes other processes' turns.
+            // items_per_second is per CPU second; CPU time is also what the table shows, because on
+            // a shared machine the real time includes other processes' turns.
             const std::string name = run.benchmark_name();
             // With repetitions the name carries no suffix; per-repetition names are the same.
             if (samples_.find(name) == samples_.end()) order_.push_back(name);

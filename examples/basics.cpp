@@ -49,7 +49,8 @@ int main() {
     print("90 deg about x", about_x);
     print("90 deg about z", about_z);
 
-    // 2. Rotate: counter-clockwise seen from the axis tip, so x-turn takes y to z, z-turn takes x to y.
+    // 2. Rotate: counter-clockwise seen from the axis tip, so x-turn takes y to z, z-turn takes x
+    //    to y.
     const vec3<double> ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1};
     print("rotate(about_x, y)", rotate(about_x, ey));
     expect(near(rotate(about_x, ey), ez), "90 deg about x takes y to z (counter-clockwise)");

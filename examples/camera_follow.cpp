@@ -36,8 +36,8 @@ const v3 world_up{0, 0, 1}, camera_right{1, 0, 0}, camera_up{0, 1, 0}, camera_lo
 constexpr double tolerance = 1e-14;
 const char* const tolerance_text = "1e-14";
 
-/// The drone at time t: a figure-eight 2 to 3 m high that crosses itself above the origin at t = 3 s
-/// (3 m up) and t = 9 s (2 m up), heading diagonally across the y axis each time.
+/// The drone at time t: a figure-eight 2 to 3 m high that crosses itself above the origin at t = 3
+/// s (3 m up) and t = 9 s (2 m up), heading diagonally across the y axis each time.
 v3 drone(double t) {
     const double a = omega * (t - 3);
     return {3 * std::sin(a), 1.5 * std::sin(2 * a), 2.5 + 0.5 * std::cos(a)};
@@ -178,8 +178,8 @@ int main(int argc, char** argv) {
     doc.polyline(shadow, {"#bbb", 1.5, "none", 1.0, "4 4"});
     doc.polyline(path, {"#444", 2.0});
     const std::vector<quatd> frames = follow(camera);
-    // Every second: the sight line, and the camera's picture frame drawn across it 70% of the way to
-    // the drone (red edges along the camera's x, green along its y, a tick above the top edge).
+    // Every second: the sight line, and the camera's picture frame drawn across it 70% of the way
+    // to the drone (red edges along the camera's x, green along its y, a tick above the top edge).
     for (std::size_t k = 50; k < frames.size(); k += 100) {
         const v3 target = drone((static_cast<double>(k) + 0.5) * dt);
         const v3 centre = camera + (target - camera) * 0.7;

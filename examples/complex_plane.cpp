@@ -1,7 +1,7 @@
-// complex_plane (thesis Fig. 2.3): multiplying by the unit complex number e^{i alpha} turns the plane
-// counter-clockwise by alpha; doing it again with e^{i beta} adds the angles. The quaternion
-// (cos(alpha/2), sin(alpha/2) k) does the same to the xy-plane in 3D -- with the half angle.
-// Run: example_complex_plane [output directory]  -> complex_plane.svg
+// complex_plane (thesis Fig. 2.3): multiplying by the unit complex number e^{i alpha} turns the
+// plane counter-clockwise by alpha; doing it again with e^{i beta} adds the angles. The quaternion
+// (cos(alpha/2), sin(alpha/2) k) does the same to the xy-plane in 3D -- with the half angle. Run:
+// example_complex_plane [output directory] -> complex_plane.svg
 #include <cmath>
 #include <complex>
 #include <cstdio>

@@ -1,10 +1,10 @@
 // continuous_euler: yaw-pitch-roll angles (intrinsic z-y-x, R = Rz(yaw) Ry(pitch) Rx(roll)) read
-// back frame by frame from a spinning, tumbling body. Plain to_euler<S, F>(q) gives principal angles:
-// they jump by 360 deg whenever yaw or roll passes +-180 deg, and yaw and roll jump by 180 deg when
-// pitch passes 90 deg. to_euler<S, F>(q, previous), fed its own previous output, gives the triple of
-// q nearest the previous frame's: unwrapped by whole turns, pitch beyond 90 deg, and at an exact
-// gimbal lock the free roll held at its previous value. Its curves follow the motion without a jump.
-// Run: example_continuous_euler [output directory]  -> continuous_euler.svg
+// back frame by frame from a spinning, tumbling body. Plain to_euler<S, F>(q) gives principal
+// angles: they jump by 360 deg whenever yaw or roll passes +-180 deg, and yaw and roll jump by 180
+// deg when pitch passes 90 deg. to_euler<S, F>(q, previous), fed its own previous output, gives the
+// triple of q nearest the previous frame's: unwrapped by whole turns, pitch beyond 90 deg, and at
+// an exact gimbal lock the free roll held at its previous value. Its curves follow the motion
+// without a jump. Run: example_continuous_euler [output directory] -> continuous_euler.svg
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -78,8 +78,8 @@ int main(int argc, char** argv) {
             std::max(representation_error, angle_between(to_quaternion(previous), q));
         for (std::size_t k = 0; k < 3; ++k)
             truth_error = std::max(truth_error, std::abs(previous[k] - exact.back()[k]));
-        // How close plain yaw and roll come to +-180 deg, where rounding could pick either sign, and
-        // pitch to +-90 deg, where yaw and roll lose accuracy (as eps / distance).
+        // How close plain yaw and roll come to +-180 deg, where rounding could pick either sign,
+        // and pitch to +-90 deg, where yaw and roll lose accuracy (as eps / distance).
         nearest_cut =
             std::min({nearest_cut, numbers::pi - std::abs(p[0]), numbers::pi - std::abs(p[2])});
         nearest_lock = std::min(nearest_lock, numbers::pi / 2 - std::abs(p[1]));
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
 
     // A frame exactly at the lock (t = 7.5 s, pitch -90 deg, checked but not drawn), between frames
     // 374 and 375: q fixes only yaw + roll there, so the continuous form keeps roll from the frame
-    // before and puts the rest into yaw. That differs from the true split by one frame's roll change
-    // (no angle of q can tell), still equals q, and the next frame has its own split again.
+    // before and puts the rest into yaw. That differs from the true split by one frame's roll
+    // change (no angle of q can tell), still equals q, and the next frame has its own split again.
     const ypr at_lock = truth(7.5);
     const quatd locked = to_quaternion(at_lock);
     const ypr held = to_euler<S, F>(locked, continuous[374]);
@@ -117,9 +117,9 @@ int main(int argc, char** argv) {
     expect(std::abs(after[0] - exact[375][0]) < 1e-9 && std::abs(after[2] - exact[375][2]) < 1e-9,
            "the frame after the lock has the true yaw and roll again");
 
-    // Three charts over time, angles in degrees: the plain angles on top; below, the continuous ones
-    // as wide translucent bands over the true angles, dashed (yaw apart: its turns need a scale of
-    // their own).
+    // Three charts over time, angles in degrees: the plain angles on top; below, the continuous
+    // ones as wide translucent bands over the true angles, dashed (yaw apart: its turns need a
+    // scale of their own).
     const char* names[3] = {"yaw", "pitch", "roll"};
     const char* colours[3] = {"#1f77b4", "#2ca02c", "#d62728"};
     const auto series_of = [&](const std::vector<ypr>& angles, std::size_t k, std::string label,

@@ -1,7 +1,7 @@
-// gimbal_lock: with yaw-pitch-roll angles (intrinsic z-y-x, R = Rz(yaw) Ry(pitch) Rx(roll)) at pitch
-// 90 degrees, changing yaw and changing roll turn the body about the same world axis: one degree of
-// freedom is lost. extract_euler reports it with its gimbal_lock flag.
-// Run: example_gimbal_lock [output directory]  -> gimbal_lock.svg
+// gimbal_lock: with yaw-pitch-roll angles (intrinsic z-y-x, R = Rz(yaw) Ry(pitch) Rx(roll)) at
+// pitch 90 degrees, changing yaw and changing roll turn the body about the same world axis: one
+// degree of freedom is lost. extract_euler reports it with its gimbal_lock flag. Run:
+// example_gimbal_lock [output directory] -> gimbal_lock.svg
 #include <cmath>
 #include <cstdio>
 #include <string>

@@ -1,6 +1,6 @@
 // order_matters (thesis Fig. 2.1): a bar turned 90 degrees about x then y ends in a different pose
-// from the same bar turned about y then x, because rotations, like quaternion products, do not commute.
-// Run: example_order_matters [output directory]  -> order_matters.svg
+// from the same bar turned about y then x, because rotations, like quaternion products, do not
+// commute. Run: example_order_matters [output directory] -> order_matters.svg
 #include <cstdio>
 #include <string>
 

@@ -1,9 +1,9 @@
-// orientation_tracking: integrate a gyroscope's body-frame angular velocity into an orientation, with
-// quaternions and with matrices, and watch the drift. First-order steps (q += dt/2 q (0, w),
-// R += dt R [w]x) inflate the quaternion's norm and the matrix's columns; renormalizing each step
+// orientation_tracking: integrate a gyroscope's body-frame angular velocity into an orientation,
+// with quaternions and with matrices, and watch the drift. First-order steps (q += dt/2 q (0, w), R
+// += dt R [w]x) inflate the quaternion's norm and the matrix's columns; renormalizing each step
 // (normalize, nearest_rotation) keeps them rotations; exact steps (the exponential map) also remove
-// the truncation error. The gyro turns at a constant body rate, so the exact answer is exp(w t / 2).
-// Run: example_orientation_tracking [output directory]  -> orientation_tracking.svg
+// the truncation error. The gyro turns at a constant body rate, so the exact answer is exp(w t /
+// 2). Run: example_orientation_tracking [output directory] -> orientation_tracking.svg
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
                     break;
             }
             if (n % 20 != 0) continue;
-            // Drift: how far the state is from a rotation. Error: angle to the truth of the nearest rotation.
+            // Drift: how far the state is from a rotation. Error: angle to the truth of the nearest
+            // rotation.
             const double drift = t.is_matrix ? orthogonality_error(t.m) : std::abs(norm(t.q) - 1);
             const quatd estimate =
                 t.is_matrix ? to_quaternion(nearest_rotation(t.m)) : normalize(t.q);

@@ -1,4 +1,5 @@
-// Line charts for quat's examples (not part of the library): axes, ticks, optional log scale, legend.
+// Line charts for quat's examples (not part of the library): axes, ticks, optional log scale,
+// legend.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // 3D drawing for quat's examples (not part of the library): a camera with orthographic or
-// perspective projection, a shaded box with its body axes, world axes, a wire sphere and paths on it.
-// World convention of the pictures: right-handed, z up.
+// perspective projection, a shaded box with its body axes, world axes, a wire sphere and paths on
+// it. World convention of the pictures: right-handed, z up.
 #pragma once
 
 #include <algorithm>
@@ -27,7 +27,8 @@ struct camera {
     svg::point centre;
     double scale;  // pixels per unit at the origin
 
-    /// Camera on the ray of the given azimuth (from +x toward +y) and elevation (radians) above the xy-plane.
+    /// Camera on the ray of the given azimuth (from +x toward +y) and elevation (radians) above the
+    /// xy-plane.
     static camera looking_from(double azimuth, double elevation, svg::point centre, double scale,
                                double distance = 0.0) {
         const v3 d{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
@@ -76,7 +77,8 @@ inline void draw_world_axes(svg::document& doc, const camera& cam, double length
 }
 
 /// A box with half sizes `half` turned by the unit quaternion q and moved to `at`, faces tinted by
-/// the body axis they face (x red, y green, z blue), with its body axes drawn as arrows of `axis_length`.
+/// the body axis they face (x red, y green, z blue), with its body axes drawn as arrows of
+/// `axis_length`.
 inline void draw_box(svg::document& doc, const camera& cam, const quat::quatd& q, const v3& half,
                      const v3& at, double axis_length) {
     const double h[3] = {half.x, half.y, half.z};

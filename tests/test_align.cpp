@@ -193,7 +193,8 @@ TEMPLATE_TEST_CASE("rotation_between of exactly parallel and opposite vectors", 
     using T = TestType;
     quat::test::random_rotations random;
     for (int i = 0; i < 1000; ++i) {
-        // Lengths 1e-20 .. 1e20 and a power of two k, so that a * k stays normal and exactly parallel.
+        // Lengths 1e-20 .. 1e20 and a power of two k, so that a * k stays normal and exactly
+        // parallel.
         const vec3<T> a =
             random.unit_vector<T>() * T(std::pow(10.0, random.uniform<double>(-20, 20)));
         const T k = T(std::ldexp(1.0, i % 60 - 30));

@@ -1,6 +1,6 @@
-// Specification of align_points.hpp: point-set registration against exact data, a long double
-// solution of the same least-squares problem, Eigen's umeyama (SVD), degenerate and far-from-origin
-// sets, weights and bad input.
+// Specification of registration/align_points.hpp: point-set registration against exact data, a long
+// double solution of the same least-squares problem, Eigen's umeyama (SVD), degenerate and
+// far-from-origin sets, weights and bad input.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -213,7 +213,8 @@ TEST_CASE("degenerate sets: collinear, two points, all equal are not unique; cop
     const auto plane = quat::align_points(image(coplanar), coplanar);
     CHECK(plane.unique);
     CHECK(quat::angle_between(plane.motion.real, q) <= 8 * eps<double>);
-    // All targets equal: no scale maps a spread onto a point except 0, so the scale is undetermined.
+    // All targets equal: no scale maps a spread onto a point except 0, so the scale is
+    // undetermined.
     const std::vector<vec3<double>> spread{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     const auto collapsed = quat::align_points_with_scale(same, spread);
     CHECK_FALSE(collapsed.unique);

@@ -1,5 +1,6 @@
-// Specification of align_vectors.hpp: Wahba's problem against scipy 1.10 (committed reference
-// data, tools/scipy_reference.py), Eigen's SVD (Kabsch), exact data and long double residuals.
+// Specification of fitting/align_vectors.hpp: Wahba's problem against scipy 1.10 (committed
+// reference data, tools/scipy_reference.py), Eigen's SVD (Kabsch), exact data and long double
+// residuals.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -359,9 +360,9 @@ vector_pairs<T> exact_pairs(quat::test::random_rotations& random, const quaterni
 TEST_CASE("one pair outweighing the others by 1e10: still their exact answer, unique",
           "[align_vectors][edges]") {
     // x -> y with weight 1e10 and (1, 1, 0) -> (0, 1, 1) with weight 1: the third of a turn about
-    // (1, 1, 1) fits both exactly (cost 0). Davenport's K alone cannot tell its top two
-    // eigenvalues apart at this spread (they differ by 2e-10 of the largest): a uniqueness rule read
-    // from that gap alone calls it not unique and returns a quarter turn about z with cost 2.
+    // (1, 1, 1) fits both exactly (cost 0). Davenport's K alone cannot tell its top two eigenvalues
+    // apart at this spread (they differ by 2e-10 of the largest): a uniqueness rule read from that
+    // gap alone calls it not unique and returns a quarter turn about z with cost 2.
     const std::vector<vec3<double>> targets{{0, 1, 0}, {0, 1, 1}}, sources{{1, 0, 0}, {1, 1, 0}};
     const quat::alignment<double> result =
         quat::align_vectors(targets, sources, std::vector<double>{1e10, 1});

@@ -1,5 +1,5 @@
-// Specification of blend.hpp: dual-quaternion linear blending (Kavan et al. 2007), checked against
-// its definition in long double and against the collapse of blended matrices it avoids.
+// Specification of rigid/blend.hpp: dual-quaternion linear blending (Kavan et al. 2007), checked
+// against its definition in long double and against the collapse of blended matrices it avoids.
 #include <cmath>
 #include <limits>
 #include <vector>

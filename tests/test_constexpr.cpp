@@ -81,7 +81,8 @@ TEMPLATE_TEST_CASE("compile-time results equal run-time results within 8 epsilon
 }
 
 TEST_CASE("compile-time sin, cos and atan2 track <cmath> over rotation angles", "[constexpr]") {
-    // Evaluated through the constexpr paths explicitly, at run time, against <cmath> in long double.
+    // Evaluated through the constexpr paths explicitly, at run time, against <cmath> in long
+    // double.
     for (int n = -2000; n <= 2000; ++n) {
         const long double x = n * 0.01;  // a double, so both sides see the same argument
         const auto sc = detail::compile_time::sin_cos(x);

@@ -59,7 +59,8 @@ TEST_CASE("Eigen: Quaternion(w, x, y, z) takes the scalar first but coeffs() is 
     CHECK(from_vector.w() == 1.0);
 }
 
-// ---- Product, rotation, matrices -----------------------------------------------------------------
+// ---- Product, rotation, matrices
+// -----------------------------------------------------------------
 
 TEST_CASE("GLM and Eigen: Hamilton product, a * b applies b first, v -> q v q*",
           "[conventions][glm][eigen]") {
@@ -112,7 +113,8 @@ TEST_CASE("GLM angleAxis(angle, axis) and Eigen AngleAxis(angle, axis) take the 
               q) <= tol::glm);
 }
 
-// ---- Euler angles --------------------------------------------------------------------------------
+// ---- Euler angles
+// --------------------------------------------------------------------------------
 
 TEST_CASE(
     "GLM: eulerAngles(q) = (pitch, yaw, roll) about x, y, z with R = Rz(roll) Ry(yaw) Rx(pitch)",

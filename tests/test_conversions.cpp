@@ -101,7 +101,8 @@ TEMPLATE_TEST_CASE("axis-angle round trips through quaternion and matrix", "[con
     const axis_angle<T> none = quat::to_axis_angle(quaternion<T>::identity());
     CHECK(none.angle == 0);
     CHECK(none.axis == vec3<T>{1, 0, 0});
-    // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin 90°).
+    // The half angle: a quarter turn about z is (cos 45°, 0, 0, sin 45°), not (cos 90°, ..., sin
+    // 90°).
     const quaternion<T> quarter =
         quat::to_quaternion(axis_angle<T>{{0, 0, 1}, quat::numbers::pi_v<T> / 2});
     CHECK(quarter.w == Approx(std::sqrt(0.5)));
@@ -152,7 +153,8 @@ TEMPLATE_TEST_CASE("rotation vectors: exp and log are inverse from tiny angles t
     CHECK(half_turn.y == Approx(quat::numbers::pi_v<T>));
 }
 
-// ---- Modified Rodrigues parameters ---------------------------------------------------------------
+// ---- Modified Rodrigues parameters
+// ---------------------------------------------------------------
 
 namespace {
 
@@ -230,7 +232,8 @@ TEMPLATE_TEST_CASE("from_mrp is ((1 - |p|^2), 2 p) / (1 + |p|^2) for any p, huge
         CHECK(quat::test::max_difference(quaternion<long double>{q.w, q.x, q.y, q.z}, reference) <=
               tolerance<T>::conversion);
         CHECK(std::abs(quat::norm(q) - 1) <= tolerance<T>::unit_norm);
-        // |p| > 1 is the long way round to the rotation of its shadow -p / |p|^2, which to_mrp gives.
+        // |p| > 1 is the long way round to the rotation of its shadow -p / |p|^2, which to_mrp
+        // gives.
         const vec3<T> back = quat::to_mrp(q);
         const T length2 = quat::squared_norm(p);
         const vec3<T> expected = length2 <= 1 ? p : -p / length2;

@@ -54,7 +54,8 @@ TEST_CASE("composing: the quaternion product is cheaper than the matrix product"
 TEST_CASE("Table 3.1: build the rotation from Euler angles or axis-angle, rotate one point",
           "[counts]") {
     using namespace bench::count_cases;
-    // Thesis (MATLAB): matrix 10/25/0/6 and 16/30/0/2; quaternion 25/42/0/6 and 21/31/0/2 (add/mul/div/trig).
+    // Thesis (MATLAB): matrix 10/25/0/6 and 16/30/0/2; quaternion 25/42/0/6 and 21/31/0/2
+    // (add/mul/div/trig).
     check(matrix_from_euler(), {18, 33, 0, 0, 6});
     check(quaternion_from_euler(), {27, 41, 0, 0, 6});
     check(matrix_from_axis_angle(), {16, 21, 0, 0, 2});

@@ -1,6 +1,8 @@
-// Forward-mode differentiation through quat: with a dual-number scalar (tests/support/dual_number.hpp)
+// Forward-mode differentiation through quat: with a dual-number scalar
+// (tests/support/dual_number.hpp)
 // and with ceres::Jet, every function below gives finite derivatives that agree with central
-// differences in long double, at fixed-seed random points and where closed forms would divide a zero
+// differences in long double, at fixed-seed random points and where closed forms would divide a
+// zero
 // by a zero: the identity, zero rotation vectors, tiny angles (1e-12 rad), the switch to the
 // small-angle series, and near half turns (pi - 1e-8).
 //
@@ -302,7 +304,8 @@ TEST_CASE("slerp and pow differentiate at equal ends, tiny angles and their exac
     quat::test::random_rotations random;
     const vec3<double> axis = random.unit_vector<double>();
     for (const quatd& a : {quatd::identity(), random.unit_quaternion<double>()}) {
-        // slerp switches to its series at sin(angle / 4) = epsilon^(1/4), pow as to_rotation_vector.
+        // slerp switches to its series at sin(angle / 4) = epsilon^(1/4), pow as
+        // to_rotation_vector.
         for (const double angle :
              {0.0, tiny, 1e-6, series_switch, 1.9 * series_switch, 2.1 * series_switch, 1.0, 3.0}) {
             const quatd b = a * turn(axis, angle);

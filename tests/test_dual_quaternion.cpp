@@ -1,5 +1,6 @@
-// Specification of dual_quaternion.hpp: dual quaternions as rigid motions x -> R x + t, checked
-// against 4x4 matrices in long double (tests/support/rigid_reference.hpp) and GLM's tdualquat.
+// Specification of rigid/dual_quaternion.hpp: dual quaternions as rigid motions x -> R x + t,
+// checked against 4x4 matrices in long double (tests/support/rigid_reference.hpp) and GLM's
+// tdualquat.
 #include <cmath>
 #include <limits>
 #include <type_traits>

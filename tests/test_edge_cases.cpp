@@ -144,8 +144,8 @@ TEMPLATE_TEST_CASE("middle Euler angle at and near gimbal lock, all 24 conventio
                     } else {
                         CHECK(std::abs(back[1]) <= T(pi / 2));
                     }
-                    // Far from the lock (10^-k well above epsilon) no lock is reported; at a lock the
-                    // third angle is the one fixed by convention.
+                    // Far from the lock (10^-k well above epsilon) no lock is reported; at a lock
+                    // the third angle is the one fixed by convention.
                     if (k > 0 &&
                         std::pow(10.0, -k) > 1e3 * double(std::numeric_limits<T>::epsilon()))
                         CHECK_FALSE(extraction.gimbal_lock);
@@ -168,7 +168,8 @@ TEMPLATE_TEST_CASE("huge, tiny and subnormal components normalize to the same un
             INFO("scale " << scale << " (" << (sizeof(T) == 4 ? "float" : "double") << ")");
             const auto n = quat::normalize(scaled);
             REQUIRE(all_finite(n));
-            // Subnormal components carry fewer significant bits, so compare the rotation loosely there.
+            // Subnormal components carry fewer significant bits, so compare the rotation loosely
+            // there.
             const T tol = scale < limits::min() ? T(1e-5) : tolerance<T>::unit_norm;
             CHECK(quat::test::max_difference(n, unit) <= tol);
             CHECK(std::abs(quat::norm(n) - 1) <= tolerance<T>::unit_norm);
@@ -326,7 +327,8 @@ constexpr std::array<quat::quaternion<T>, 5> constexpr_inputs{{
     {T(0.7071067811865476), T(0.0001), T(0.7071067811865475), T(-0.0002)},
 }};
 
-/// Six derived numbers per input: normalize, exp(log), Euler zyx, Euler zxz, slerp to the next input.
+/// Six derived numbers per input: normalize, exp(log), Euler zyx, Euler zxz, slerp to the next
+/// input.
 template <class T>
 constexpr std::array<T, 5 * 16> constexpr_table(const std::array<quat::quaternion<T>, 5>& in) {
     std::array<T, 5 * 16> out{};

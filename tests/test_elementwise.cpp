@@ -1,4 +1,4 @@
-// Specification of elementwise.hpp: rotate_each, compose_each, to_matrix_each and
+// Specification of batch/elementwise.hpp: rotate_each, compose_each, to_matrix_each and
 // to_quaternion_each give the scalar results element by element, at every count (the tails of every
 // vector width), in place, through containers and in both layouts; NaN stays in its element; a
 // user-defined scalar gets the scalar functions' results.

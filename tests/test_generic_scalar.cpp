@@ -4,10 +4,13 @@
 // - unary -, binary + - * /, compound += and -=, and the comparisons < <= > >= == != (returning
 //   bool);
 // - std::numeric_limits<T>: epsilon(), min(), max(), infinity(), quiet_NaN();
-// - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for built-ins);
+// - sqrt, sin, cos, atan2, asin and abs, found by argument-dependent lookup (or std:: for
+//   built-ins);
 //   exp and log as well, for exp(quaternion) and log(quaternion) only.
-// Nothing needs to be constexpr: user::runtime_real below has no constexpr member at all. Operations
-// must not throw (quat's functions are noexcept). The counting scalar of quat_bench is one such type.
+// Nothing needs to be constexpr: user::runtime_real below has no constexpr member at all.
+// Operations
+// must not throw (quat's functions are noexcept). The counting scalar of quat_bench is one such
+// type.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
-// Specification of geodesic_mean.hpp: the Karcher mean of rotations and the bi-invariant mean of
-// rigid motions against their definition (the weighted logarithms to the inputs sum to zero,
+// Specification of lie/geodesic_mean.hpp: the Karcher mean of rotations and the bi-invariant mean
+// of rigid motions against their definition (the weighted logarithms to the inputs sum to zero,
 // checked in long double), closed forms (two inputs: slerp and sclerp halfway; rotations about one
 // axis: the mean angle; translations: their mean), bi-invariance, and the uniqueness test.
 #include <algorithm>

@@ -154,7 +154,8 @@ TEMPLATE_TEST_CASE("angle and axis agree with glm::angle and glm::axis up to GLM
         const T theirs = glm::angle(to_glm(q));
         const vec3<T> their_axis = from_glm(glm::axis(to_glm(q)));
         const T ours = quat::angle(q);
-        // GLM's acos(w) branch is taken for |w| <= cos(1/2); away from its ends it is well conditioned.
+        // GLM's acos(w) branch is taken for |w| <= cos(1/2); away from its ends it is well
+        // conditioned.
         if (std::abs(q.w) > T(0.87)) continue;
         if (q.w >= 0) {
             CHECK(std::abs(ours - theirs) <= tolerance<T>::glm);

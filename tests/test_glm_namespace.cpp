@@ -55,8 +55,8 @@ TEST_CASE("After using namespace glm, ::quat:: and a namespace alias name quat",
     CHECK(std::fabs(g.y - q.y) <= tolerance);
     CHECK(std::fabs(g.z - q.z) <= tolerance);
 
-    // Both rotate a vector alike, and quat's four numbers fed to GLM's (w, x, y, z) constructor give
-    // GLM the same rotation.
+    // Both rotate a vector alike, and quat's four numbers fed to GLM's (w, x, y, z) constructor
+    // give GLM the same rotation.
     const dvec3 v(0.25, 1.5, -2.0);
     const ::quat::vec3<double> quat_v{v.x, v.y, v.z};
     const qt::vec3<double> rotated = qt::rotate(same, quat_v);
@@ -79,7 +79,8 @@ TEST_CASE("After using namespace glm, ::quat:: and a namespace alias name quat",
 
 // ---- using namespace glm; using namespace quat; ------------------------------------------------
 // The second using-directive sits in a namespace of this file's own: for names looked up inside it,
-// quat's members then appear at global scope beside glm's (the nearest namespace enclosing both), so
+// quat's members then appear at global scope beside glm's (the nearest namespace enclosing both),
+// so
 // lookup sees exactly what it sees after both directives at file scope.
 namespace with_both_directives {
 

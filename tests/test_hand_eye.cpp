@@ -1,6 +1,6 @@
-// Specification of hand_eye.hpp: Daniilidis's hand-eye calibration against synthetic ground truth
-// (a mount, hand poses and a fixed target, the sensor's poses derived), the long double solution of
-// the same data, sign changes, degenerate motion sets and bad input.
+// Specification of registration/hand_eye.hpp: Daniilidis's hand-eye calibration against synthetic
+// ground truth (a mount, hand poses and a fixed target, the sensor's poses derived), the long
+// double solution of the same data, sign changes, degenerate motion sets and bad input.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -34,9 +34,9 @@ dual_quaternion<T> perturbed(quat::test::random_rotations& random, const dual_qu
 }
 
 /// The motions between consecutive poses of a hand at random poses (rotations up to `turn` radians
-/// from a start, translations of standard deviation `reach`), with the sensor on it at `mount` and a
-/// fixed target: A_j = H_(j+1)^-1 H_j and B_j = S_(j+1) S_j^-1, S_j the target in the sensor's frame,
-/// each S_j measured with an error of `angle` radians and `offset` in random directions.
+/// from a start, translations of standard deviation `reach`), with the sensor on it at `mount` and
+/// a fixed target: A_j = H_(j+1)^-1 H_j and B_j = S_(j+1) S_j^-1, S_j the target in the sensor's
+/// frame, each S_j measured with an error of `angle` radians and `offset` in random directions.
 template <class T>
 motion_pairs<T> motions_for(quat::test::random_rotations& random, const dual_quaternion<T>& mount,
                             std::size_t count, double turn = 2.0, double reach = 0.5,

@@ -1,5 +1,6 @@
-// Specification of homogeneous_matrix.hpp: 4x4 rigid motions on column vectors (x, y, z, 1), their
-// products, and conversions to and from dual quaternions, against long double matrices and GLM.
+// Specification of rigid/homogeneous_matrix.hpp: 4x4 rigid motions on column vectors (x, y, z, 1),
+// their products, and conversions to and from dual quaternions, against long double matrices and
+// GLM.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -241,8 +242,8 @@ TEMPLATE_TEST_CASE("a translation with components up to max() reads back through
                    "[homogeneous_matrix][edge]", float, double) {
     using T = TestType;
     const T largest = std::numeric_limits<T>::max();
-    // The dual part (t / 2) q never overflows, but 2 dual real* rounds within a few units of
-    // max() and overflows if doubled before the product. Reference: the translation as given, exact.
+    // The dual part (t / 2) q never overflows, but 2 dual real* rounds within a few units of max()
+    // and overflows if doubled before the product. Reference: the translation as given, exact.
     quat::test::random_rotations random;
     int rounded_past = 0;
     for (int n = 0; n < 200; ++n) {

@@ -1,10 +1,10 @@
-// Hostile inputs for the opt-in estimation families (so3.hpp, se3.hpp, geodesic_mean.hpp,
-// align_points.hpp, hand_eye.hpp): NaN, +Inf and -Inf in every component of every argument of every
-// public overload, for float and double, each checked against its doc comment, as
-// test_hostile_inputs.cpp does for quat.hpp. Where a doc says nothing of non-finite input, docs/api.md's
-// promise holds: a non-finite component in the result. Jacobians are requested too, so that their
-// code runs on the bad values (under the sanitizers of the CI presets), and the value returned with
-// them is checked as the value without them.
+// Hostile inputs for the opt-in estimation families (lie/so3.hpp, lie/se3.hpp,
+// lie/geodesic_mean.hpp, registration/align_points.hpp, registration/hand_eye.hpp): NaN, +Inf and
+// -Inf in every component of every argument of every public overload, for float and double, each
+// checked against its doc comment, as test_hostile_inputs.cpp does for quat.hpp. Where a doc says
+// nothing of non-finite input, docs/api.md's promise holds: a non-finite component in the result.
+// Jacobians are requested too, so that their code runs on the bad values (under the sanitizers of
+// the CI presets), and the value returned with them is checked as the value without them.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -46,7 +46,7 @@ using matrix6 = matrix<T, 6, 6>;
 
 }  // namespace
 
-// ======================= so3.hpp =======================
+// ======================= lie/so3.hpp =======================
 
 HOSTILE("so3 of a tangent vector", "so3") {
     using T = TestType;
@@ -119,7 +119,7 @@ HOSTILE("so3 of rotations", "so3") {
     });
 }
 
-// ======================= se3.hpp =======================
+// ======================= lie/se3.hpp =======================
 
 HOSTILE("se3 of a twist", "se3") {
     using T = TestType;
@@ -207,7 +207,7 @@ HOSTILE("se3 of rigid motions", "se3") {
     });
 }
 
-// ======================= geodesic_mean.hpp =======================
+// ======================= lie/geodesic_mean.hpp =======================
 
 HOSTILE("geodesic_mean", "geodesic_mean") {
     using T = TestType;
@@ -250,7 +250,7 @@ HOSTILE("geodesic_mean", "geodesic_mean") {
     });
 }
 
-// ======================= align_points.hpp =======================
+// ======================= registration/align_points.hpp =======================
 
 HOSTILE("align_points", "align_points") {
     using T = TestType;
@@ -299,7 +299,7 @@ HOSTILE("align_points", "align_points") {
     });
 }
 
-// ======================= hand_eye.hpp =======================
+// ======================= registration/hand_eye.hpp =======================
 
 HOSTILE("hand_eye", "hand_eye") {
     using T = TestType;

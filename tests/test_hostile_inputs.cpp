@@ -296,7 +296,7 @@ HOSTILE("euler", "euler") {
     check_euler_convention<sequence::yxy, frame::extrinsic>(g, "yxy extrinsic");
 }
 
-// ======================= interpolation.hpp =======================
+// ======================= paths/interpolation.hpp =======================
 
 HOSTILE("slerp", "interpolation") {
     using T = TestType;
@@ -366,7 +366,7 @@ HOSTILE("rotate_towards", "interpolation") {
     }
 }
 
-// ======================= slerp_fast.hpp =======================
+// ======================= paths/slerp_fast.hpp =======================
 
 HOSTILE("corrected_nlerp and slerp_fast", "slerp_fast") {
     using T = TestType;
@@ -497,7 +497,7 @@ HOSTILE("integrate", "kinematics") {
     });
 }
 
-// ======================= nearest_rotation.hpp =======================
+// ======================= fitting/nearest_rotation.hpp =======================
 
 HOSTILE("nearest_rotation", "nearest_rotation") {
     using T = TestType;
@@ -509,7 +509,7 @@ HOSTILE("nearest_rotation", "nearest_rotation") {
     });
 }
 
-// ======================= mean.hpp =======================
+// ======================= fitting/mean.hpp =======================
 
 HOSTILE("mean", "mean") {
     using T = TestType;
@@ -539,7 +539,7 @@ HOSTILE("mean", "mean") {
         }
 }
 
-// ======================= align_vectors.hpp =======================
+// ======================= fitting/align_vectors.hpp =======================
 
 namespace {
 template <class T, class A>
@@ -610,7 +610,8 @@ HOSTILE("align_vectors", "align_vectors") {
     }
 }
 
-// ================= squad.hpp, keyframe_slerp.hpp, keyframe_squad.hpp =================
+// ================= paths/squad.hpp, paths/keyframe_slerp.hpp, paths/keyframe_squad.hpp
+// =================
 
 HOSTILE("squad", "squad") {
     using T = TestType;
@@ -656,8 +657,8 @@ HOSTILE("keyframe_slerp", "keyframe_slerp") {
                 r[k] = q;
                 const quaternion<T> result = quat::keyframe_slerp(times, r, t);
                 // Documented: NaN when the keyframe is used; a keyframe the segment does not touch
-                // may be ignored, so only the segments around t are checked.
-                // Exactly rotations[i] at times[i] (documented), so only that keyframe is used there.
+                // may be ignored, so only the segments around t are checked. Exactly rotations[i]
+                // at times[i] (documented), so only that keyframe is used there.
                 bool at_key = false;
                 for (const T time : times) at_key = at_key || time == t;
                 const bool used =
@@ -717,7 +718,7 @@ HOSTILE("keyframe_squad", "keyframe_squad") {
     CHECK(quat::keyframe_squad(times, keys, -std::numeric_limits<T>::infinity()) == keys.front());
 }
 
-// ======================= rotation_spline.hpp =======================
+// ======================= paths/rotation_spline.hpp =======================
 
 HOSTILE("rotation_spline", "rotation_spline") {
     using T = TestType;
@@ -752,7 +753,8 @@ HOSTILE("rotation_spline", "rotation_spline") {
         });
 }
 
-// ======================= dual_quaternion.hpp, screw.hpp, sclerp.hpp =======================
+// ======================= rigid/dual_quaternion.hpp, rigid/screw.hpp, rigid/sclerp.hpp
+// =======================
 
 HOSTILE("dual_quaternion functions", "dual_quaternion") {
     using T = TestType;
@@ -809,7 +811,7 @@ HOSTILE("sclerp", "sclerp") {
     });
 }
 
-// ======================= homogeneous_matrix.hpp, blend.hpp =======================
+// ======================= rigid/homogeneous_matrix.hpp, rigid/blend.hpp =======================
 
 HOSTILE("homogeneous_matrix functions", "homogeneous_matrix") {
     using T = TestType;
@@ -871,9 +873,10 @@ HOSTILE("blend", "blend") {
         }
 }
 
-// ======================= batch.hpp, rigid_batch.hpp, elementwise.hpp =======================
-// A bad element stays bad in its own output (the scalar function's expectation), and the other
-// outputs stay finite; a bad shared argument (q, m, a, b) makes every output bad.
+// ======================= batch/rotations.hpp, batch/rigid_motions.hpp, batch/elementwise.hpp
+// ======================= A bad element stays bad in its own output (the scalar function's
+// expectation), and the other outputs stay finite; a bad shared argument (q, m, a, b) makes every
+// output bad.
 
 namespace {
 constexpr std::size_t batch_size = 37;  // not a multiple of any vector width

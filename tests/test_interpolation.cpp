@@ -1,4 +1,4 @@
-// Specification of interpolation.hpp: slerp, nlerp, pow and rotate_towards.
+// Specification of paths/interpolation.hpp: slerp, nlerp, pow and rotate_towards.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -50,9 +50,10 @@ quaternion<long double> reference_slerp(const quaternion<T>& a, const quaternion
                                         relative.z * k};
 }
 
-// Twice the rotation angle between q and r: angle_between already returns the rotation angle (itself
-// twice the 4D angle between the quaternions), so the factor 2 makes each bound below
-// (tolerance<T>::slerp_angle) a bound of half that size on the rotation angle: stricter, not looser.
+// Twice the rotation angle between q and r: angle_between already returns the rotation angle
+// (itself twice the 4D angle between the quaternions), so the factor 2 makes each bound below
+// (tolerance<T>::slerp_angle) a bound of half that size on the rotation angle: stricter, not
+// looser.
 template <class T>
 long double distance(const quaternion<T>& q, const quaternion<long double>& r) {
     const quaternion<long double> ql{q.w, q.x, q.y, q.z};

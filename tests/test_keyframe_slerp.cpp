@@ -1,5 +1,5 @@
-// Specification of keyframe_slerp.hpp: piecewise slerp through keyframes at given times, against
-// scipy 1.10's Slerp (committed reference data, tools/scipy_spline_reference.py).
+// Specification of paths/keyframe_slerp.hpp: piecewise slerp through keyframes at given times,
+// against scipy 1.10's Slerp (committed reference data, tools/scipy_spline_reference.py).
 #include <cmath>
 #include <cstddef>
 #include <limits>

@@ -1,7 +1,7 @@
-// Specification of keyframe_squad.hpp: squad through keyframes at given times, its control points
-// scaled for uneven spacing. Checked against squad and squad_control (evenly spaced times), against
-// the angular velocity the derivation predicts (one-sided finite differences in long double), and
-// against keyframe_slerp's handling of the ends and of bad input.
+// Specification of paths/keyframe_squad.hpp: squad through keyframes at given times, its control
+// points scaled for uneven spacing. Checked against squad and squad_control (evenly spaced times),
+// against the angular velocity the derivation predicts (one-sided finite differences in long
+// double), and against keyframe_slerp's handling of the ends and of bad input.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

@@ -1,5 +1,6 @@
-// Specification of mean.hpp: the chordal L2 mean against scipy 1.10 (committed reference data,
-// tools/scipy_reference.py), Eigen's symmetric eigensolver in long double, and its definition.
+// Specification of fitting/mean.hpp: the chordal L2 mean against scipy 1.10 (committed reference
+// data, tools/scipy_reference.py), Eigen's symmetric eigensolver in long double, and its
+// definition.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -229,11 +230,12 @@ constexpr std::array<quaternion<double>, 2> two_turns{
 constexpr quaternion<double> eighth = quat::mean(two_turns);
 static_assert(eighth.w - 0.92387953251128676 < 1e-15 && 0.92387953251128676 - eighth.w < 1e-15);
 
-// ---- Edges (issue 23): weights of any finite size, try_mean on any input, mixed precisions ----
+// ---- Edges: weights of any finite size, try_mean on any input, mixed precisions ----
 
 TEST_CASE("weights from subnormal to max() give the mean of their ratios", "[mean][edges]") {
-    // The weights are divided by the largest first, so these are the same sums bit for bit. The
-    // earlier sums overflowed to infinity at max() (NaN mean) and lost the subnormals' digits.
+    // The weights are divided by the largest first, so these are the same sums bit for bit. Sums
+    // of the raw weights would overflow to infinity at max() (NaN mean) and lose the subnormals'
+    // digits.
     quat::test::random_rotations random;
     const double max = std::numeric_limits<double>::max();
     const double tiny = std::numeric_limits<double>::denorm_min();
@@ -253,8 +255,9 @@ TEST_CASE("weights from subnormal to max() give the mean of their ratios", "[mea
 }
 
 TEST_CASE("try_mean returns empty, never asserts, for any bad input", "[mean][edges]") {
-    // Run in a debug build: the earlier try_mean fired mean's unit-quaternion check, and the
-    // weighted one its size check. Each bad value in each component of one rotation.
+    // Meaningful in a debug build, where mean's unit-quaternion and size checks are live: try_mean
+    // must test its input before any of them can fire. Each bad value in each component of one
+    // rotation.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const std::vector<quaternion<double>> good{quat::rotation_x(0.1), quat::rotation_y(0.2),

@@ -179,11 +179,11 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::to_euler(q, quat::euler<T>{T(0.1), T(0.2), T(0.3)})));
         CHECK(bad(quat::to_euler(unit, in.e)));
 
-        // nearest_rotation.hpp
+        // fitting/nearest_rotation.hpp
         CHECK(bad(quat::nearest_rotation(m)));
         CHECK_FALSE(quat::try_nearest_rotation(m).has_value());
 
-        // interpolation.hpp and slerp_fast.hpp: a bad end point or a bad parameter
+        // paths/interpolation.hpp and paths/slerp_fast.hpp: a bad end point or a bad parameter
         const quaternion<T> other = quat::normalize(quaternion<T>{T(0.2), T(0.7), T(0.1), T(-0.4)});
         for (const T t : {T(0), T(0.25), T(1), T(2)}) {
             CHECK(bad(quat::slerp(unit, q, t)));
@@ -198,7 +198,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::slerp_fast(unit, other, value)));
         CHECK(bad(quat::corrected_nlerp(unit, other, value)));
 
-        // interpolation.hpp: powers and bounded steps
+        // paths/interpolation.hpp: powers and bounded steps
         CHECK(bad(quat::pow(q, T(0.5))));
         CHECK(bad(quat::pow(unit, value)));
         CHECK(bad(quat::rotate_towards(q, unit, T(0.1))));
@@ -217,7 +217,8 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::integrate_world(q, in.good_vector, T(0.1))));
         CHECK(bad(quat::integrate_world(unit, in.good_vector, value)));
 
-        // keyframe_squad.hpp: a bad keyframe beyond the segment feeds its control point; a NaN t
+        // paths/keyframe_squad.hpp: a bad keyframe beyond the segment feeds its control point; a
+        // NaN t
         const std::vector<T> key_times{T(0), T(1), T(2), T(4)};
         const std::vector<quaternion<T>> keys{unit, other, unit, q};
         CHECK(bad(quat::keyframe_squad(key_times, keys, T(1.5))));
@@ -239,7 +240,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::look_rotation(in.good_vector, v)));
         CHECK_FALSE(quat::try_look_rotation(in.good_vector, v).has_value());
 
-        // align_vectors.hpp
+        // fitting/align_vectors.hpp
         const std::vector<vec3<T>> sources{in.good_vector, vec3<T>{T(1), T(0), T(0)}};
         const std::vector<vec3<T>> targets{v, vec3<T>{T(0), T(1), T(0)}};
         const auto aligned = quat::align_vectors(targets, sources);
@@ -253,7 +254,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::align_vectors_with_sensitivity(targets, sources, std::vector<T>{T(1), T(1)})
                       .rotation));
 
-        // align_points.hpp
+        // registration/align_points.hpp
         const std::vector<vec3<T>> cloud{in.good_vector, vec3<T>{T(1), T(0), T(0)},
                                          vec3<T>{T(0), T(0), T(2)}};
         const std::vector<vec3<T>> bad_cloud{v, vec3<T>{T(0), T(1), T(0)},
@@ -264,7 +265,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::align_points_with_scale(cloud, bad_cloud).scale));
         CHECK_FALSE(quat::try_align_points(cloud, bad_cloud).has_value());
 
-        // hand_eye.hpp
+        // registration/hand_eye.hpp
         const dual_quaternion<T> hand_motion = quat::to_dual_quaternion(other, in.good_vector);
         const std::vector<dual_quaternion<T>> hands{hand_motion, hand_motion * hand_motion};
         const std::vector<dual_quaternion<T>> eyes{quat::to_dual_quaternion(other, v), hand_motion};
@@ -275,7 +276,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         const auto first = quat::hand_eye(hands, eyes, quat::hand_eye_method::rotation_first);
         CHECK((bad(first.mount.real) && bad(first.mount.dual) && !first.unique));
 
-        // mean.hpp
+        // fitting/mean.hpp
         const std::vector<quaternion<T>> cluster{unit, other, q};
         CHECK(bad(quat::mean(cluster)));
         CHECK_FALSE(quat::try_mean(cluster).has_value());
@@ -284,7 +285,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         CHECK(bad(quat::mean(good_cluster, std::vector<T>{T(1), weight})));
         CHECK_FALSE(quat::try_mean(good_cluster, std::vector<T>{weight, T(1)}).has_value());
 
-        // batch.hpp
+        // batch/rotations.hpp
         std::vector<vec3<T>> points(40, in.good_vector), rotated(40);
         points[7] = v;
         quat::rotate(unit, points, rotated);
@@ -308,8 +309,8 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         quat::slerp(unit, q, ts.data(), slerped.data(), 4);
         CHECK(bad(slerped[0]));
 
-        // dual_quaternion.hpp, homogeneous_matrix.hpp, screw.hpp, sclerp.hpp, blend.hpp,
-        // rigid_batch.hpp
+        // rigid/dual_quaternion.hpp, rigid/homogeneous_matrix.hpp, rigid/screw.hpp,
+        // rigid/sclerp.hpp, rigid/blend.hpp, batch/rigid_motions.hpp
         const auto motion = quat::to_dual_quaternion(unit, in.good_vector);
         const auto bad_rotation = quat::to_dual_quaternion(q, in.good_vector);
         const auto bad_translation = quat::to_dual_quaternion(unit, v);
@@ -349,7 +350,7 @@ TEMPLATE_TEST_CASE("every function gives a visibly bad result for NaN and infini
         chain[13] = bad_rotation;
         CHECK(bad(quat::compose(chain).real));
 
-        // elementwise.hpp: the bad element only
+        // batch/elementwise.hpp: the bad element only
         std::vector<quaternion<T>> rotations(40, unit);
         rotations[9] = q;
         quat::rotate_each(rotations, points, rotated);
@@ -399,7 +400,7 @@ TEMPLATE_TEST_CASE("the first-use spellings give a visibly bad result for NaN an
         CHECK(bad(quat::lerp(p, p * T(2), value)));
         CHECK(bad(quat::radians(value)));
         CHECK(bad(quat::degrees(value)));
-        // quaternion.hpp, rotation_matrix.hpp, conversions.hpp, interpolation.hpp
+        // quaternion.hpp, rotation_matrix.hpp, conversions.hpp, paths/interpolation.hpp
         CHECK(bad(in.unit * in.v));
         CHECK(bad(in.m * p));
         CHECK(bad(quat::angle(in.q)));
@@ -409,7 +410,7 @@ TEMPLATE_TEST_CASE("the first-use spellings give a visibly bad result for NaN an
         if (!(value < 0)) CHECK(bad(quat::exp(quaternion<T>{value, 0, 0, 0})));
         CHECK(bad(quat::log(in.q)));
         CHECK(bad(quat::log(quaternion<T>{value, 0, 0, 0})));
-        // dual_quaternion.hpp, homogeneous_matrix.hpp
+        // rigid/dual_quaternion.hpp, rigid/homogeneous_matrix.hpp
         const auto dq = quat::to_dual_quaternion(in.unit, in.v);
         CHECK(bad(quat::to_dual_quaternion(in.unit) * in.v));
         CHECK(bad(quat::dual_quaternion<T>::from_translation(in.v) * p));
@@ -443,7 +444,7 @@ TEMPLATE_TEST_CASE(
         quat::matrix<T, 3, 3> j3{}, k3{};
         quat::matrix<T, 6, 6> j6{}, k6{};
 
-        // so3.hpp: the value, and each Jacobian that depends on the bad input
+        // lie/so3.hpp: the value, and each Jacobian that depends on the bad input
         CHECK(bad(quat::so3::exp(w, &j3)));
         CHECK(bad(j3));
         CHECK(bad(quat::so3::log(q, &j3)));
@@ -456,7 +457,7 @@ TEMPLATE_TEST_CASE(
         CHECK(bad(quat::so3::act(q, in.good_vector, &j3, &k3)));
         CHECK(bad(quat::so3::compose(q, in.unit)));
 
-        // se3.hpp
+        // lie/se3.hpp
         CHECK(bad(quat::se3::exp(t, &j6)));
         CHECK(bad(j6));
         CHECK(bad(quat::se3::log(motion, &j6)));
@@ -467,7 +468,7 @@ TEMPLATE_TEST_CASE(
         CHECK(bad(quat::se3::act(good, w)));
         CHECK(bad(quat::se3::compose(motion, good)));
 
-        // geodesic_mean.hpp
+        // lie/geodesic_mean.hpp
         std::vector<quaternion<T>> rotations(5, in.unit);
         rotations[3] = q;
         CHECK(bad(quat::geodesic_mean(rotations)));

@@ -1,4 +1,4 @@
-// Specification of nearest_rotation.hpp, against Eigen's SVD as the independent reference.
+// Specification of fitting/nearest_rotation.hpp, against Eigen's SVD as the independent reference.
 #include <cmath>
 #include <limits>
 

@@ -82,7 +82,7 @@ TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocatio
     quat::transform(quat::to_homogeneous(db), big_points, big_out);
     quat::transform(da, quat::soa_points<const float>{xs.data(), ys.data(), zs.data(), n},
                     quat::soa_points<float>{ox.data(), oy.data(), oz.data(), n});
-    // Per-element batches (elementwise.hpp).
+    // Per-element batches (batch/elementwise.hpp).
     quat::rotate_each(factors, points, out);
     quat::rotate_each(factors.data(), points.data(), points.data(), n);
     quat::rotate_each(

@@ -29,7 +29,8 @@ static_assert(std::is_constructible_v<quatd, quat::quatf> &&
 static_assert(std::is_trivially_copyable_v<quat::quatf>);
 static_assert(std::is_nothrow_default_constructible_v<quatd>);
 static_assert(quatd::identity() == one);
-// Hamilton's rules (thesis 2.16): i^2 = j^2 = k^2 = ijk = -1, ij = k, jk = i, ki = j and anti-commuting.
+// Hamilton's rules (thesis 2.16): i^2 = j^2 = k^2 = ijk = -1, ij = k, jk = i, ki = j and
+// anti-commuting.
 static_assert(i * i == -one && j * j == -one && k * k == -one && i * j * k == -one);
 static_assert(i * j == k && j * k == i && k * i == j);
 static_assert(j * i == -k && k * j == -i && i * k == -j);
@@ -227,10 +228,10 @@ TEMPLATE_TEST_CASE("is_unit measures | |q| - 1 | against the tolerance", "[quate
 
 TEST_CASE("rotate by a q from normalize keeps |v| within 4 eps and the direction within 4 eps",
           "[quaternion][accuracy]") {
-    // As users meet it: q = normalize(p) of an arbitrary p is unit only to a few eps, and
-    // rotate must not scale v by that rounding. v + w t + u x t (t = 2 u x v) ignores it and reaches
-    // 5.2 eps here; quat_accuracy measures the same on its own inputs beside GLM and Eigen.
-    // Reference in long double: q normalized in long double, then q (0, v) q* by Hamilton products.
+    // As users meet it: q = normalize(p) of an arbitrary p is unit only to a few eps, and rotate
+    // must not scale v by that rounding. v + w t + u x t (t = 2 u x v) ignores it and reaches 5.2
+    // eps here; quat_accuracy measures the same on its own inputs beside GLM and Eigen. Reference
+    // in long double: q normalized in long double, then q (0, v) q* by Hamilton products.
     quat::test::random_rotations random;
     const long double eps = std::numeric_limits<double>::epsilon();
     long double worst_length = 0, worst_direction = 0;

@@ -126,8 +126,8 @@ TEMPLATE_TEST_CASE("random_rotation is unit with w >= 0 and depends only on the 
         CHECK(quat::random_rotation<T>(copy) == q);
         CHECK(quat::random_rotation<T>(small) == quat::random_rotation<T>(small_copy));
     }
-    // Three uniforms, each from as many calls as std::generate_canonical makes: one call of a 64-bit
-    // engine per uniform.
+    // Three uniforms, each from as many calls as std::generate_canonical makes: one call of a
+    // 64-bit engine per uniform.
     std::mt19937_64 counted(quat::test::seed);
     (void)quat::random_rotation<T>(counted);
     std::mt19937_64 reference(quat::test::seed);

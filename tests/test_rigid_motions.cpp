@@ -1,5 +1,5 @@
-// Specification of rigid_batch.hpp: moving many points by one rigid motion (both layouts, in place,
-// containers, the streaming path) and composing many dual quaternions.
+// Specification of batch/rigid_motions.hpp: moving many points by one rigid motion (both layouts,
+// in place, containers, the streaming path) and composing many dual quaternions.
 #include <cmath>
 #include <cstddef>
 #include <vector>

@@ -1,6 +1,6 @@
-// Specification of rotation_spline.hpp: scipy 1.10's RotationSpline solved to convergence, checked
-// against scipy's answers (committed reference data, tools/scipy_spline_reference.py), finite
-// differences of the path, and the C2 conditions it is built from.
+// Specification of paths/rotation_spline.hpp: scipy 1.10's RotationSpline solved to convergence,
+// checked against scipy's answers (committed reference data, tools/scipy_spline_reference.py),
+// finite differences of the path, and the C2 conditions it is built from.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

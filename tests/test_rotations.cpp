@@ -1,5 +1,5 @@
-// Batch operations (quat/batch/rotations.hpp) give the scalar results: rotate over arrays of structs and
-// structs of arrays, compose over a span, slerp at many parameters.
+// Batch operations (quat/batch/rotations.hpp) give the scalar results: rotate over arrays of
+// structs and structs of arrays, compose over a span, slerp at many parameters.
 #include <array>
 #include <cmath>
 #include <limits>
@@ -45,7 +45,8 @@ TEMPLATE_TEST_CASE("batch rotate equals the scalar rotate, array of structs, eve
             // Points have length up to ~40, so the tolerance scales with it.
             CHECK(max_difference(by_q[i], quat::rotate(q, in[i])) <=
                   64 * quat::test::tolerance<T>::rotate);
-            // Not bit-exact: a compiler may contract the vectorized a * b + c into FMAs differently.
+            // Not bit-exact: a compiler may contract the vectorized a * b + c into FMAs
+            // differently.
             CHECK(max_difference(by_m[i], quat::rotate(m, in[i])) <=
                   64 * quat::test::tolerance<T>::rotate);
         }
@@ -179,7 +180,8 @@ TEMPLATE_TEST_CASE("batch slerp matches a long double slerp, polynomial path and
     // The polynomial path runs (float and double) when every t is in [0, 1] and the 4D angle h
     // between a and b has h^4 >= eps; otherwise each value falls back to the scalar slerp. Pairs
     // 0-2 take the fallback; all others the polynomial: rotation angles spread over 0.01 ... 3.13
-    // rad (h up to just below pi/2, where the shorter arc is still decided in T), then random pairs.
+    // rad (h up to just below pi/2, where the shorter arc is still decided in T), then random
+    // pairs.
     std::vector<T> t(301);
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = T(i) / T(300);
     long double worst_polynomial = 0, worst_fallback = 0;

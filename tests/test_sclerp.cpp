@@ -1,6 +1,7 @@
-// Specification of sclerp.hpp: screw linear interpolation equals the matrix form a exp(t log(a^-1 b))
-// of the 4x4 transforms (long double series, tests/support/rigid_reference.hpp), moves at constant
-// screw velocity, and stays accurate for pure and nearly pure translations and near half turns.
+// Specification of rigid/sclerp.hpp: screw linear interpolation equals the matrix form a exp(t
+// log(a^-1 b)) of the 4x4 transforms (long double series, tests/support/rigid_reference.hpp), moves
+// at constant screw velocity, and stays accurate for pure and nearly pure translations and near
+// half turns.
 #include <algorithm>
 #include <cmath>
 #include <limits>

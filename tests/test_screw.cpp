@@ -1,4 +1,5 @@
-// Specification of screw.hpp: every rigid motion as a turn about an axis line and a slide along it.
+// Specification of rigid/screw.hpp: every rigid motion as a turn about an axis line and a slide
+// along it.
 #include <cmath>
 #include <limits>
 

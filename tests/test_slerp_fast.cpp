@@ -1,6 +1,7 @@
-// The fast-slerp family (nlerp from interpolation.hpp, corrected_nlerp and slerp_fast from
-// slerp_fast.hpp) against the exact slerp: each method's largest rotation-angle error stays within
-// its documented bound in float and double, and the approximations are exact at t = 0 and t = 1.
+// The fast-slerp family (nlerp from paths/interpolation.hpp, corrected_nlerp and slerp_fast from
+// paths/slerp_fast.hpp) against the exact slerp: each method's largest rotation-angle error stays
+// within its documented bound in float and double, and the approximations are exact at t = 0 and t
+// = 1.
 #include <algorithm>
 #include <cmath>
 
@@ -37,9 +38,9 @@ quat::quatd widen(const quat::quatd& q) { return q; }
 
 // The largest errors of method(a, b, t) over pairs of five kinds (random; b = a turned by 10^-1 to
 // 10^-7 rad; nearly opposite, the rotations pi - 2e-3 apart; b = -a; b nearly -a) at t = 0, t = 1
-// and 31 random t between. The reference is the exact slerp in double of the same inputs, normalized
-// in double; the result's angle is taken after normalizing it (angle_between of a quaternion that is
-// not unit counts the length error as angle too).
+// and 31 random t between. The reference is the exact slerp in double of the same inputs,
+// normalized in double; the result's angle is taken after normalizing it (angle_between of a
+// quaternion that is not unit counts the length error as angle too).
 template <class T, class Method>
 largest largest_errors(Method method) {
     quat::test::random_rotations random;

@@ -1,4 +1,5 @@
-// SO(3) as a Lie group (quat/lie/so3.hpp): every analytic Jacobian against central differences of the
+// SO(3) as a Lie group (quat/lie/so3.hpp): every analytic Jacobian against central differences of
+// the
 // same function in long double, taken through the right plus and minus (the convention of the
 // header: J = d (f(X exp(d)) (-) f(X)) / d d at d = 0), at fixed-seed random points, the identity,
 // zero tangents, 1e-12 rad, around 1/4, both sides of the coefficients' switches (|w| = 2, 3) and
@@ -12,7 +13,8 @@
 // over steps h, h/2, h/4 (error O(h^6)); errors are relative to the largest entry of the reference
 // (absolute where it is zero). Where a function is smooth only within delta of the point (log near
 // a half turn, where the angle reaches pi and the rotation vector flips), the step must stay below
-// delta, and long double's rounding, about 1e-19 / h relative, limits the reference to 2e-9 there (steps from 4e-9).
+// delta, and long double's rounding, about 1e-19 / h relative, limits the reference to 2e-9 there
+// (steps from 4e-9).
 // QUAT_LIE_REPORT=1 in the environment prints the worst error of every Jacobian.
 #include <algorithm>
 #include <array>

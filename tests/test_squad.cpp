@@ -1,5 +1,5 @@
-// Specification of squad.hpp: Shoemake's spherical cubic through keyframes, checked against its
-// definition, finite differences of the path, and GLM's glm::squad / glm::intermediate.
+// Specification of paths/squad.hpp: Shoemake's spherical cubic through keyframes, checked against
+// its definition, finite differences of the path, and GLM's glm::squad / glm::intermediate.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

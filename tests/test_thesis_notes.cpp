@@ -1,5 +1,5 @@
-// docs/thesis-notes.md: each place where the thesis (Kivi 2019) needs correcting, shown numerically:
-// the thesis's form next to the correct one, and the difference between them.
+// docs/thesis-notes.md: each place where the thesis (Kivi 2019) needs correcting, shown
+// numerically: the thesis's form next to the correct one, and the difference between them.
 #include <cmath>
 
 #include <quat/quat.hpp>
@@ -38,7 +38,8 @@ rotation_matrix<double> thesis_rz(double psi) {
     return {{{c, s, 0}, {-s, c, 0}, {0, 0, 1}}};
 }
 
-/// Octonions by the Cayley–Dickson construction on quat's quaternions: (a, b)(c, d) = (ac − d*b, da + bc*).
+/// Octonions by the Cayley–Dickson construction on quat's quaternions: (a, b)(c, d) = (ac − d*b, da
+/// + bc*).
 struct octonion {
     quatd a, b;
 };
@@ -120,7 +121,8 @@ TEST_CASE("3b. the printed R_x, R_y, R_z are passive: thesis R_x(phi) = our R_x(
             CHECK(max_difference(thesis, quat::transpose(active)) <= tol::conversion);
         }
     }
-    // Applied as R p, the thesis's R_x(90 deg) takes y to -z: a clockwise turn, opposite to q p q^-1.
+    // Applied as R p, the thesis's R_x(90 deg) takes y to -z: a clockwise turn, opposite to q p
+    // q^-1.
     const v3 turned = quat::rotate(thesis_rx(pi / 2), v3{0, 1, 0});
     CHECK(max_difference(turned, v3{0, 0, -1}) <= tol::rotate);
     const quatd q = quat::to_quaternion(axis_angle<double>{{1, 0, 0}, pi / 2});
@@ -206,7 +208,8 @@ TEST_CASE("6. homogeneous first: the thesis's 4x4 matrices are quat's with coord
         CHECK(thesis[0][0] == 1);
         CHECK(thesis[0][1] == 0);
         CHECK(thesis[1][0] == m(0, 3));
-        // R(M R^(u)): u^ = <1, u>, then divide by the first component (definitions 2.12, 2.14, 3.1).
+        // R(M R^(u)): u^ = <1, u>, then divide by the first component (definitions 2.12, 2.14,
+        // 3.1).
         const v3 u = random.vector<double>(1.0);
         const double hat[4] = {1, u.x, u.y, u.z};
         double image[4] = {0, 0, 0, 0};

@@ -7,12 +7,12 @@
 #define QUAT_VERSION_PATCH 0
 
 /// Precondition check used throughout quat: QUAT_ASSERT(condition, message), the message a string
-/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG pay
-/// nothing. Define it before including quat to log, trap or abort your way. The handler must not
-/// return (past a failed index check the function would read out of bounds) and must not throw:
-/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate.
-/// Debug builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass
-/// and propagate), index ranges, output sizes and batch aliasing.
+/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG
+/// pay nothing. Define it before including quat to log, trap or abort your way. The handler must
+/// not return (past a failed index check the function would read out of bounds) and must not throw:
+/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate. Debug
+/// builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass and
+/// propagate), index ranges, output sizes and batch aliasing.
 #ifndef QUAT_ASSERT
 #include <cassert>
 #define QUAT_ASSERT(cond, msg) assert((cond) && (msg))

@@ -1,7 +1,7 @@
 // Mathematical constants, as C++20's <numbers> has them, in every language mode, and conversions
 // between degrees and radians. The constants live in quat::numbers, nested as the standard's are in
-// std::numbers, so `using namespace quat;` brings in no `pi` to collide with a user's own: after it,
-// write `numbers::pi`. radians and degrees are functions in quat itself, as GLM's are in glm.
+// std::numbers, so `using namespace quat;` brings in no `pi` to collide with a user's own: after
+// it, write `numbers::pi`. radians and degrees are functions in quat itself, as GLM's are in glm.
 #ifndef QUAT_CONSTANTS_HPP_INCLUDED
 #define QUAT_CONSTANTS_HPP_INCLUDED
 

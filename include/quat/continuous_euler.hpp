@@ -42,11 +42,11 @@ template <class T, sequence S, frame F>
 
 /// Euler angles of the unit quaternion q (convention S, F) nearest to `previous`, for tracking a
 /// motion frame by frame without jumps: feed each call the previous call's result. Of the two
-/// triples of every rotation ((a, b, c) and (a + pi, pi - b, c + pi) for Tait–Bryan sequences,
-/// (a + pi, -b, c + pi) for proper Euler ones), each angle moved by whole turns to lie within pi of
-/// its previous value, the one nearer `previous` (sum of squared differences) is returned; angles
-/// are not limited to [-pi, pi], the middle one included. At or near gimbal lock, where q fixes only
-/// a + c or a - c, the third angle keeps its previous value and the first takes the rest: where
+/// triples of every rotation ((a, b, c) and (a + pi, pi - b, c + pi) for Tait–Bryan sequences, (a +
+/// pi, -b, c + pi) for proper Euler ones), each angle moved by whole turns to lie within pi of its
+/// previous value, the one nearer `previous` (sum of squared differences) is returned; angles are
+/// not limited to [-pi, pi], the middle one included. At or near gimbal lock, where q fixes only a
+/// + c or a - c, the third angle keeps its previous value and the first takes the rest: where
 /// extract_euler reports gimbal_lock (q does not determine the split beyond rounding, and the plain
 /// extraction's third angle of 0 is as arbitrary), and wherever else that changes the rotation by
 /// at most 2 epsilon (|middle-angle distance to the lock| times the change of the third angle). So

@@ -52,7 +52,8 @@ template <class T>
     return normalize(q.w < T(0) ? -q : q);
 }
 
-/// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for double.
+/// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for
+/// double.
 template <class T>
 [[nodiscard]] constexpr T default_orthogonality_tolerance() noexcept {
     return detail::sqrt(detail::epsilon<T>());
@@ -177,7 +178,8 @@ template <class T>
 }
 
 /// Logarithm map: the rotation vector angle * axis of q, with angle in [0, pi] (q and -q agree).
-/// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same result.
+/// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same
+/// result.
 template <class T>
 [[nodiscard]] constexpr vec3<T> to_rotation_vector(const quaternion<T>& q) noexcept {
     const quaternion<T> r = detail::rescaled(q);

@@ -18,8 +18,9 @@ namespace quat {
 /// Axis sequences: six Tait–Bryan (three different axes) and six proper Euler (first == third).
 enum class sequence { xyz, xzy, yxz, yzx, zxy, zyx, xyx, xzx, yxy, yzy, zxz, zyz };
 
-/// intrinsic: R = R_S0(a0) R_S1(a1) R_S2(a2), turns about the moving (body) axes in the order S0, S1, S2.
-/// extrinsic: R = R_S2(a2) R_S1(a1) R_S0(a0), turns about the fixed axes in the order S0, S1, S2.
+/// intrinsic: R = R_S0(a0) R_S1(a1) R_S2(a2), turns about the moving (body) axes in the order S0,
+/// S1, S2. extrinsic: R = R_S2(a2) R_S1(a1) R_S0(a0), turns about the fixed axes in the order S0,
+/// S1, S2.
 enum class frame { intrinsic, extrinsic };
 
 /// Three angles in radians for the axis sequence S in frame F. The default, euler<T>{yaw, pitch,
@@ -126,7 +127,8 @@ template <class T, sequence S, frame F>
     const T c0 = detail::cos(h0), s0 = detail::sin(h0);
     const T c1 = detail::cos(h1), s1 = detail::sin(h1);
     const T c2 = detail::cos(h2), s2 = detail::sin(h2);
-    // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b = ±e_rest.
+    // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b =
+    // ±e_rest.
     const int a = order.first, b = order.second, rest = 3 - a - b;
     const T parity = (b - a + 3) % 3 == 1 ? T(1) : T(-1);
     T v[3]{};
@@ -134,8 +136,8 @@ template <class T, sequence S, frame F>
     v[b] = c0 * s1;
     v[rest] = parity * s0 * s1;
     const T w = c0 * c1;
-    // (w, v) q_m(last) = (w c2 - s2 v_m, w s2 e_m + c2 v + s2 v x e_m); (v x e_m) = (0, v_m+2, -v_m+1)
-    // in the cyclic coordinates starting at m.
+    // (w, v) q_m(last) = (w c2 - s2 v_m, w s2 e_m + c2 v + s2 v x e_m); (v x e_m) = (0, v_m+2,
+    // -v_m+1) in the cyclic coordinates starting at m.
     const int m = order.third, m1 = (m + 1) % 3, m2 = (m + 2) % 3;
     T r[3]{};
     r[m] = w * s2 + c2 * v[m];
@@ -193,7 +195,8 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const T v[3] = {p.x, p.y, p.z};
     // Proper i-j-i: (w, v_i, v_j, parity v_k) = (cos(b/2) cos(s), cos(b/2) sin(s), sin(b/2) cos(d),
     // sin(b/2) sin(d)), s = (alpha + gamma)/2, d = (alpha - gamma)/2. Tait–Bryan i-j-k reduces to
-    // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta + pi/2.
+    // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta +
+    // pi/2.
     const T a = proper ? p.w : p.w - v[j];
     const T b = proper ? v[i] : v[i] - parity * v[k];
     const T c = proper ? v[j] : v[j] + p.w;

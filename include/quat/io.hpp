@@ -150,8 +150,8 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, rotation);
 }
 
-/// Prints euler<S, F>{e[0], e[1], e[2]} with the convention's names, e.g. euler<zyx, intrinsic>{...};
-/// stream settings as for vec3.
+/// Prints euler<S, F>{e[0], e[1], e[2]} with the convention's names, e.g. euler<zyx,
+/// intrinsic>{...}; stream settings as for vec3.
 template <class T, sequence S, frame F, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const euler<T, S, F>& e) {

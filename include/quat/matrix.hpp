@@ -1,6 +1,7 @@
 // Small fixed-size matrices for Jacobians and covariances: matrix<T, Rows, Cols>. Not a linear
 // algebra library: products, sums, transposes and blocks, enough to chain the Jacobians of the
-// Lie-group functions (so3.hpp, se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or Ceres.
+// Lie-group functions (lie/so3.hpp, lie/se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or
+// Ceres.
 #ifndef QUAT_MATRIX_HPP_INCLUDED
 #define QUAT_MATRIX_HPP_INCLUDED
 

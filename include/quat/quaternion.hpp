@@ -17,9 +17,9 @@ namespace quat {
 namespace detail {
 
 /// The debug check of a unit quaternion or axis v: |v|^2 within 1/4096 of 1, which a forgotten
-/// normalization misses and accumulated rounding does not. NaN and infinities pass: they propagate to
-/// the result instead (NaN in, NaN out). Only float, double and long double are checked, so a user
-/// scalar (a counting or automatic-differentiation type) needs nothing more in debug builds.
+/// normalization misses and accumulated rounding does not. NaN and infinities pass: they propagate
+/// to the result instead (NaN in, NaN out). Only float, double and long double are checked, so a
+/// user scalar (a counting or automatic-differentiation type) needs nothing more in debug builds.
 template <class V>
 [[nodiscard]] constexpr bool is_near_unit(const V& v) noexcept {
     using T = decltype(squared_norm(v));
@@ -157,7 +157,8 @@ template <class T>
     return {q.w, -q.x, -q.y, -q.z};
 }
 
-/// Four-dimensional dot product; for unit quaternions cos of half the angle between the rotations, up to sign.
+/// Four-dimensional dot product; for unit quaternions cos of half the angle between the rotations,
+/// up to sign.
 template <class T>
 [[nodiscard]] constexpr T dot(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
@@ -288,10 +289,10 @@ template <class T>
 
 }  // namespace detail
 
-/// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
-/// s = 2 (2 - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few
-/// eps off unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7
-/// in double; quat_accuracy). 25 multiplications, 23 additions (16 and 17 on q alone, beside the work
+/// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and s = 2 (2
+/// - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few eps off
+/// unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7 in
+/// double; quat_accuracy). 25 multiplications, 23 additions (16 and 17 on q alone, beside the work
 /// on v). Precondition: |q|^2 = 1 + d with d small; the result is off by at most 2 d^2 |v|.
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
@@ -305,9 +306,9 @@ template <class T>
     return rotate(q, v);
 }
 
-/// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
-/// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
-/// NaN when a or b has a NaN or infinite component.
+/// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and
+/// b. Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations. NaN
+/// when a or b has a NaN or infinite component.
 template <class T>
 [[nodiscard]] constexpr T angle_between(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
@@ -340,8 +341,8 @@ namespace detail {
 template <class T, class A>
 using axis_rotation_scalar_t = std::conditional_t<std::is_void_v<T>, real_t<A>, T>;
 
-// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
-// The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
+// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2)
+// e_Axis). The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
 // rotation_x(numbers::pi_v<float>), without a narrowing warning at the call.
 template <int Axis, class T, class A>
 [[nodiscard]] constexpr quaternion<T> axis_rotation(A angle) noexcept {
@@ -351,25 +352,25 @@ template <int Axis, class T, class A>
 
 }  // namespace detail
 
-/// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
-/// The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless named:
-/// rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
+/// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from
+/// +x. The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless
+/// named: rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_x(
     A angle) noexcept {
     return detail::axis_rotation<0, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
-/// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
-/// Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
+/// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from
+/// +y. Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_y(
     A angle) noexcept {
     return detail::axis_rotation<1, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
-/// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
-/// Precision as rotation_x.
+/// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from
+/// +z. Precision as rotation_x.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_z(
     A angle) noexcept {

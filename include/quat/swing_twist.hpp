@@ -1,4 +1,5 @@
-// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
+// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves
+// it.
 #ifndef QUAT_SWING_TWIST_HPP_INCLUDED
 #define QUAT_SWING_TWIST_HPP_INCLUDED
 
@@ -37,12 +38,12 @@ template <class T>
 
 }  // namespace detail
 
-/// Splits the unit rotation q into swing * twist (twist applied first): twist =
-/// normalize(w, (v . a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis
-/// perpendicular to a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of
-/// Unreal's FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the
-/// twist is undefined) the twist is the identity and the swing is q. Preconditions: unit q and a
-/// non-zero finite axis of any length (NaN results otherwise); try_swing_twist checks them.
+/// Splits the unit rotation q into swing * twist (twist applied first): twist = normalize(w, (v .
+/// a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis perpendicular to
+/// a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of Unreal's
+/// FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the twist is
+/// undefined) the twist is the identity and the swing is q. Preconditions: unit q and a non-zero
+/// finite axis of any length (NaN results otherwise); try_swing_twist checks them.
 template <class T>
 [[nodiscard]] constexpr swing_twist_parts<T> swing_twist(const quaternion<T>& q,
                                                          const vec3<T>& axis) noexcept {

@@ -25,6 +25,6 @@
 // Opt-in: keep this file at quat/align_points.hpp beside the single quat.hpp, which it
 // includes.
 
-// This header moved to quat/registration/align_points.hpp; the old path keeps compiling (docs/architecture.md,
-// "Include paths before 1.1").
+// This header moved to quat/registration/align_points.hpp; the old path keeps compiling
+// (docs/architecture.md, "Include paths before 1.1").
 #include "registration/align_points.hpp"

@@ -25,6 +25,6 @@
 // Opt-in: keep this file at quat/geodesic_mean.hpp beside the single quat.hpp, which it
 // includes.
 
-// This header moved to quat/lie/geodesic_mean.hpp; the old path keeps compiling (docs/architecture.md,
-// "Include paths before 1.1").
+// This header moved to quat/lie/geodesic_mean.hpp; the old path keeps compiling
+// (docs/architecture.md, "Include paths before 1.1").
 #include "lie/geodesic_mean.hpp"

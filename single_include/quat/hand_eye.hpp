@@ -25,6 +25,6 @@
 // Opt-in: keep this file at quat/hand_eye.hpp beside the single quat.hpp, which it
 // includes.
 
-// This header moved to quat/registration/hand_eye.hpp; the old path keeps compiling (docs/architecture.md,
-// "Include paths before 1.1").
+// This header moved to quat/registration/hand_eye.hpp; the old path keeps compiling
+// (docs/architecture.md, "Include paths before 1.1").
 #include "registration/hand_eye.hpp"

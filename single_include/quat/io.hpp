@@ -86,11 +86,11 @@
 #include "quat.hpp"
 // ---- begin quat/detail/print_layout.hpp ----
 // The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
-// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
-// for the fixed text and p.value(component) for each scalar; format_printer adapts the layout to
-// std::format and fmt, whose formatters derive from value_formatter and name_formatter (the end of
-// this file says why those two are not keyed). No <ostream> and no <format> here: those are the
-// printers' own.
+// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers
+// p.text(ascii) for the fixed text and p.value(component) for each scalar; format_printer adapts
+// the layout to std::format and fmt, whose formatters derive from value_formatter and
+// name_formatter (the end of this file says why those two are not keyed). No <ostream> and no
+// <format> here: those are the printers' own.
 #ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 #define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 
@@ -577,8 +577,8 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, rotation);
 }
 
-/// Prints euler<S, F>{e[0], e[1], e[2]} with the convention's names, e.g. euler<zyx, intrinsic>{...};
-/// stream settings as for vec3.
+/// Prints euler<S, F>{e[0], e[1], e[2]} with the convention's names, e.g. euler<zyx,
+/// intrinsic>{...}; stream settings as for vec3.
 template <class T, sequence S, frame F, class CharT, class Traits>
 std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
                                               const euler<T, S, F>& e) {

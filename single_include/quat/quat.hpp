@@ -31,20 +31,24 @@
 // https://opensource.org/licenses/MIT
 //
 // Conventions, everywhere in this library:
-// - Quaternions are scalar first, w + xi + yj + zk, with Hamilton's product: ij = k, jk = i, ki = j.
+// - Quaternions are scalar first, w + xi + yj + zk, with Hamilton's product: ij = k, jk = i, ki =
+//   j.
 // - Rotations are active (they move vectors; the frame stays) in right-handed coordinates, and a
 //   positive angle turns counter-clockwise when seen from the tip of the axis toward the origin.
 // - A unit quaternion q rotates v as q (0, v) q*; q and -q are the same rotation. Where a
 //   conversion has to pick one, it returns the one with w >= 0.
-// - Products compose right to left: a * b applies b first, then a, for quaternions and matrices alike,
+// - Products compose right to left: a * b applies b first, then a, for quaternions and matrices
+//   alike,
 //   and to_matrix(a * b) == to_matrix(a) * to_matrix(b).
 // - Matrices act on column vectors, v' = M v, and rotate(q, v) == rotate(to_matrix(q), v).
 // - Euler angles carry their axis sequence and frame in their type: euler<T, sequence::zyx,
-//   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the product.
+//   frame::intrinsic>{a0, a1, a2} is R = Rz(a0) Ry(a1) Rx(a2); frame::extrinsic reverses the
+//   product.
 // - Rigid motions are x -> R x + t, rotation first: a dual quaternion real + eps dual has real = q
 //   and dual = (0, t) q / 2, and a homogeneous matrix is [R t; 0 0 0 1] acting on (x, y, z, 1);
 //   their products compose right to left like the rotations'.
-// - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted input
+// - Angles are in radians. Functions expecting unit input say so; try_* functions check untrusted
+//   input
 //   and return an empty std::optional instead of NaN.
 #ifndef QUAT_QUAT_HPP_INCLUDED
 #define QUAT_QUAT_HPP_INCLUDED
@@ -92,12 +96,12 @@
 #define QUAT_VERSION_PATCH 0
 
 /// Precondition check used throughout quat: QUAT_ASSERT(condition, message), the message a string
-/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG pay
-/// nothing. Define it before including quat to log, trap or abort your way. The handler must not
-/// return (past a failed index check the function would read out of bounds) and must not throw:
-/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate.
-/// Debug builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass
-/// and propagate), index ranges, output sizes and batch aliasing.
+/// literal naming the function and the precondition. Defaults to assert(), so builds with NDEBUG
+/// pay nothing. Define it before including quat to log, trap or abort your way. The handler must
+/// not return (past a failed index check the function would read out of bounds) and must not throw:
+/// quat's functions are noexcept, so an exception leaving the handler calls std::terminate. Debug
+/// builds check unit quaternions and axes (|q|^2 within 1/4096 of 1; NaN and infinities pass and
+/// propagate), index ranges, output sizes and batch aliasing.
 #ifndef QUAT_ASSERT
 #include <cassert>
 #define QUAT_ASSERT(cond, msg) assert((cond) && (msg))
@@ -122,7 +126,8 @@
 // instruction set it is compiled for: the widest of AVX-512F, AVX2, AVX, SSE4.1 and SSE, and
 // whether FMA is on (which changes every multiply-add the compiler contracts, and fast_fma below).
 // Units built with different flags then call different functions. Every header opens the key by
-// including detail/isa_namespace.inc, the one place its #if chain is spelled out (quat's only macros
+// including detail/isa_namespace.inc, the one place its #if chain is spelled out (quat's only
+// macros
 // are its version and QUAT_ASSERT); detail, nested in it, is keyed with everything in it.
 // What it covers: every function quat defines, free or in detail; rotation_spline, a class whose
 // member functions do real work, is keyed whole (so it cannot cross between such units). The value
@@ -258,7 +263,8 @@ inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
 [[nodiscard]] constexpr real sqrt(real x) noexcept {
     if (is_nan(x) || x < 0) return quiet_nan<real>();
     if (x == 0 || x == infinity<real>()) return x;
-    // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
+    // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases
+    // monotonically.
     real scale = 1;
     constexpr real big = 18446744073709551616.0L;  // 2^64
     while (x >= big) {
@@ -491,8 +497,8 @@ template <class T>
     return T(3.14159265358979323846264338327950288L);
 }
 
-/// T itself, in a context where it is not deduced (std::type_identity_t in C++20): a scalar beside a
-/// quat type converts to that type's T instead of deducing a second, conflicting T.
+/// T itself, in a context where it is not deduced (std::type_identity_t in C++20): a scalar beside
+/// a quat type converts to that type's T instead of deducing a second, conflicting T.
 template <class T>
 struct type_identity {
     using type = T;
@@ -1110,9 +1116,9 @@ inline namespace isa_generic {
 namespace detail {
 
 /// The debug check of a unit quaternion or axis v: |v|^2 within 1/4096 of 1, which a forgotten
-/// normalization misses and accumulated rounding does not. NaN and infinities pass: they propagate to
-/// the result instead (NaN in, NaN out). Only float, double and long double are checked, so a user
-/// scalar (a counting or automatic-differentiation type) needs nothing more in debug builds.
+/// normalization misses and accumulated rounding does not. NaN and infinities pass: they propagate
+/// to the result instead (NaN in, NaN out). Only float, double and long double are checked, so a
+/// user scalar (a counting or automatic-differentiation type) needs nothing more in debug builds.
 template <class V>
 [[nodiscard]] constexpr bool is_near_unit(const V& v) noexcept {
     using T = decltype(squared_norm(v));
@@ -1273,7 +1279,8 @@ template <class T>
     return {q.w, -q.x, -q.y, -q.z};
 }
 
-/// Four-dimensional dot product; for unit quaternions cos of half the angle between the rotations, up to sign.
+/// Four-dimensional dot product; for unit quaternions cos of half the angle between the rotations,
+/// up to sign.
 template <class T>
 [[nodiscard]] constexpr T dot(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
@@ -1404,10 +1411,10 @@ template <class T>
 
 }  // namespace detail
 
-/// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and
-/// s = 2 (2 - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few
-/// eps off unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7
-/// in double; quat_accuracy). 25 multiplications, 23 additions (16 and 17 on q alone, beside the work
+/// Rotates v by the unit quaternion q: q (0, v) q* / |q|^2, as M v with M built from q and s = 2 (2
+/// - |q|^2) in place of 2 (equal to 2 / |q|^2 to first order), so a q from normalize, a few eps off
+/// unit, keeps |v| within 4 eps (v + w t + u x t, t = 2 u x v, reaches 5.4 in float and 4.7 in
+/// double; quat_accuracy). 25 multiplications, 23 additions (16 and 17 on q alone, beside the work
 /// on v). Precondition: |q|^2 = 1 + d with d small; the result is off by at most 2 d^2 |v|.
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate(const quaternion<T>& q, const vec3<T>& v) noexcept {
@@ -1421,9 +1428,9 @@ template <class T>
     return rotate(q, v);
 }
 
-/// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and b.
-/// Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations.
-/// NaN when a or b has a NaN or infinite component.
+/// Angle in [0, pi] of the rotation that takes unit a to unit b, insensitive to the signs of a and
+/// b. Uses 4 atan2(|a - b|, |a + b|), accurate for nearly equal and nearly opposite rotations. NaN
+/// when a or b has a NaN or infinite component.
 template <class T>
 [[nodiscard]] constexpr T angle_between(const quaternion<T>& a, const quaternion<T>& b) noexcept {
     const quaternion<T> near = dot(a, b) < T(0) ? -b : b;
@@ -1456,8 +1463,8 @@ namespace detail {
 template <class T, class A>
 using axis_rotation_scalar_t = std::conditional_t<std::is_void_v<T>, real_t<A>, T>;
 
-// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2) e_Axis).
-// The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
+// The rotation by angle about coordinate axis Axis (0 = x, 1 = y, 2 = z): (cos(a/2), sin(a/2)
+// e_Axis). The angle is converted to T first, explicitly: rotation_x<float>(numbers::pi) is
 // rotation_x(numbers::pi_v<float>), without a narrowing warning at the call.
 template <int Axis, class T, class A>
 [[nodiscard]] constexpr quaternion<T> axis_rotation(A angle) noexcept {
@@ -1467,25 +1474,25 @@ template <int Axis, class T, class A>
 
 }  // namespace detail
 
-/// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from +x.
-/// The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless named:
-/// rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
+/// The rotation by angle radians about the x axis: the thesis's R_x, counter-clockwise seen from
+/// +x. The precision follows the angle (a float angle gives a quatf, an integer a quatd) unless
+/// named: rotation_x<float>(numbers::pi) is a quatf, the angle converted to float first.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_x(
     A angle) noexcept {
     return detail::axis_rotation<0, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
-/// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from +y.
-/// Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
+/// The rotation by angle radians about the y axis (the thesis's R_y), counter-clockwise seen from
+/// +y. Precision as rotation_x: rotation_y(0.5f) and rotation_y<float>(numbers::pi) are quatf.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_y(
     A angle) noexcept {
     return detail::axis_rotation<1, detail::axis_rotation_scalar_t<T, A>>(angle);
 }
 
-/// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from +z.
-/// Precision as rotation_x.
+/// The rotation by angle radians about the z axis (the thesis's R_z), counter-clockwise seen from
+/// +z. Precision as rotation_x.
 template <class T = void, class A>
 [[nodiscard]] constexpr quaternion<detail::axis_rotation_scalar_t<T, A>> rotation_z(
     A angle) noexcept {
@@ -1558,7 +1565,8 @@ template <class T>
     return normalize(q.w < T(0) ? -q : q);
 }
 
-/// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for double.
+/// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for
+/// double.
 template <class T>
 [[nodiscard]] constexpr T default_orthogonality_tolerance() noexcept {
     return detail::sqrt(detail::epsilon<T>());
@@ -1683,7 +1691,8 @@ template <class T>
 }
 
 /// Logarithm map: the rotation vector angle * axis of q, with angle in [0, pi] (q and -q agree).
-/// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same result.
+/// Accurate from the identity (series, no 0/0) to 180°. Any non-zero scale of q gives the same
+/// result.
 template <class T>
 [[nodiscard]] constexpr vec3<T> to_rotation_vector(const quaternion<T>& q) noexcept {
     const quaternion<T> r = detail::rescaled(q);
@@ -2073,8 +2082,8 @@ template <class T>
 // ---- begin quat/constants.hpp ----
 // Mathematical constants, as C++20's <numbers> has them, in every language mode, and conversions
 // between degrees and radians. The constants live in quat::numbers, nested as the standard's are in
-// std::numbers, so `using namespace quat;` brings in no `pi` to collide with a user's own: after it,
-// write `numbers::pi`. radians and degrees are functions in quat itself, as GLM's are in glm.
+// std::numbers, so `using namespace quat;` brings in no `pi` to collide with a user's own: after
+// it, write `numbers::pi`. radians and degrees are functions in quat itself, as GLM's are in glm.
 #ifndef QUAT_CONSTANTS_HPP_INCLUDED
 #define QUAT_CONSTANTS_HPP_INCLUDED
 
@@ -2188,8 +2197,9 @@ namespace quat {
 /// Axis sequences: six Tait–Bryan (three different axes) and six proper Euler (first == third).
 enum class sequence { xyz, xzy, yxz, yzx, zxy, zyx, xyx, xzx, yxy, yzy, zxz, zyz };
 
-/// intrinsic: R = R_S0(a0) R_S1(a1) R_S2(a2), turns about the moving (body) axes in the order S0, S1, S2.
-/// extrinsic: R = R_S2(a2) R_S1(a1) R_S0(a0), turns about the fixed axes in the order S0, S1, S2.
+/// intrinsic: R = R_S0(a0) R_S1(a1) R_S2(a2), turns about the moving (body) axes in the order S0,
+/// S1, S2. extrinsic: R = R_S2(a2) R_S1(a1) R_S0(a0), turns about the fixed axes in the order S0,
+/// S1, S2.
 enum class frame { intrinsic, extrinsic };
 
 /// Three angles in radians for the axis sequence S in frame F. The default, euler<T>{yaw, pitch,
@@ -2342,7 +2352,8 @@ template <class T, sequence S, frame F>
     const T c0 = detail::cos(h0), s0 = detail::sin(h0);
     const T c1 = detail::cos(h1), s1 = detail::sin(h1);
     const T c2 = detail::cos(h2), s2 = detail::sin(h2);
-    // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b = ±e_rest.
+    // q_a(first) q_b(middle): (c0 c1, s0 c1 e_a + c0 s1 e_b + s0 s1 e_a x e_b), e_a x e_b =
+    // ±e_rest.
     const int a = order.first, b = order.second, rest = 3 - a - b;
     const T parity = (b - a + 3) % 3 == 1 ? T(1) : T(-1);
     T v[3]{};
@@ -2350,8 +2361,8 @@ template <class T, sequence S, frame F>
     v[b] = c0 * s1;
     v[rest] = parity * s0 * s1;
     const T w = c0 * c1;
-    // (w, v) q_m(last) = (w c2 - s2 v_m, w s2 e_m + c2 v + s2 v x e_m); (v x e_m) = (0, v_m+2, -v_m+1)
-    // in the cyclic coordinates starting at m.
+    // (w, v) q_m(last) = (w c2 - s2 v_m, w s2 e_m + c2 v + s2 v x e_m); (v x e_m) = (0, v_m+2,
+    // -v_m+1) in the cyclic coordinates starting at m.
     const int m = order.third, m1 = (m + 1) % 3, m2 = (m + 2) % 3;
     T r[3]{};
     r[m] = w * s2 + c2 * v[m];
@@ -2409,7 +2420,8 @@ template <sequence S, frame F = frame::intrinsic, class T>
     const T v[3] = {p.x, p.y, p.z};
     // Proper i-j-i: (w, v_i, v_j, parity v_k) = (cos(b/2) cos(s), cos(b/2) sin(s), sin(b/2) cos(d),
     // sin(b/2) sin(d)), s = (alpha + gamma)/2, d = (alpha - gamma)/2. Tait–Bryan i-j-k reduces to
-    // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta + pi/2.
+    // it by q R_j(pi/2), which turns gamma about e_k into -parity gamma about e_i, beta into beta +
+    // pi/2.
     const T a = proper ? p.w : p.w - v[j];
     const T b = proper ? v[i] : v[i] - parity * v[k];
     const T c = proper ? v[j] : v[j] + p.w;
@@ -2552,11 +2564,11 @@ template <class T, sequence S, frame F>
 
 /// Euler angles of the unit quaternion q (convention S, F) nearest to `previous`, for tracking a
 /// motion frame by frame without jumps: feed each call the previous call's result. Of the two
-/// triples of every rotation ((a, b, c) and (a + pi, pi - b, c + pi) for Tait–Bryan sequences,
-/// (a + pi, -b, c + pi) for proper Euler ones), each angle moved by whole turns to lie within pi of
-/// its previous value, the one nearer `previous` (sum of squared differences) is returned; angles
-/// are not limited to [-pi, pi], the middle one included. At or near gimbal lock, where q fixes only
-/// a + c or a - c, the third angle keeps its previous value and the first takes the rest: where
+/// triples of every rotation ((a, b, c) and (a + pi, pi - b, c + pi) for Tait–Bryan sequences, (a +
+/// pi, -b, c + pi) for proper Euler ones), each angle moved by whole turns to lie within pi of its
+/// previous value, the one nearer `previous` (sum of squared differences) is returned; angles are
+/// not limited to [-pi, pi], the middle one included. At or near gimbal lock, where q fixes only a
+/// + c or a - c, the third angle keeps its previous value and the first takes the rest: where
 /// extract_euler reports gimbal_lock (q does not determine the split beyond rounding, and the plain
 /// extraction's third angle of 0 is as arbitrary), and wherever else that changes the rotation by
 /// at most 2 epsilon (|middle-angle distance to the lock| times the change of the third angle). So
@@ -2613,10 +2625,10 @@ template <sequence S, frame F, class T>
 
 // ---- begin quat/detail/relative_rotation.hpp ----
 // The relative rotation between two orientations, accurate when they are close: shared by
-// kinematics.hpp (angular velocity), squad.hpp (control points), sclerp.hpp and
-// rotation_spline.hpp, so that none of them includes another concept's header for it. Written for
-// any quaternion type with w, x, y, z and the quaternion operations (found by argument-dependent
-// lookup), so that this foundation header knows no type of quat's.
+// kinematics.hpp (angular velocity), paths/squad.hpp (control points), rigid/sclerp.hpp and
+// paths/rotation_spline.hpp, so that none of them includes another concept's header for it. Written
+// for any quaternion type with w, x, y, z and the quaternion operations (found by
+// argument-dependent lookup), so that this foundation header knows no type of quat's.
 #ifndef QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
 #define QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
 
@@ -2839,7 +2851,8 @@ template <class T, class Generator>
 #endif  // QUAT_RANDOM_HPP_INCLUDED
 // ---- end quat/random.hpp ----
 // ---- begin quat/swing_twist.hpp ----
-// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves it.
+// Swing-twist decomposition: a rotation split into a turn about a given axis and a turn that moves
+// it.
 #ifndef QUAT_SWING_TWIST_HPP_INCLUDED
 #define QUAT_SWING_TWIST_HPP_INCLUDED
 
@@ -2897,12 +2910,12 @@ template <class T>
 
 }  // namespace detail
 
-/// Splits the unit rotation q into swing * twist (twist applied first): twist =
-/// normalize(w, (v . a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis
-/// perpendicular to a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of
-/// Unreal's FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the
-/// twist is undefined) the twist is the identity and the swing is q. Preconditions: unit q and a
-/// non-zero finite axis of any length (NaN results otherwise); try_swing_twist checks them.
+/// Splits the unit rotation q into swing * twist (twist applied first): twist = normalize(w, (v .
+/// a) a) turns about a = axis / |axis|, and swing = q * twist* turns about an axis perpendicular to
+/// a; swing is the smallest rotation taking a to rotate(q, a) (the decomposition of Unreal's
+/// FQuat::ToSwingTwist). Where w^2 + (v . a)^2 <= epsilon^2 (q turns a to about -a, the twist is
+/// undefined) the twist is the identity and the swing is q. Preconditions: unit q and a non-zero
+/// finite axis of any length (NaN results otherwise); try_swing_twist checks them.
 template <class T>
 [[nodiscard]] constexpr swing_twist_parts<T> swing_twist(const quaternion<T>& q,
                                                          const vec3<T>& axis) noexcept {
@@ -2944,7 +2957,8 @@ template <class T>
 // Names: a function over arrays ends in _each when element i of its output comes from element i of
 // each input array (rotation i turns point i; a[i] * b[i]; matrix i of rotation i). One transform
 // applied to many elements keeps the plain name of its single form, with arrays in place of the
-// element (batch.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out), rigid_batch.hpp's
+// element (batch/rotations.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out),
+// batch/rigid_motions.hpp's
 // transform(dq, points, out)), as does a reduction of an array to one value (compose(factors)).
 //
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
@@ -2959,7 +2973,8 @@ template <class T>
 // multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
-// as in batch.hpp; the struct-of-arrays views are soa.hpp's. Aliasing: an output may be exactly an
+// as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
+// may be exactly an
 // input of its own type (in place) or overlap no input; it may never overlap an input of another
 // type. A partial overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (a
 // constant number of pointer range comparisons per call); with NDEBUG the values written are
@@ -3065,7 +3080,8 @@ using if_arrays_of = std::enable_if_t<
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 // ---- end quat/detail/containers.hpp ----
 // ---- begin quat/batch/detail/interleaved_points_avx.hpp ----
-// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
+// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles
+// spelled
 // out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
 // builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
 // from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
@@ -3412,10 +3428,10 @@ using float16 = float __attribute__((vector_size(64)));
 }
 
 // As transform_interleaved, 16 points (48 floats, three registers a, b, c) a step with full-width
-// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from
-// c; each output register is joined from x and y, then completed from z. 12 permutes and 9
-// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it keeps
-// to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
+// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from c;
+// each output register is joined from x and y, then completed from z. 12 permutes and 9
+// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it
+// keeps to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
 template <bool Translate>
 [[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
                                                           const vec3<float>& t, const float* in,
@@ -3503,7 +3519,8 @@ template <bool Translate, bool Stream = false>
 // ---- end quat/batch/detail/interleaved_points_avx.hpp ----
 // ---- begin quat/batch/detail/overlap.hpp ----
 // Whether two arrays overlap: the aliasing preconditions of the functions over many elements
-// (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
+// (batch/rotations.hpp, batch/elementwise.hpp, batch/rigid_motions.hpp), checked by QUAT_ASSERT in
+// debug builds.
 #ifndef QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
 
@@ -3538,7 +3555,8 @@ inline namespace isa_generic {
 namespace detail {
 
 // True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
-// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are
+// unspecified.
 [[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
                                    std::size_t b_bytes) noexcept {
     const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);
@@ -3559,7 +3577,8 @@ namespace detail {
 // ---- begin quat/batch/soa.hpp ----
 // Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
 // component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
-// them are in batch.hpp (rotate), rigid_batch.hpp (transform) and elementwise.hpp (rotate_each).
+// them are in batch/rotations.hpp (rotate), batch/rigid_motions.hpp (transform) and
+// batch/elementwise.hpp (rotate_each).
 //
 // The view types are the same under every instruction set, so they stay outside the instruction-set
 // namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
@@ -3875,9 +3894,9 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
 template <class T>
 void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3<T>* output,
                      std::size_t count) noexcept {
-    // No non-temporal stores beyond the caches, unlike batch.hpp's rotate: over 4M elements they
-    // measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against 13.8-14.5 ms; GLM's
-    // loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
+    // No non-temporal stores beyond the caches, unlike batch/rotations.hpp's rotate: over 4M
+    // elements they measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against
+    // 13.8-14.5 ms; GLM's loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
 #if defined(__AVX__)
     std::size_t done = 0;
 #if defined(__has_builtin) && !defined(__AVX512F__)
@@ -4032,7 +4051,7 @@ void to_quaternion_each(const Matrices& m, Output&& output) noexcept {
 // Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
 // matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
 // (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
-// namespaces are those of batch.hpp.
+// namespaces are those of batch/rotations.hpp.
 #ifndef QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
 #define QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
 
@@ -4535,8 +4554,10 @@ template <class T>
 
 /// The inverse x -> R^T (x - t) of the rigid motion m = [R t; 0 1]: rotation block R^T, translation
 /// -R^T t, exact transposition and 9 multiplications. Precondition: m is rigid (checked in debug
-/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to its
-/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that is
+/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to
+/// its
+/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that
+/// is
 /// not m's inverse (invert those with a general 4x4 inverse). NaN propagates.
 template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> inverse(const homogeneous_matrix<T>& m) noexcept {
@@ -4581,7 +4602,7 @@ template <class T>
 // ---- end quat/rigid/homogeneous_matrix.hpp ----
 // ---- begin quat/batch/detail/chained_product.hpp ----
 // The product of many factors in four interleaved chains: compose over an array of quaternions
-// (batch.hpp) and of dual quaternions (rigid_batch.hpp).
+// (batch/rotations.hpp) and of dual quaternions (batch/rigid_motions.hpp).
 #ifndef QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 
@@ -4618,9 +4639,9 @@ namespace detail {
 inline constexpr std::size_t product_chains = 4;
 
 // The four chains of chained_product for types whose four running products the compiler keeps in
-// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1].
-// A type that needs another layout (dual quaternions, rigid_batch.hpp) gives chained_product a
-// class with the same static member.
+// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1]. A
+// type that needs another layout (dual quaternions, batch/rigid_motions.hpp) gives chained_product
+// a class with the same static member.
 template <class Value>
 struct chain_values {
     static constexpr void run_products(const Value* f, std::size_t run,
@@ -4664,10 +4685,11 @@ template <class Value, class Chains = chain_values<Value>>
 // ---- end quat/batch/detail/chained_product.hpp ----
 // ---- begin quat/batch/detail/transform_points.hpp ----
 // The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
-// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
-// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
-// its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
-// last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
+// (batch/rotations.hpp) and the batch rigid transform (batch/rigid_motions.hpp), for arrays of
+// structs and struct of arrays. Plain loops that compilers vectorize; the float array-of-structs
+// loop of AVX builds spells its shuffles out (interleaved_points_avx.hpp), and float arrays that
+// with their input exceed the last-level cache are written on x86 with non-temporal stores
+// (streaming_store.hpp).
 #ifndef QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
@@ -4790,7 +4812,8 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
     const T tx = t.x, ty = t.y, tz = t.z;
     // Each index is read before it is written, so each output array may be its own input array, and
     // there is no dependence between iterations (the documented aliasing rule): say so to the
-    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
+    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop
+    // scalar.
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)
@@ -4816,7 +4839,7 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 #endif
 
 // output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
-// and of the rigid transform (rigid_batch.hpp).
+// and of the rigid transform (batch/rigid_motions.hpp).
 template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
                       vec3<T>* output, std::size_t count) noexcept {
@@ -4908,10 +4931,11 @@ inline namespace isa_generic {
 namespace detail {
 
 // The four chains of chained_product for dual quaternions, their running products stored
-// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
-// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
-// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
-// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on
+// four lanes, which compilers turn into vector instructions even at SSE2. Held as four dual
+// quaternions (chain_values), the 32 running components overflow SSE2's 16 registers and the loop
+// stays scalar: 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12,
+// x86-64).
 template <class T>
 struct dual_chain_components {
     static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,
@@ -5043,10 +5067,12 @@ template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range
 // check per call); with NDEBUG the values written are unspecified.
 //
 // One definition across instruction sets: the functions here are compiled differently under
-// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
+// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions
+// they
 // live in the inline namespace named after the instruction set (detail/math.hpp says what the key
-// covers). The struct-of-arrays views are in soa.hpp, which this header includes; the loops that
-// rotate and transform points (shared with rigid_batch.hpp) in detail/transform_points.hpp.
+// covers). The struct-of-arrays views are in batch/soa.hpp, which this header includes; the loops
+// that
+// rotate and transform points (shared with batch/rigid_motions.hpp) in detail/transform_points.hpp.
 #ifndef QUAT_BATCH_ROTATIONS_HPP_INCLUDED
 #define QUAT_BATCH_ROTATIONS_HPP_INCLUDED
 
@@ -5056,8 +5082,8 @@ template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range
 
 // ---- begin quat/paths/interpolation.hpp ----
 // Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
-// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
-// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and
+// the quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
 #ifndef QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
 #define QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
 
@@ -5103,9 +5129,9 @@ inline namespace isa_generic {
 namespace detail {
 namespace compile_time {
 
-// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a few ulp of
-// long double over the whole range. ln 2 is split into a head with 32 significant bits (fdlibm's
-// ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
+// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a
+// few ulp of long double over the whole range. ln 2 is split into a head with 32 significant bits
+// (fdlibm's ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
 inline constexpr real ln2 = 0.693147180559945309417232121458176568L;
 inline constexpr real ln2_head = 0.693147180369123816490L;
 inline constexpr real ln2_tail = ln2 - ln2_head;
@@ -5357,7 +5383,8 @@ template <class T>
     }
     if (t < T(0) || t > T(1)) {
         // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
-        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
+        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one
+        // product.
         const quaternion<T> relative = conjugate(a) * near;
         if constexpr (std::is_floating_point_v<T>) {
             // No motion; a bad t stays visible.
@@ -5436,12 +5463,12 @@ template <class T>
     return detail::power_of_unit(p, t) + (p - p);
 }
 
-/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
-/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
+/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only unit
+/// or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
 /// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
-/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
-/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
-/// ignores w and returns the identity for |v| < epsilon.
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to
+/// huge or subnormal |v| (measured as norm does, scaled); e^w overflows to Inf past w = ln max().
+/// NaN in gives NaN out. glm::exp ignores w and returns the identity for |v| < epsilon.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
     const vec3<T> v{q.x, q.y, q.z};
@@ -5501,8 +5528,9 @@ template <class T>
 /// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
 /// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
 /// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
-/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
-/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
+/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives
+/// NaN; an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug
+/// builds).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> rotate_towards(
     const quaternion<T>& from, const quaternion<T>& to,
@@ -5643,8 +5671,8 @@ void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
     rotate(to_matrix(q), input, output, count);
 }
 
-/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
-/// any input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
+/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap any
+/// input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
 template <class T>
 void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
             soa_points<T> output) noexcept {
@@ -5682,10 +5710,11 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 
 /// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
 /// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
-/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
-/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
-/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
+/// partial products joined at the end, so the CPU overlaps four products instead of waiting on
+/// each: the same rotation as the left-to-right loop by associativity, rounded differently: over
+/// 100 sets of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15
+/// (double) per component, as large as the sequential loop's own error against long double (2.7e-6,
+/// 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
     return detail::chained_product(q, count);
@@ -5757,7 +5786,8 @@ void slerp(quaternion<T> a, quaternion<T> b, const Parameters& t, Output&& outpu
 // ---- begin quat/matrix.hpp ----
 // Small fixed-size matrices for Jacobians and covariances: matrix<T, Rows, Cols>. Not a linear
 // algebra library: products, sums, transposes and blocks, enough to chain the Jacobians of the
-// Lie-group functions (so3.hpp, se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or Ceres.
+// Lie-group functions (lie/so3.hpp, lie/se3.hpp) and to hand them to Eigen (interop/eigen.hpp) or
+// Ceres.
 #ifndef QUAT_MATRIX_HPP_INCLUDED
 #define QUAT_MATRIX_HPP_INCLUDED
 
@@ -5991,10 +6021,10 @@ constexpr void set_block(matrix<T, R, C>& m, int row, int col,
 #endif  // QUAT_MATRIX_HPP_INCLUDED
 // ---- end quat/matrix.hpp ----
 // ---- begin quat/fitting/detail/wahba.hpp ----
-// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights,
-// with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
-// weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
-// arrays; align_points.hpp on the points less their centroids.
+// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights, with
+// the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
+// weights, the uniqueness test and scipy's sensitivity matrix. fitting/align_vectors.hpp calls it
+// on two arrays; registration/align_points.hpp on the points less their centroids.
 #ifndef QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
 #define QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
 
@@ -6160,7 +6190,8 @@ template <std::size_t N, class T>
         for (std::size_t p = 0; p < N - 1; ++p)
             for (std::size_t q = p + 1; q < N; ++q) {
                 if (k[p][q] == T(0)) continue;
-                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
+                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the
+                // smaller root.
                 const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
                 const T t = (theta < T(0) ? T(-1) : T(1)) /
                             (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));
@@ -6308,8 +6339,8 @@ inline namespace isa_generic {
 namespace detail {
 
 // Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
-// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique), or
-// a lower bound of that gap where it was not computed.
+// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique),
+// or a lower bound of that gap where it was not computed.
 template <class T>
 struct horn_solution {
     quaternion<T> rotation;
@@ -6407,10 +6438,10 @@ template <class T>
 }  // namespace detail
 
 /// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
-/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
-/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
-/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
-/// reports it. Non-finite m gives NaN elements.
+/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the
+/// result is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not
+/// unique (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned;
+/// try_nearest_rotation reports it. Non-finite m gives NaN elements.
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
     return to_matrix(detail::solve_horn(detail::unit_scaled(m)).rotation);
@@ -6435,7 +6466,7 @@ template <class T>
 namespace quat {
 
 template <class T>
-struct alignment;  // align_vectors.hpp; complete wherever a solution is made
+struct alignment;  // fitting/align_vectors.hpp; complete wherever a solution is made
 
 // ---- begin quat/detail/isa_namespace.inc ----
 // Opens quat's instruction-set namespace: included, once for each time it is opened, right after
@@ -6581,12 +6612,12 @@ template <class T>
     return p.w < T(0) ? -p : p;
 }
 
-// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs
-// with w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x)
-// (1 - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and
-// A = sum w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest
-// at atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds
-// only its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
+// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs with
+// w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x) (1
+// - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and A = sum
+// w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest at
+// atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds only
+// its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
 template <class T>
 struct turn {
     T angle;
@@ -6969,15 +7000,15 @@ inline namespace isa_generic {
 /// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
 /// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
 /// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
-/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
-/// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
-/// two first). unique is false when other rotations fit as well: when the sources, or the targets,
-/// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
-/// line (B = sum targets[i] sources[i]^T has rank one or zero), or the two best rotations tie to
-/// rounding (Davenport's K's top two eigenvalues within 32 epsilon of max |B(i, j)|: a few
-/// symmetric sets). Then the optimal rotation nearest the identity: rotation_between(sources[0],
-/// targets[0]) for one pair, the identity for no pairs (rssd 0). A NaN or infinite component gives
-/// a NaN rotation and rssd, unique = false.
+/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need
+/// not be unit, and longer ones count more, as in scipy. Any finite sizes, subnormal to max(), give
+/// the same rotation (the data are scaled by powers of two first). unique is false when other
+/// rotations fit as well: when the sources, or the targets, of the pairs with a positive weight and
+/// non-zero vectors all lie within 64 epsilon radians of one line (B = sum targets[i] sources[i]^T
+/// has rank one or zero), or the two best rotations tie to rounding (Davenport's K's top two
+/// eigenvalues within 32 epsilon of max |B(i, j)|: a few symmetric sets). Then the optimal rotation
+/// nearest the identity: rotation_between(sources[0], targets[0]) for one pair, the identity for no
+/// pairs (rssd 0). A NaN or infinite component gives a NaN rotation and rssd, unique = false.
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
                                                    const Sources& sources) noexcept {
@@ -7070,7 +7101,8 @@ template <class Targets, class Sources, class Weights,
 /// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
 /// mean of the targets' error variances (weights inversely proportional to them), it is the
 /// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
-/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
+/// elements when a weight is infinite (scipy raises) or the containers differ in size
+/// (QUAT_ASSERT).
 template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(
@@ -7136,7 +7168,8 @@ namespace detail {
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
 // J. Guidance 30(4), 2007): |M - R_i|_F^2 = 8 - 8 (q . q_i)^2 for unit quaternions, so the sign of
 // each q_i drops out. K is divided by its trace sum w_i, making the eigenvalues fractions of the
-// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a weight below zero or a
+// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a
+// weight below zero or a
 // non-positive or non-finite total (a NaN or infinite component gives NaN eigenvalues), and, when
 // `checked` (try_mean), for a rotation that is not a unit quaternion.
 template <class T>
@@ -7149,7 +7182,7 @@ template <bool checked, class T, class Rotation, class Weight>
 [[nodiscard]] constexpr mean_solution<T> solve_mean_of(Rotation rotation, std::size_t count,
                                                        Weight weight) noexcept {
     // The weights are divided by the largest first: the sums are ratios of weights, so the mean is
-    // the same, and weights near max() no longer overflow the sums nor subnormal ones underflow
+    // the same, and weights near max() do not overflow the sums nor subnormal ones underflow
     // them. A NaN or infinite weight makes the largest non-finite and the result invalid.
     T largest = T(0), lowest = T(0);
     bool units = true;
@@ -7722,12 +7755,12 @@ template <class Times, class Rotations, class T = detail::element_scalar_t<quate
 // eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
 // 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
 // their digits to cancellation, it is summed from its Taylor series. The same coefficients build
-// so3.hpp's and se3.hpp's Jacobians.
+// lie/so3.hpp's and lie/se3.hpp's Jacobians.
 //
 // Every coefficient takes both n2 = n^2 and n, and reads n only in its closed form, away from zero:
 // a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
 // only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
-// f(n) = f(n n, n), are those rotation_spline.hpp calls.
+// f(n) = f(n n, n), are those paths/rotation_spline.hpp calls.
 #ifndef QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 #define QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
@@ -7886,8 +7919,8 @@ template <class T>
     return inverse_jacobian_coefficient(n * n, n);
 }
 
-/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the
-/// shape of every Jr, Jl and inverse here (so3.hpp) and of the blocks of rotation_spline's solve.
+/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the shape
+/// of every Jr, Jl and inverse here (lie/so3.hpp) and of the blocks of rotation_spline's solve.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
     const T diagonal = a - c * squared_norm(r);
@@ -7929,9 +7962,9 @@ template <class T>
     return cos_sinc(squared_norm(r) * T(0.25), norm(r) * T(0.5));
 }
 
-/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1
-/// of so3.hpp, se3.hpp and rotation_spline.hpp takes. A floating-point T takes the half angle
-/// (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
+/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1 of
+/// lie/so3.hpp, lie/se3.hpp and paths/rotation_spline.hpp takes. A floating-point T takes the half
+/// angle (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
 template <class T>
 [[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
     const vec3<T>& r, bool inverse) noexcept {
@@ -8178,8 +8211,9 @@ public:
     /// The spline, or std::nullopt when there are fewer than two keyframes, the sizes differ, a
     /// time or a component is NaN or infinite (also after conversion to T), times do not strictly
     /// increase, a quaternion is zero, the solve for the angular velocities does not converge
-    /// within its bound of work (see the class comment; measured on random sets, docs/keyframes.md),
-    /// or a value of the spline between its first and last keyframes would overflow T.
+    /// within its bound of work (see the class comment; measured on random sets,
+    /// docs/keyframes.md), or a value of the spline between its first and last keyframes would
+    /// overflow T.
     template <class Times, class Rotations>
     [[nodiscard]] static std::optional<rotation_spline> try_make(const Times& times,
                                                                  const Rotations& rotations) {
@@ -8502,10 +8536,12 @@ bool rotation_spline<T>::build() {
 #endif  // QUAT_PATHS_ROTATION_SPLINE_HPP_INCLUDED
 // ---- end quat/paths/rotation_spline.hpp ----
 // ---- begin quat/paths/slerp_fast.hpp ----
-// Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
+// Slerp approximations without trigonometry, for when the exact slerp (paths/interpolation.hpp)
+// costs too
 // much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
 // of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
-// double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
+// double and 4e-7 rad in float). nlerp (paths/interpolation.hpp) is the cheap end of the family
+// (0.14
 // rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6 samples by
 // `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
 #ifndef QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
@@ -8542,8 +8578,8 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types:
-/// a branch on the sign of a . b goes either way on random input and costs more than the polynomials.
+/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types: a
+/// branch on the sign of a . b goes either way on random input and costs more than the polynomials.
 template <class T>
 [[nodiscard]] constexpr T sign_factor(T x) noexcept {
     if constexpr (std::is_same_v<T, float>) {
@@ -8561,9 +8597,9 @@ template <class T>
 
 /// nlerp from unit a (t = 0) to unit b (t = 1) along the shorter arc with t corrected so that the
 /// speed is nearly constant: rotation angle within 5.9e-4 rad of slerp's, |result| = 1 to rounding,
-/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit
-/// a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle error
-/// grows quickly).
+/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions:
+/// unit a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle
+/// error grows quickly).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> corrected_nlerp(const quaternion<T>& a,
                                                       const quaternion<T>& b,
@@ -8573,10 +8609,10 @@ template <class T>
     // nlerp at tau is slerp at t when tau = 1/2 + tan((t - 1/2) theta) / (2 tan(theta / 2)), theta
     // the 4D angle between a and the nearer of b, -b. zeux (Arseny Kapoulkine), "Approximating
     // slerp" (2015), writes tau = t + t (t - 1/2) (t - 1) k: tau is 0 and 1 at the ends whatever k
-    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear in
-    // w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
-    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
+    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear
+    // in w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
+    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad). const, not constexpr: a
+    // user scalar need not be a literal type.
     const T k00 = T(1.112132429948791), k01 = T(-1.0468288499833223);
     const T k10 = T(-1.741641016389086), k11 = T(2.5617072945285786);
     const T k20 = T(0.6675284572043932), k21 = T(-1.5895475706814315);
@@ -8594,8 +8630,8 @@ template <class T>
 /// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
 /// trigonometry: rotation angle within 3.4e-8 rad of slerp's in double and 4e-7 rad in float (about
 /// the exact slerp's own rounding), |result| = 1 within the same, exactly a at t = 0 and b or -b at
-/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1]; outside,
-/// the angle and length errors grow quickly.
+/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1];
+/// outside, the angle and length errors grow quickly.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
                                                  detail::type_identity_t<T> t) noexcept {
@@ -8603,17 +8639,17 @@ template <class T>
                 "quat::slerp_fast: a or b is not a unit quaternion");
     // With psi half the 4D angle between a and the nearer of b, -b (psi <= pi/4), c = cos psi and
     // alpha = 2t - 1, slerp's weights are E - O for a and E + O for b, where E = cos(alpha psi) /
-    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves both.
-    // As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
+    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves
+    // both. As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
     // sin(alpha psi) / sin psi satisfy as functions of c, as in Eberly 2011, "A fast and accurate
     // algorithm for computing SLERP", J. Graphics, GPU, and Game Tools 15(3)), with u = t - 1/2 and
-    // w = t (1 - t):  E = 1/2 - (w y / c) P(w, y),  O = u - u w y R(w, y),  P = 2 + (1 - 4w) y / 3 + ...,
-    // R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where cubics
-    // in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
+    // w = t (1 - t): E = 1/2 - (w y / c) P(w, y), O = u - u w y R(w, y), P = 2 + (1 - 4w) y / 3 +
+    // ..., R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where
+    // cubics in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
     // bench/fit_slerp_fast.py fits the coefficients to the smallest largest rotation-angle and
     // length errors (3.33e-8 both before rounding, within the 3.4e-8 rad that the tests assert; the
-    // series themselves, cut after y^3, leave 1.4e-5 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
+    // series themselves, cut after y^3, leave 1.4e-5 rad). const, not constexpr: a user scalar need
+    // not be a literal type.
     const T p00 = T(2.0000036702103374);
     const T p10 = T(0.3335047863139534), p11 = T(-1.3337634041499677);
     const T p20 = T(-0.06481534760799428), p21 = T(0.1712160812299326),
@@ -8694,10 +8730,11 @@ inline namespace isa_generic {
 /// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
 /// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
 /// twisted by 180 degrees keeps its volume. Weights (scalars convertible to T) need not sum to 1:
-/// they are divided by the largest |weight| first and normalization removes the scale, so any finite
-/// size works, subnormal to max(); they may be negative. Preconditions: unit real parts (QUAT_ASSERT;
-/// unchecked, longer ones count more); a zero blended real part (count 0, zero weights, or weights
-/// cancelling), a NaN or infinite weight or component gives NaN in every component.
+/// they are divided by the largest |weight| first and normalization removes the scale, so any
+/// finite size works, subnormal to max(); they may be negative. Preconditions: unit real parts
+/// (QUAT_ASSERT; unchecked, longer ones count more); a zero blended real part (count 0, zero
+/// weights, or weights cancelling), a NaN or infinite weight or component gives NaN in every
+/// component.
 template <class T, class Weight>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
                                                  const Weight* weights,
@@ -8948,9 +8985,9 @@ template <class T>
 }
 
 /// The unit dual quaternion of the screw motion s: real part (cos(h), sin(h) direction) and dual
-/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement / 2.
-/// from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion).
-/// Precondition: unit direction, and moment orthogonal to it.
+/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement /
+/// 2. from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion). Precondition:
+/// unit direction, and moment orthogonal to it.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> from_screw(const screw<T>& s) noexcept {
     const T h = s.angle * T(0.5), d = s.displacement * T(0.5);

@@ -1,12 +1,12 @@
-// Ceres's own test of a manifold, EXPECT_THAT_MANIFOLD_INVARIANTS_HOLD (ceres/manifold_test_utils.h,
-// GoogleTest): x (+) 0 = x, x (-) x = 0, (x (+) d) (-) x = d, x (+) (y (-) x) = y, the Jacobians
-// against Ridders differences, MinusJacobian * PlusJacobian = I, for quaternion_manifold and
-// pose_manifold at the identity, seeded random points, 1e-6 below a half turn and at a half turn,
-// with steps d from 1e-5 to pi - 1e-6 and random y (about half of them with dot(x, y) < 0, where a
-// shortest-path Minus would lead Plus to -y). Ceres's QuaternionManifold and
-// EigenQuaternionManifold run over the same rotations as a control of the points and the
-// tolerance. Each manifold prints how many of its sets of invariants fail.
-// Needs libceres, gtest and gmock: built as its own executable (tests/interop/CMakeLists.txt).
+// Ceres's own test of a manifold, EXPECT_THAT_MANIFOLD_INVARIANTS_HOLD
+// (ceres/manifold_test_utils.h, GoogleTest): x (+) 0 = x, x (-) x = 0, (x (+) d) (-) x = d, x (+)
+// (y (-) x) = y, the Jacobians against Ridders differences, MinusJacobian * PlusJacobian = I, for
+// quaternion_manifold and pose_manifold at the identity, seeded random points, 1e-6 below a half
+// turn and at a half turn, with steps d from 1e-5 to pi - 1e-6 and random y (about half of them
+// with dot(x, y) < 0, where a shortest-path Minus would lead Plus to -y). Ceres's
+// QuaternionManifold and EigenQuaternionManifold run over the same rotations as a control of the
+// points and the tolerance. Each manifold prints how many of its sets of invariants fail. Needs
+// libceres, gtest and gmock: built as its own executable (tests/interop/CMakeLists.txt).
 #include <array>
 #include <cmath>
 #include <cstdio>

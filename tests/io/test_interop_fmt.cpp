@@ -42,7 +42,8 @@ TEMPLATE_TEST_CASE("fmt::format prints the documented format", "[io][fmt]", floa
           "rotation_matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}");
     CHECK(fmt::format("{}", axis_angle<T>{vec3<T>{T(0), T(0), T(1)}, T(1.5)}) ==
           "axis_angle{vec3{0, 0, 1}, 1.5}");
-    // euler is tuple-like (structured bindings); with fmt/ranges.h included it still prints as euler.
+    // euler is tuple-like (structured bindings); with fmt/ranges.h included it still prints as
+    // euler.
     CHECK(fmt::format("{}", euler<T>{T(0.5), T(0.25), T(0.125)}) ==
           "euler<zyx, intrinsic>{0.5, 0.25, 0.125}");
     const euler_extraction<T, sequence::yzx, frame::extrinsic> locked{{T(1), T(-1.5), T(0)}, true};

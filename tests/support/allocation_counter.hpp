@@ -47,8 +47,8 @@ void ignore_free(const volatile void*) {}
     throw std::bad_alloc();
 }
 // Never inlined: valgrind replaces the out-of-line operator new and delete of this program with its
-// own, and a delete inlined as free() would pair its new with malloc's free (g++ 12 also warns about
-// that pairing, -Wmismatched-new-delete, once both are inlined into one caller).
+// own, and a delete inlined as free() would pair its new with malloc's free (g++ 12 also warns
+// about that pairing, -Wmismatched-new-delete, once both are inlined into one caller).
 [[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
 [[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 #endif

@@ -14,7 +14,7 @@
 #include <map>
 #include <string>
 
-// so3.hpp for matrix<T, R, C>: the single-header layout has no matrix.hpp of its own.
+// lie/so3.hpp for matrix<T, R, C>: the single-header layout has no matrix.hpp of its own.
 #include <quat/lie/so3.hpp>
 
 #include "catch.hpp"

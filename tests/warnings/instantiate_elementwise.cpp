@@ -1,7 +1,7 @@
-// Instantiates the per-element batches (elementwise.hpp) for float, double and long double under
-// the strict warning flags: every overload of rotate_each, compose_each, to_matrix_each and
-// to_quaternion_each, through pointers, std::vector, std::array and C arrays. Compiled, not run, by the
-// strict_warnings CTest test.
+// Instantiates the per-element batches (batch/elementwise.hpp) for float, double and long double
+// under the strict warning flags: every overload of rotate_each, compose_each, to_matrix_each and
+// to_quaternion_each, through pointers, std::vector, std::array and C arrays. Compiled, not run, by
+// the strict_warnings CTest test.
 #include <array>
 #include <vector>
 

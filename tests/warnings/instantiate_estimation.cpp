@@ -1,8 +1,8 @@
-// Instantiates align_vectors.hpp, align_points.hpp and mean.hpp (align_vectors, try_align_vectors,
-// align_vectors_with_sensitivity, align_points[_with_scale] and their try_ forms, hand_eye,
-// try_hand_eye, mean, try_mean) for float, double and long double under the strict warning flags, with weights
-// of another scalar type beside them (a double weight converts to T). Compiled, not run, by the
-// strict_warnings CTest test.
+// Instantiates fitting/align_vectors.hpp, registration/align_points.hpp and fitting/mean.hpp
+// (align_vectors, try_align_vectors, align_vectors_with_sensitivity, align_points[_with_scale] and
+// their try_ forms, hand_eye, try_hand_eye, mean, try_mean) for float, double and long double under
+// the strict warning flags, with weights of another scalar type beside them (a double weight
+// converts to T). Compiled, not run, by the strict_warnings CTest test.
 #include <array>
 #include <vector>
 

@@ -1,7 +1,7 @@
-// Instantiates matrix.hpp, so3.hpp, se3.hpp and geodesic_mean.hpp (every function with its
-// Jacobians requested, the means of rotations and of rigid motions with and without weights and
-// their try_ forms) for float, double and long double under the strict warning flags. Compiled,
-// not run, by the strict_warnings CTest test.
+// Instantiates matrix.hpp, lie/so3.hpp, lie/se3.hpp and lie/geodesic_mean.hpp (every function with
+// its Jacobians requested, the means of rotations and of rigid motions with and without weights and
+// their try_ forms) for float, double and long double under the strict warning flags. Compiled, not
+// run, by the strict_warnings CTest test.
 #include <vector>
 
 #include <quat/lie/geodesic_mean.hpp>

@@ -1,7 +1,7 @@
-// Instantiates the rigid-motion functions (dual_quaternion.hpp, homogeneous_matrix.hpp, screw.hpp,
-// sclerp.hpp, blend.hpp, rigid_batch.hpp) for float, double and long double under the strict
-// warning flags, with scalars of other types beside them (an int converts to T). Compiled, not
-// run, by the strict_warnings CTest test.
+// Instantiates the rigid-motion functions (rigid/dual_quaternion.hpp, rigid/homogeneous_matrix.hpp,
+// rigid/screw.hpp, rigid/sclerp.hpp, rigid/blend.hpp, batch/rigid_motions.hpp) for float, double
+// and long double under the strict warning flags, with scalars of other types beside them (an int
+// converts to T). Compiled, not run, by the strict_warnings CTest test.
 #include <vector>
 
 #include <quat/batch/rigid_motions.hpp>

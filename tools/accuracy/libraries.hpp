@@ -94,8 +94,9 @@ struct quat_library {
 };
 
 // GLM: qua<T>(w, x, y, z) is scalar first; Hamilton product; mat3_cast/quat_cast act on column
-// vectors like ours. GLM's Euler angles are (pitch, yaw, roll) = angles about (x, y, z) with
-// q = q_z(roll) q_y(yaw) q_x(pitch): our intrinsic zyx {roll, yaw, pitch} = extrinsic xyz {pitch, yaw, roll}.
+// vectors like ours. GLM's Euler angles are (pitch, yaw, roll) = angles about (x, y, z) with q =
+// q_z(roll) q_y(yaw) q_x(pitch): our intrinsic zyx {roll, yaw, pitch} = extrinsic xyz {pitch, yaw,
+// roll}.
 struct glm_library {
     static constexpr const char* name = "GLM";
     template <class T>
@@ -153,8 +154,9 @@ struct glm_library {
 };
 
 // Eigen: Quaternion(w, x, y, z) is scalar first (stored xyzw); Hamilton product; matrices act on
-// column vectors. Matrix3::eulerAngles(i, j, k) returns (a0, a1, a2) with R = R_i(a0) R_j(a1) R_k(a2),
-// i.e. our intrinsic ijk; our extrinsic ijk {a0, a1, a2} is Eigen's (k, j, i) with (a2, a1, a0).
+// column vectors. Matrix3::eulerAngles(i, j, k) returns (a0, a1, a2) with R = R_i(a0) R_j(a1)
+// R_k(a2), i.e. our intrinsic ijk; our extrinsic ijk {a0, a1, a2} is Eigen's (k, j, i) with (a2,
+// a1, a0).
 struct eigen_library {
     static constexpr const char* name = "Eigen";
     template <class T>

@@ -80,7 +80,8 @@ struct runner {
                    std::nullopt, std::nullopt, std::nullopt,   accepted};
     }
 
-    // Runs measure(lib) for the three libraries; each measure returns optional<error_stats> or error_stats.
+    // Runs measure(lib) for the three libraries; each measure returns optional<error_stats> or
+    // error_stats.
     template <class Measure>
     void add(row r, Measure measure) {
         r.quat = measure(quat_library{});

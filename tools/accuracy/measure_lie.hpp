@@ -1,7 +1,9 @@
 // Lie-group rows of the main table: so3 and se3 exp -> log round
-// trips, so3::exp's value, and the Jacobians of so3.hpp and se3.hpp, quat only (GLM has none; Eigen
+// trips, so3::exp's value, and the Jacobians of lie/so3.hpp and lie/se3.hpp, quat only (GLM has
+// none; Eigen
 // has AngleAxis, measured beside the so3 round trip). Every reference is computed here in `real`
-// with no quat code in its path: exp from the cosine and sine of the half angle, Jr = I - a W + b W^2
+// with no quat code in its path: exp from the cosine and sine of the half angle, Jr = I - a W + b
+// W^2
 // with a = 2 sin^2(n/2) / n^2 (no cancellation) and b = (n - sin n) / n^3 summed from its Taylor
 // series below n = 1, inverses by cofactors, SE(3)'s Q block by Barfoot's formula with the matrix
 // products as written (T. Barfoot, "State Estimation for Robotics", 2017, eq. 7.86), and SE(3)'s
@@ -31,7 +33,8 @@
 namespace accuracy {
 namespace lie {
 
-// ---- targets, in eps of the row's type, from the full run (g++ 12 -O2, 20000 inputs a family) ----
+// ---- targets, in eps of the row's type, from the full run (g++ 12 -O2, 20000 inputs a family)
+// ----
 // Round trips: so3 max 1.84 (float and double, random w), se3 max 4.53 (double, tiny w, where the
 // error is that of the translation's roundings relative to |xi| = |rho|).
 constexpr double target_round_trip = 4;
@@ -49,7 +52,8 @@ const char* lie_scalar_name() {
     return sizeof(T) == sizeof(float) ? "float" : "double";
 }
 
-// ---- high-precision 3 x 3 and 6 x 6 matrices -----------------------------------------------------
+// ---- high-precision 3 x 3 and 6 x 6 matrices
+// -----------------------------------------------------
 
 template <int N>
 using hmat = std::array<std::array<real, N>, N>;
@@ -205,7 +209,8 @@ inline std::array<hv, 2> se3_log(const hq& r, const hq& d) {
     return {inverse(jacobian3(omega, true)) * t, omega};
 }
 
-// ---- quat's types to and from the tool's ---------------------------------------------------------
+// ---- quat's types to and from the tool's
+// ---------------------------------------------------------
 
 template <class T>
 quat::vec3<T> to_quat(const v3<T>& v) {
@@ -233,7 +238,8 @@ real matrix_error(const quat::matrix<T, N, N>& got, const Reference& ref) {
 }
 inline real smaller(real a, real b) { return a < b ? a : b; }
 
-// ---- input families -------------------------------------------------------------------------------
+// ---- input families
+// -------------------------------------------------------------------------------
 
 struct family {
     const char* name;

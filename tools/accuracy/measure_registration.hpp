@@ -41,7 +41,8 @@ constexpr double target_far = 64;
 constexpr double target_far_scaled = 256;
 constexpr double target_hand_eye = 32;  // max 15.0 (float, daniilidis)
 
-// ---- high-precision 3 x 3 matrices (rows) --------------------------------------------------------
+// ---- high-precision 3 x 3 matrices (rows)
+// --------------------------------------------------------
 
 using hm = std::array<hv, 3>;
 
@@ -151,8 +152,8 @@ inline hm to_matrix(const hq& q_in) {
             hv{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
 }
 
-/// Angle (rad) of the rotation a^T b, from its antisymmetric part (sin) and trace (cos): a b that is
-/// orthogonal only to rounding (Eigen's matrix) is charged for its rotation, not its distortion.
+/// Angle (rad) of the rotation a^T b, from its antisymmetric part (sin) and trace (cos): a b that
+/// is orthogonal only to rounding (Eigen's matrix) is charged for its rotation, not its distortion.
 inline real angle_between(const hm& a, const hm& b) {
     const hm m = product(transposed(a), b);
     const hv axis{m[2][1] - m[1][2], m[0][2] - m[2][0], m[1][0] - m[0][1]};
@@ -161,7 +162,8 @@ inline real angle_between(const hm& a, const hm& b) {
 
 inline hv difference(const hv& a, const hv& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
-// ---- point sets and the reference fit ------------------------------------------------------------
+// ---- point sets and the reference fit
+// ------------------------------------------------------------
 
 template <class T>
 struct point_set {
@@ -270,7 +272,8 @@ point_set<T> make_set(rng& g, double offset, double noise, bool scaled) {
     return set;
 }
 
-// ---- the libraries' answers ----------------------------------------------------------------------
+// ---- the libraries' answers
+// ----------------------------------------------------------------------
 
 template <class T>
 struct answer {
@@ -329,7 +332,8 @@ void add_errors(set_errors& e, const answer<T>& got, const fit& ref, const point
     if (e.scale.add(in_eps<T>(r_abs(got.scale - ref.scale) / ref.scale))) e.scale.worst_case = what;
 }
 
-// ---- hand_eye --------------------------------------------------------------------------------------
+// ---- hand_eye
+// --------------------------------------------------------------------------------------
 
 struct motion {
     hq rotation;  // unit
@@ -409,10 +413,10 @@ template <class T>
 void add_rows(std::vector<row>& rows, bool quick, std::uint64_t seed) {
     const int sets = quick ? 200 : 3000;
     const bool is_float = sizeof(T) == sizeof(float);
-    // The offset D of (b): Eigen's one-pass means are off by about eps D, which shifts every centred
-    // point alike and moves B by n (eps D)^2, a relative eps (D / spread)^2. Its rotation error
-    // reaches 27 eps (RMS 3.9) at 1e4 in float and 346 (RMS 44) at 1e9 in double; at 1e3 and 1e6
-    // neither library lost anything.
+    // The offset D of (b): Eigen's one-pass means are off by about eps D, which shifts every
+    // centred point alike and moves B by n (eps D)^2, a relative eps (D / spread)^2. Its rotation
+    // error reaches 27 eps (RMS 3.9) at 1e4 in float and 346 (RMS 44) at 1e9 in double; at 1e3 and
+    // 1e6 neither library lost anything.
     const double far = is_float ? 1e4 : 1e9;
     struct family {
         std::string name;

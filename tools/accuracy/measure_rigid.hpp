@@ -1,5 +1,6 @@
-// `quat_accuracy --rigid`: the error of quat's rigid motions (dual_quaternion.hpp,
-// homogeneous_matrix.hpp, sclerp.hpp, blend.hpp, rigid_batch.hpp) in float and double against long
+// `quat_accuracy --rigid`: the error of quat's rigid motions (rigid/dual_quaternion.hpp,
+// rigid/homogeneous_matrix.hpp, rigid/sclerp.hpp, rigid/blend.hpp, batch/rigid_motions.hpp) in
+// float and double against long
 // double references, in units of the type's eps, on random inputs (fixed seed) and edge-case
 // families; then the constant speed of sclerp against dual-quaternion linear blending (quat's
 // blend, GLM's lerp + normalize), in radians. Motions are compared through their 4x4 matrices as
@@ -120,7 +121,8 @@ std::string describe(const vec3<T>& v) {
     return buf;
 }
 
-// ---- inputs --------------------------------------------------------------------------------------
+// ---- inputs
+// --------------------------------------------------------------------------------------
 
 inline double gaussian(rng& g) {
     const double u1 = 1.0 - g.uniform();  // (0, 1]
@@ -303,8 +305,8 @@ quat::homogeneous_matrix<T> rounded_matrix(const hq& q, const hv& t) {
     return out;
 }
 
-/// Conversions on one family: random rotations (edge = false) or rotations by 10^-k and
-/// pi - 10^-k (k = 1..15), 0 and pi about random axes (edge = true); translations Gaussian, scale 2.
+/// Conversions on one family: random rotations (edge = false) or rotations by 10^-k and pi - 10^-k
+/// (k = 1..15), 0 and pi about random axes (edge = true); translations Gaussian, scale 2.
 template <class T>
 void measure_conversions(rng& g, int count, bool edge, conversion_stats<T>& out) {
     for (int i = 0; i < count; ++i) {

@@ -81,7 +81,8 @@ inline hq axis_rotation(int axis, real angle) {
     return q;
 }
 
-/// Euler angles to quaternion. intrinsic: q = q_i(a0) q_j(a1) q_k(a2); extrinsic: q_k(a2) q_j(a1) q_i(a0).
+/// Euler angles to quaternion. intrinsic: q = q_i(a0) q_j(a1) q_k(a2); extrinsic: q_k(a2) q_j(a1)
+/// q_i(a0).
 inline hq euler_rotation(const std::array<int, 3>& axes, bool intrinsic, const hv& a) {
     const hq q0 = axis_rotation(axes[0], a[0]);
     const hq q1 = axis_rotation(axes[1], a[1]);

@@ -4,7 +4,8 @@
 // Names: a function over arrays ends in _each when element i of its output comes from element i of
 // each input array (rotation i turns point i; a[i] * b[i]; matrix i of rotation i). One transform
 // applied to many elements keeps the plain name of its single form, with arrays in place of the
-// element (batch.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out), rigid_batch.hpp's
+// element (batch/rotations.hpp's rotate(q, points, out), the batch slerp(a, b, ts, out),
+// batch/rigid_motions.hpp's
 // transform(dq, points, out)), as does a reduction of an array to one value (compose(factors)).
 //
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
@@ -19,7 +20,8 @@
 // multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
-// as in batch.hpp; the struct-of-arrays views are soa.hpp's. Aliasing: an output may be exactly an
+// as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
+// may be exactly an
 // input of its own type (in place) or overlap no input; it may never overlap an input of another
 // type. A partial overlap is a precondition violation: QUAT_ASSERT reports it in debug builds (a
 // constant number of pointer range comparisons per call); with NDEBUG the values written are
@@ -237,9 +239,9 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
 template <class T>
 void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3<T>* output,
                      std::size_t count) noexcept {
-    // No non-temporal stores beyond the caches, unlike batch.hpp's rotate: over 4M elements they
-    // measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against 13.8-14.5 ms; GLM's
-    // loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
+    // No non-temporal stores beyond the caches, unlike batch/rotations.hpp's rotate: over 4M
+    // elements they measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against
+    // 13.8-14.5 ms; GLM's loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
 #if defined(__AVX__)
     std::size_t done = 0;
 #if defined(__has_builtin) && !defined(__AVX512F__)

@@ -1,7 +1,7 @@
 // Rigid motions over many elements: moving many points by one dual quaternion or homogeneous
 // matrix (array of structs and struct of arrays), and composing many dual quaternions. The loops
 // (detail/transform_points.hpp, detail/chained_product.hpp), aliasing rules and instruction-set
-// namespaces are those of batch.hpp.
+// namespaces are those of batch/rotations.hpp.
 #ifndef QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
 #define QUAT_BATCH_RIGID_MOTIONS_HPP_INCLUDED
 
@@ -24,10 +24,11 @@ namespace quat {
 namespace detail {
 
 // The four chains of chained_product for dual quaternions, their running products stored
-// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on four
-// lanes, which compilers turn into vector instructions even at SSE2. Held as four dual quaternions
-// (chain_values), the 32 running components overflow SSE2's 16 registers and the loop stays scalar:
-// 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12, x86-64).
+// component-major (component c of chain j at a[c][j]): each step is then the same arithmetic on
+// four lanes, which compilers turn into vector instructions even at SSE2. Held as four dual
+// quaternions (chain_values), the 32 running components overflow SSE2's 16 registers and the loop
+// stays scalar: 2.4 times slower (measured by rigid_chain/quat/dual_quaternion/float/1024, g++ 12,
+// x86-64).
 template <class T>
 struct dual_chain_components {
     static constexpr void run_products(const dual_quaternion<T>* f, std::size_t run,

@@ -14,10 +14,12 @@
 // check per call); with NDEBUG the values written are unspecified.
 //
 // One definition across instruction sets: the functions here are compiled differently under
-// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions they
+// different -m flags (vector width, the streaming branch, FMA), so like all of quat's functions
+// they
 // live in the inline namespace named after the instruction set (detail/math.hpp says what the key
-// covers). The struct-of-arrays views are in soa.hpp, which this header includes; the loops that
-// rotate and transform points (shared with rigid_batch.hpp) in detail/transform_points.hpp.
+// covers). The struct-of-arrays views are in batch/soa.hpp, which this header includes; the loops
+// that
+// rotate and transform points (shared with batch/rigid_motions.hpp) in detail/transform_points.hpp.
 #ifndef QUAT_BATCH_ROTATIONS_HPP_INCLUDED
 #define QUAT_BATCH_ROTATIONS_HPP_INCLUDED
 
@@ -136,8 +138,8 @@ void rotate(const quaternion<T>& q, const vec3<T>* input, vec3<T>* output,
     rotate(to_matrix(q), input, output, count);
 }
 
-/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap
-/// any input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
+/// Struct-of-arrays rotation by m: each output array may be its own input array or not overlap any
+/// input (rotate(m, points, points) rotates in place). Precondition: output.count >= input.count.
 template <class T>
 void rotate(const rotation_matrix<T>& m, soa_points<const detail::type_identity_t<T>> input,
             soa_points<T> output) noexcept {
@@ -175,10 +177,11 @@ void rotate(const rotation_matrix<T>& m, const Input& input, Output&& output) no
 
 /// The product q[0] q[1] ... q[count - 1] (q[count - 1] applies first); identity when count == 0.
 /// Four runs of consecutive factors are multiplied in interleaved, independent chains and the four
-/// partial products joined at the end, so the CPU overlaps four products instead of waiting on each:
-/// the same rotation as the left-to-right loop by associativity, rounded differently: over 100 sets
-/// of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15 (double) per
-/// component, as large as the sequential loop's own error against long double (2.7e-6, 4.7e-15).
+/// partial products joined at the end, so the CPU overlaps four products instead of waiting on
+/// each: the same rotation as the left-to-right loop by associativity, rounded differently: over
+/// 100 sets of 1024 random unit factors the two differ by at most 2.5e-6 (float) and 5.1e-15
+/// (double) per component, as large as the sequential loop's own error against long double (2.7e-6,
+/// 4.7e-15).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> compose(const quaternion<T>* q, std::size_t count) noexcept {
     return detail::chained_product(q, count);

@@ -1,6 +1,7 @@
 // Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
 // component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
-// them are in batch.hpp (rotate), rigid_batch.hpp (transform) and elementwise.hpp (rotate_each).
+// them are in batch/rotations.hpp (rotate), batch/rigid_motions.hpp (transform) and
+// batch/elementwise.hpp (rotate_each).
 //
 // The view types are the same under every instruction set, so they stay outside the instruction-set
 // namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.

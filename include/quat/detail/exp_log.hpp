@@ -15,9 +15,9 @@ namespace quat {
 namespace detail {
 namespace compile_time {
 
-// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a few ulp of
-// long double over the whole range. ln 2 is split into a head with 32 significant bits (fdlibm's
-// ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
+// e^x and ln x in long double for constant evaluation, as detail/math.hpp's sqrt and sin: within a
+// few ulp of long double over the whole range. ln 2 is split into a head with 32 significant bits
+// (fdlibm's ln2_hi), so k * head is exact for |k| < 2^32, and the rest.
 inline constexpr real ln2 = 0.693147180559945309417232121458176568L;
 inline constexpr real ln2_head = 0.693147180369123816490L;
 inline constexpr real ln2_tail = ln2 - ln2_head;

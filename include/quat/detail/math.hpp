@@ -14,7 +14,8 @@
 // instruction set it is compiled for: the widest of AVX-512F, AVX2, AVX, SSE4.1 and SSE, and
 // whether FMA is on (which changes every multiply-add the compiler contracts, and fast_fma below).
 // Units built with different flags then call different functions. Every header opens the key by
-// including detail/isa_namespace.inc, the one place its #if chain is spelled out (quat's only macros
+// including detail/isa_namespace.inc, the one place its #if chain is spelled out (quat's only
+// macros
 // are its version and QUAT_ASSERT); detail, nested in it, is keyed with everything in it.
 // What it covers: every function quat defines, free or in detail; rotation_spline, a class whose
 // member functions do real work, is keyed whole (so it cannot cross between such units). The value
@@ -127,7 +128,8 @@ inline constexpr real half_pi_tail = pi / 2 - half_pi_head;
 [[nodiscard]] constexpr real sqrt(real x) noexcept {
     if (is_nan(x) || x < 0) return quiet_nan<real>();
     if (x == 0 || x == infinity<real>()) return x;
-    // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases monotonically.
+    // Scale by powers of 4 (exact) into [1, 4), then Newton from above, which decreases
+    // monotonically.
     real scale = 1;
     constexpr real big = 18446744073709551616.0L;  // 2^64
     while (x >= big) {
@@ -360,8 +362,8 @@ template <class T>
     return T(3.14159265358979323846264338327950288L);
 }
 
-/// T itself, in a context where it is not deduced (std::type_identity_t in C++20): a scalar beside a
-/// quat type converts to that type's T instead of deducing a second, conflicting T.
+/// T itself, in a context where it is not deduced (std::type_identity_t in C++20): a scalar beside
+/// a quat type converts to that type's T instead of deducing a second, conflicting T.
 template <class T>
 struct type_identity {
     using type = T;

@@ -1,9 +1,9 @@
 // The text layout of quat's types, written once for every printer: streams (io.hpp), std::format
-// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers p.text(ascii)
-// for the fixed text and p.value(component) for each scalar; format_printer adapts the layout to
-// std::format and fmt, whose formatters derive from value_formatter and name_formatter (the end of
-// this file says why those two are not keyed). No <ostream> and no <format> here: those are the
-// printers' own.
+// (io.hpp) and {fmt} (interop/fmt.hpp). io.hpp documents the format. A printer p offers
+// p.text(ascii) for the fixed text and p.value(component) for each scalar; format_printer adapts
+// the layout to std::format and fmt, whose formatters derive from value_formatter and
+// name_formatter (the end of this file says why those two are not keyed). No <ostream> and no
+// <format> here: those are the printers' own.
 #ifndef QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 #define QUAT_DETAIL_PRINT_LAYOUT_HPP_INCLUDED
 

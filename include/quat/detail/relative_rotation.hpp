@@ -1,8 +1,8 @@
 // The relative rotation between two orientations, accurate when they are close: shared by
-// kinematics.hpp (angular velocity), squad.hpp (control points), sclerp.hpp and
-// rotation_spline.hpp, so that none of them includes another concept's header for it. Written for
-// any quaternion type with w, x, y, z and the quaternion operations (found by argument-dependent
-// lookup), so that this foundation header knows no type of quat's.
+// kinematics.hpp (angular velocity), paths/squad.hpp (control points), rigid/sclerp.hpp and
+// paths/rotation_spline.hpp, so that none of them includes another concept's header for it. Written
+// for any quaternion type with w, x, y, z and the quaternion operations (found by
+// argument-dependent lookup), so that this foundation header knows no type of quat's.
 #ifndef QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
 #define QUAT_DETAIL_RELATIVE_ROTATION_HPP_INCLUDED
 

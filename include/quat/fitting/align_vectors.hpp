@@ -43,15 +43,15 @@ struct alignment_with_sensitivity : alignment<T> {
 /// The rotation R minimizing sum |targets[i] - R sources[i]|^2 (Wahba's problem), the one scipy's
 /// Rotation.align_vectors(a=targets, b=sources) returns: always a proper rotation, never a
 /// reflection. targets and sources are equally long containers of vec3<T> with data() and size(),
-/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need not be unit, and longer ones count more, as in scipy.
-/// Any finite sizes, subnormal to max(), give the same rotation (the data are scaled by powers of
-/// two first). unique is false when other rotations fit as well: when the sources, or the targets,
-/// of the pairs with a positive weight and non-zero vectors all lie within 64 epsilon radians of one
-/// line (B = sum targets[i] sources[i]^T has rank one or zero), or the two best rotations tie to
-/// rounding (Davenport's K's top two eigenvalues within 32 epsilon of max |B(i, j)|: a few
-/// symmetric sets). Then the optimal rotation nearest the identity: rotation_between(sources[0],
-/// targets[0]) for one pair, the identity for no pairs (rssd 0). A NaN or infinite component gives
-/// a NaN rotation and rssd, unique = false.
+/// or C arrays (QUAT_ASSERT; unchecked, other lengths give the NaN result below); the vectors need
+/// not be unit, and longer ones count more, as in scipy. Any finite sizes, subnormal to max(), give
+/// the same rotation (the data are scaled by powers of two first). unique is false when other
+/// rotations fit as well: when the sources, or the targets, of the pairs with a positive weight and
+/// non-zero vectors all lie within 64 epsilon radians of one line (B = sum targets[i] sources[i]^T
+/// has rank one or zero), or the two best rotations tie to rounding (Davenport's K's top two
+/// eigenvalues within 32 epsilon of max |B(i, j)|: a few symmetric sets). Then the optimal rotation
+/// nearest the identity: rotation_between(sources[0], targets[0]) for one pair, the identity for no
+/// pairs (rssd 0). A NaN or infinite component gives a NaN rotation and rssd, unique = false.
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment<T> align_vectors(const Targets& targets,
                                                    const Sources& sources) noexcept {
@@ -144,7 +144,8 @@ template <class Targets, class Sources, class Weights,
 /// functions of its singular values (see alignment_with_sensitivity). Multiplied by the harmonic
 /// mean of the targets' error variances (weights inversely proportional to them), it is the
 /// covariance of the rotation's error. Huge, infinite or NaN elements when unique is false; NaN
-/// elements when a weight is infinite (scipy raises) or the containers differ in size (QUAT_ASSERT).
+/// elements when a weight is infinite (scipy raises) or the containers differ in size
+/// (QUAT_ASSERT).
 template <class Targets, class Sources, class Weights,
           class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr alignment_with_sensitivity<T> align_vectors_with_sensitivity(

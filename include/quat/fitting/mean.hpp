@@ -21,7 +21,8 @@ namespace detail {
 // eigenvalue of K = sum w_i q_i q_i^T (Markley, Cheng, Crassidis, Oshman, "Averaging quaternions",
 // J. Guidance 30(4), 2007): |M - R_i|_F^2 = 8 - 8 (q . q_i)^2 for unit quaternions, so the sign of
 // each q_i drops out. K is divided by its trace sum w_i, making the eigenvalues fractions of the
-// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a weight below zero or a
+// total weight. `rotation(i)` gives q_i and `weight(i)` w_i; `valid` is false for no rotations, a
+// weight below zero or a
 // non-positive or non-finite total (a NaN or infinite component gives NaN eigenvalues), and, when
 // `checked` (try_mean), for a rotation that is not a unit quaternion.
 template <class T>
@@ -34,7 +35,7 @@ template <bool checked, class T, class Rotation, class Weight>
 [[nodiscard]] constexpr mean_solution<T> solve_mean_of(Rotation rotation, std::size_t count,
                                                        Weight weight) noexcept {
     // The weights are divided by the largest first: the sums are ratios of weights, so the mean is
-    // the same, and weights near max() no longer overflow the sums nor subnormal ones underflow
+    // the same, and weights near max() do not overflow the sums nor subnormal ones underflow
     // them. A NaN or infinite weight makes the largest non-finite and the result invalid.
     T largest = T(0), lowest = T(0);
     bool units = true;

@@ -17,8 +17,8 @@ namespace quat {
 namespace detail {
 
 // Unit quaternion (w >= 0) of the rotation R maximizing trace(R^T m), i.e. minimizing the Frobenius
-// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique), or
-// a lower bound of that gap where it was not computed.
+// norm |R - m|, and the gap between the two largest eigenvalues of Horn's matrix (0: not unique),
+// or a lower bound of that gap where it was not computed.
 template <class T>
 struct horn_solution {
     quaternion<T> rotation;
@@ -116,10 +116,10 @@ template <class T>
 }  // namespace detail
 
 /// The rotation matrix nearest to m in the Frobenius norm, for any finite 3x3 m. For det(m) > 0 it
-/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the result
-/// is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not unique
-/// (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned; try_nearest_rotation
-/// reports it. Non-finite m gives NaN elements.
+/// is the orthogonal polar factor of m. For det(m) <= 0 the polar factor is a reflection; the
+/// result is still the nearest proper rotation (trace(R^T m) maximal). When that rotation is not
+/// unique (e.g. m = -I, or rank(m) < 2) one of the nearest rotations is returned;
+/// try_nearest_rotation reports it. Non-finite m gives NaN elements.
 template <class T>
 [[nodiscard]] constexpr rotation_matrix<T> nearest_rotation(const rotation_matrix<T>& m) noexcept {
     return to_matrix(detail::solve_horn(detail::unit_scaled(m)).rotation);

@@ -2,15 +2,18 @@
 // ceres::Manifold classes with analytic Jacobians, and functions that read a cost functor's
 // parameter blocks (`const T*`, T double or ceres::Jet) as quat types and write quat types back.
 //
-// Parameter-block layouts (scalar FIRST, quat's order, the memory layout of ceres::QuaternionManifold
-// and ceres/rotation.h; NOT Eigen's x, y, z, w, and not g2o's x, y, z, qx, qy, qz, qw, which put the
+// Parameter-block layouts (scalar FIRST, quat's order, the memory layout of
+// ceres::QuaternionManifold
+// and ceres/rotation.h; NOT Eigen's x, y, z, w, and not g2o's x, y, z, qx, qy, qz, qw, which put
+// the
 // scalar last: convert such data when reading it):
 //   rotation: 4 numbers  w, x, y, z                      (quaternion_manifold)
 //   pose:     7 numbers  w, x, y, z, tx, ty, tz          (pose_manifold): rotation then translation
 //   twist:    6 numbers  linear x, y, z, angular x, y, z (se3::twist, the pose manifold's tangent)
 //
 // Both manifolds perturb on the right, as quat's so3/se3 functions (Sola et al., "A micro Lie
-// theory for state estimation in robotics", 2018): Plus(x, d) = x exp(d), Minus(y, x) = log(x^-1 y),
+// theory for state estimation in robotics", 2018): Plus(x, d) = x exp(d), Minus(y, x) = log(x^-1
+// y),
 // so a tangent step is expressed in the body frame of x. Minus keeps the sign of the quaternion
 // x^-1 y (angle up to 2 pi), so that Plus(x, Minus(y, x)) is the block y itself, as Ceres's
 // manifold invariants require; so3::minus and se3::minus take the shortest path instead.
@@ -147,9 +150,9 @@ inline se3::twist<double> log_keeping_sign(const dual_quaternion<double>& x) noe
 }  // namespace detail
 
 /// SO(3) as unit quaternions w, x, y, z (4 numbers) with rotation-vector tangents (3 numbers):
-/// Plus(x, d) = x * from_rotation_vector(d), Minus(y, x) = log(x^-1 y) keeping its sign, both on the
-/// right (d turns x about an axis of its own frame). ceres::QuaternionManifold stores the same 4
-/// numbers and has the same minima, with tangent d_ceres = R(x) d / 2 (it computes exp(d_ceres) x
+/// Plus(x, d) = x * from_rotation_vector(d), Minus(y, x) = log(x^-1 y) keeping its sign, both on
+/// the right (d turns x about an axis of its own frame). ceres::QuaternionManifold stores the same
+/// 4 numbers and has the same minima, with tangent d_ceres = R(x) d / 2 (it computes exp(d_ceres) x
 /// with exp(d_ceres) rotating by 2 |d_ceres|). Precondition: unit quaternions in x and y; Plus
 /// keeps them unit to rounding (it does not renormalize).
 class quaternion_manifold final : public ::ceres::Manifold {
@@ -191,10 +194,10 @@ public:
 };
 
 /// SE(3) as poses w, x, y, z, tx, ty, tz (7 numbers: unit quaternion, then translation) with twist
-/// tangents, linear part first (6 numbers, se3::twist): Plus(X, tau) = X se3::exp(tau) and
-/// Minus(Y, X) = log(X^-1 Y) keeping its sign, on the right. This is SE(3), not SO(3) x R^3: a step turns and
-/// moves along a screw in the frame of X, as the residuals of a pose graph do. Precondition: unit
-/// quaternions; Plus keeps them unit to rounding.
+/// tangents, linear part first (6 numbers, se3::twist): Plus(X, tau) = X se3::exp(tau) and Minus(Y,
+/// X) = log(X^-1 Y) keeping its sign, on the right. This is SE(3), not SO(3) x R^3: a step turns
+/// and moves along a screw in the frame of X, as the residuals of a pose graph do. Precondition:
+/// unit quaternions; Plus keeps them unit to rounding.
 class pose_manifold final : public ::ceres::Manifold {
 public:
     /// 7: w, x, y, z, tx, ty, tz.

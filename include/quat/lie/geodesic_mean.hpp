@@ -1,6 +1,6 @@
 // Geodesic means on the groups: the Karcher mean of rotations (the rotation minimizing the sum of
-// squared angles to the inputs) beside the chordal mean of mean.hpp, and its counterpart for rigid
-// motions, the bi-invariant mean. Both iterate on the logarithm map.
+// squared angles to the inputs) beside the chordal mean of fitting/mean.hpp, and its counterpart
+// for rigid motions, the bi-invariant mean. Both iterate on the logarithm map.
 #ifndef QUAT_LIE_GEODESIC_MEAN_HPP_INCLUDED
 #define QUAT_LIE_GEODESIC_MEAN_HPP_INCLUDED
 
@@ -225,8 +225,8 @@ template <class Rotations, class T = detail::element_scalar_t<quaternion, Rotati
 
 /// The weighted geodesic mean: M minimizing the sum of weights[i] |log(M^-1 R_i)|^2, as
 /// geodesic_mean(rotations). weights: scalars convertible to T, as many as rotations (QUAT_ASSERT;
-/// unchecked, other lengths give NaN); a zero weight drops that rotation. Precondition: weights >= 0
-/// (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or infinite.
+/// unchecked, other lengths give NaN); a zero weight drops that rotation. Precondition: weights >=
+/// 0 (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or infinite.
 template <class Rotations, class Weights, class T = detail::element_scalar_t<quaternion, Rotations>>
 [[nodiscard]] constexpr quaternion<T> geodesic_mean(const Rotations& rotations,
                                                     const Weights& weights) noexcept {
@@ -282,8 +282,9 @@ template <class Motions, class T = detail::element_scalar_t<dual_quaternion, Mot
 }
 
 /// The weighted bi-invariant mean: sum weights[i] log(M^-1 X_i) = 0, as geodesic_mean(motions).
-/// weights: scalars convertible to T, as many as motions (QUAT_ASSERT; unchecked, other lengths give
-/// NaN), >= 0 (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or infinite.
+/// weights: scalars convertible to T, as many as motions (QUAT_ASSERT; unchecked, other lengths
+/// give NaN), >= 0 (QUAT_ASSERT); NaN when no weight is positive or a weight is negative, NaN or
+/// infinite.
 template <class Motions, class Weights,
           class T = detail::element_scalar_t<dual_quaternion, Motions>>
 [[nodiscard]] constexpr dual_quaternion<T> geodesic_mean(const Motions& motions,

@@ -1,6 +1,6 @@
-// The rigid motions SE(3) as a Lie group: exp and log between unit dual quaternions and
-// twists, SE(3)'s Jacobians, and the group operations with their Jacobians, in so3.hpp's convention
-// (J. Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018;
+// The rigid motions SE(3) as a Lie group: exp and log between unit dual quaternions and twists,
+// SE(3)'s Jacobians, and the group operations with their Jacobians, in lie/so3.hpp's convention (J.
+// Sola, J. Deray, D. Atchuthan, "A micro Lie theory for state estimation in robotics", 2018;
 // manif's): J = d (f(X exp(tau)) (-) f(X)) / d tau at tau = 0 with the right plus and minus,
 // Jacobians as optional out-parameters named J_out_in, after the inputs in their order; every plus
 // and minus takes the element first. A twist is (rho, omega), linear part first as in Sophus and
@@ -170,8 +170,8 @@ template <class T>
     return left_jacobian_inverse(-t);
 }
 
-/// R(x), x's rotation, as a matrix3: not a rotation_matrix, whose home is to_matrix(rotation_of(x)).
-/// so3::adjoint(x.real) is the same 3x3 block for Jacobians.
+/// R(x), x's rotation, as a matrix3: not a rotation_matrix, whose home is
+/// to_matrix(rotation_of(x)). so3::adjoint(x.real) is the same 3x3 block for Jacobians.
 template <class T>
 [[deprecated(
     "use to_matrix(rotation_of(x)) for the rotation_matrix, or so3::adjoint(x.real) for the "

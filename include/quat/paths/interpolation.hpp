@@ -1,6 +1,6 @@
 // Interpolation between rotations: slerp (constant angular velocity), nlerp (cheap, normalized),
-// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and the
-// quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
+// pow (a fraction or multiple of one rotation) and rotate_towards (a step of bounded angle); and
+// the quaternion exponential and logarithm that pow(q, t) = exp(t log q) is built on in textbooks.
 #ifndef QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
 #define QUAT_PATHS_INTERPOLATION_HPP_INCLUDED
 
@@ -128,7 +128,8 @@ template <class T>
     }
     if (t < T(0) || t > T(1)) {
         // Beyond the ends the two weights below grow and cancel; turning a by t times the relative
-        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one product.
+        // rotation a* near, whose w = dot(a, near) >= 0, keeps the error at the level of one
+        // product.
         const quaternion<T> relative = conjugate(a) * near;
         if constexpr (std::is_floating_point_v<T>) {
             // No motion; a bad t stays visible.
@@ -207,12 +208,12 @@ template <class T>
     return detail::power_of_unit(p, t) + (p - p);
 }
 
-/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only
-/// unit or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
+/// The quaternion exponential of q = (w, v): e^w (cos|v|, sin|v| v / |v|), for any q (not only unit
+/// or pure ones). For a unit result, w = 0: exp((0, r / 2)) is from_rotation_vector(r), the
 /// rotation by |r| about r, to within a few eps. Accurate from v = 0 (a series for sin|v| / |v|, no
-/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to huge or subnormal |v| (measured as
-/// norm does, scaled); e^w overflows to Inf past w = ln max(). NaN in gives NaN out. glm::exp
-/// ignores w and returns the identity for |v| < epsilon.
+/// 0/0; exp((w, 0)) is (e^w, v) exactly, signed zeros kept, for float, double and long double) to
+/// huge or subnormal |v| (measured as norm does, scaled); e^w overflows to Inf past w = ln max().
+/// NaN in gives NaN out. glm::exp ignores w and returns the identity for |v| < epsilon.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> exp(const quaternion<T>& q) noexcept {
     const vec3<T> v{q.x, q.y, q.z};
@@ -272,8 +273,9 @@ template <class T>
 /// never past it (Unity's Quaternion.RotateTowards): `to` itself, as given, when
 /// angle_between(from, to) <= max_angle, else slerp(from, to, max_angle / angle_between(from, to)).
 /// A negative max_angle counts as 0: the result is `from` (or `to` if they are the same rotation),
-/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives NaN;
-/// an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug builds).
+/// where Unity's turns away from `to`. A NaN in any input, or an infinite `from` or `to`, gives
+/// NaN; an infinite max_angle gives `to`. Preconditions: unit from and to (checked in debug
+/// builds).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> rotate_towards(
     const quaternion<T>& from, const quaternion<T>& to,

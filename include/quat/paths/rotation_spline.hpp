@@ -95,8 +95,9 @@ public:
     /// The spline, or std::nullopt when there are fewer than two keyframes, the sizes differ, a
     /// time or a component is NaN or infinite (also after conversion to T), times do not strictly
     /// increase, a quaternion is zero, the solve for the angular velocities does not converge
-    /// within its bound of work (see the class comment; measured on random sets, docs/keyframes.md),
-    /// or a value of the spline between its first and last keyframes would overflow T.
+    /// within its bound of work (see the class comment; measured on random sets,
+    /// docs/keyframes.md), or a value of the spline between its first and last keyframes would
+    /// overflow T.
     template <class Times, class Rotations>
     [[nodiscard]] static std::optional<rotation_spline> try_make(const Times& times,
                                                                  const Rotations& rotations) {

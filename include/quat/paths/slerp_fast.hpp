@@ -1,7 +1,9 @@
-// Slerp approximations without trigonometry, for when the exact slerp (interpolation.hpp) costs too
+// Slerp approximations without trigonometry, for when the exact slerp (paths/interpolation.hpp)
+// costs too
 // much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
 // of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
-// double and 4e-7 rad in float). nlerp (interpolation.hpp) is the cheap end of the family (0.14
+// double and 4e-7 rad in float). nlerp (paths/interpolation.hpp) is the cheap end of the family
+// (0.14
 // rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6 samples by
 // `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
 #ifndef QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
@@ -18,8 +20,8 @@ namespace quat {
 #include "../detail/isa_namespace.inc"
 namespace detail {
 
-/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types:
-/// a branch on the sign of a . b goes either way on random input and costs more than the polynomials.
+/// 1 when the sign bit of x is clear, -1 when it is set, without a branch for the built-in types: a
+/// branch on the sign of a . b goes either way on random input and costs more than the polynomials.
 template <class T>
 [[nodiscard]] constexpr T sign_factor(T x) noexcept {
     if constexpr (std::is_same_v<T, float>) {
@@ -37,9 +39,9 @@ template <class T>
 
 /// nlerp from unit a (t = 0) to unit b (t = 1) along the shorter arc with t corrected so that the
 /// speed is nearly constant: rotation angle within 5.9e-4 rad of slerp's, |result| = 1 to rounding,
-/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit
-/// a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle error
-/// grows quickly).
+/// exactly a at t = 0 and b or -b at t = 1 (the sign bit of dot(a, b) picks -b). Preconditions:
+/// unit a and b (the length is divided out as if they were) and t in [0, 1] (beyond, the angle
+/// error grows quickly).
 template <class T>
 [[nodiscard]] constexpr quaternion<T> corrected_nlerp(const quaternion<T>& a,
                                                       const quaternion<T>& b,
@@ -49,10 +51,10 @@ template <class T>
     // nlerp at tau is slerp at t when tau = 1/2 + tan((t - 1/2) theta) / (2 tan(theta / 2)), theta
     // the 4D angle between a and the nearer of b, -b. zeux (Arseny Kapoulkine), "Approximating
     // slerp" (2015), writes tau = t + t (t - 1/2) (t - 1) k: tau is 0 and 1 at the ends whatever k
-    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear in
-    // w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
-    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
+    // is, and tau(1 - t) = 1 - tau(t). Here k is quadratic in d = |a . b| with coefficients linear
+    // in w = t (1 - t) = 1/4 - (t - 1/2)^2, fitted by bench/fit_corrected_nlerp.py to the smallest
+    // largest rotation-angle error (5.8e-4 rad; plain nlerp's is 0.14 rad). const, not constexpr: a
+    // user scalar need not be a literal type.
     const T k00 = T(1.112132429948791), k01 = T(-1.0468288499833223);
     const T k10 = T(-1.741641016389086), k11 = T(2.5617072945285786);
     const T k20 = T(0.6675284572043932), k21 = T(-1.5895475706814315);
@@ -70,8 +72,8 @@ template <class T>
 /// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
 /// trigonometry: rotation angle within 3.4e-8 rad of slerp's in double and 4e-7 rad in float (about
 /// the exact slerp's own rounding), |result| = 1 within the same, exactly a at t = 0 and b or -b at
-/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1]; outside,
-/// the angle and length errors grow quickly.
+/// t = 1 (the sign bit of dot(a, b) picks -b). Preconditions: unit a and b and t in [0, 1];
+/// outside, the angle and length errors grow quickly.
 template <class T>
 [[nodiscard]] constexpr quaternion<T> slerp_fast(const quaternion<T>& a, const quaternion<T>& b,
                                                  detail::type_identity_t<T> t) noexcept {
@@ -79,17 +81,17 @@ template <class T>
                 "quat::slerp_fast: a or b is not a unit quaternion");
     // With psi half the 4D angle between a and the nearer of b, -b (psi <= pi/4), c = cos psi and
     // alpha = 2t - 1, slerp's weights are E - O for a and E + O for b, where E = cos(alpha psi) /
-    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves both.
-    // As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
+    // (2c) is even in alpha and O = sin(alpha psi) / (2 sin psi) odd, so one evaluation serves
+    // both. As power series in y = c - 1 (from the Chebyshev equations that cos(alpha psi) and
     // sin(alpha psi) / sin psi satisfy as functions of c, as in Eberly 2011, "A fast and accurate
     // algorithm for computing SLERP", J. Graphics, GPU, and Game Tools 15(3)), with u = t - 1/2 and
-    // w = t (1 - t):  E = 1/2 - (w y / c) P(w, y),  O = u - u w y R(w, y),  P = 2 + (1 - 4w) y / 3 + ...,
-    // R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where cubics
-    // in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
+    // w = t (1 - t): E = 1/2 - (w y / c) P(w, y), O = u - u w y R(w, y), P = 2 + (1 - 4w) y / 3 +
+    // ..., R = 4/3 - (6 + 8w) y / 15 + ... Halving the angle keeps y in [cos(pi/4) - 1, 0], where
+    // cubics in y suffice; w = 0 at both ends makes the weights exactly (1, 0) and (0, 1) there.
     // bench/fit_slerp_fast.py fits the coefficients to the smallest largest rotation-angle and
     // length errors (3.33e-8 both before rounding, within the 3.4e-8 rad that the tests assert; the
-    // series themselves, cut after y^3, leave 1.4e-5 rad).
-    // const, not constexpr: a user scalar need not be a literal type.
+    // series themselves, cut after y^3, leave 1.4e-5 rad). const, not constexpr: a user scalar need
+    // not be a literal type.
     const T p00 = T(2.0000036702103374);
     const T p10 = T(0.3335047863139534), p11 = T(-1.3337634041499677);
     const T p20 = T(-0.06481534760799428), p21 = T(0.1712160812299326),

@@ -1,8 +1,9 @@
-// Point-set registration: the rigid motion (align_points) or the similarity (align_points_with_scale)
-// that best maps one set of corresponding points onto another in the least-squares sense, after
-// Kabsch (1976) and Umeyama ("Least-squares estimation of transformation parameters between two
-// point patterns", IEEE PAMI 13(4), 1991), with the rotation from align_vectors' q-method instead of
-// an SVD: the centred points are a Wahba problem, so there is never a reflection.
+// Point-set registration: the rigid motion (align_points) or the similarity
+// (align_points_with_scale) that best maps one set of corresponding points onto another in the
+// least-squares sense, after Kabsch (1976) and Umeyama ("Least-squares estimation of transformation
+// parameters between two point patterns", IEEE PAMI 13(4), 1991), with the rotation from
+// align_vectors' q-method instead of an SVD: the centred points are a Wahba problem, so there is
+// never a reflection.
 #ifndef QUAT_REGISTRATION_ALIGN_POINTS_HPP_INCLUDED
 #define QUAT_REGISTRATION_ALIGN_POINTS_HPP_INCLUDED
 
@@ -107,12 +108,13 @@ template <class T, class Targets, class Sources, class Weights>
 /// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
 /// unit dual quaternion: never a reflection. targets and sources are equally long containers of
 /// vec3<T> with data() and size(), or C arrays, of corresponding points (QUAT_ASSERT; unchecked,
-/// other lengths give the NaN result below, and no element past either container is read). The centroids
-/// are taken in two passes, so points far from the origin keep their spread. unique is false when
-/// the targets, or the sources, less their centroid, all lie within 64 epsilon radians of one line
-/// (collinear points, fewer than three distinct): then the rotation is the one align_vectors
-/// chooses for the centred points. No points: the identity, rms 0, not unique. A NaN or infinite
-/// component gives NaN in every component, rms NaN, unique false; try_align_points checks instead.
+/// other lengths give the NaN result below, and no element past either container is read). The
+/// centroids are taken in two passes, so points far from the origin keep their spread. unique is
+/// false when the targets, or the sources, less their centroid, all lie within 64 epsilon radians
+/// of one line (collinear points, fewer than three distinct): then the rotation is the one
+/// align_vectors chooses for the centred points. No points: the identity, rms 0, not unique. A NaN
+/// or infinite component gives NaN in every component, rms NaN, unique false; try_align_points
+/// checks instead.
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
                                                         const Sources& sources) noexcept {

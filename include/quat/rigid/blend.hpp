@@ -18,10 +18,11 @@ namespace quat {
 /// its real part is on the first one's hemisphere, then normalized (unit real part, dual part
 /// orthogonal to it). Unlike a blend of matrices it is always a rigid motion, so a skinned joint
 /// twisted by 180 degrees keeps its volume. Weights (scalars convertible to T) need not sum to 1:
-/// they are divided by the largest |weight| first and normalization removes the scale, so any finite
-/// size works, subnormal to max(); they may be negative. Preconditions: unit real parts (QUAT_ASSERT;
-/// unchecked, longer ones count more); a zero blended real part (count 0, zero weights, or weights
-/// cancelling), a NaN or infinite weight or component gives NaN in every component.
+/// they are divided by the largest |weight| first and normalization removes the scale, so any
+/// finite size works, subnormal to max(); they may be negative. Preconditions: unit real parts
+/// (QUAT_ASSERT; unchecked, longer ones count more); a zero blended real part (count 0, zero
+/// weights, or weights cancelling), a NaN or infinite weight or component gives NaN in every
+/// component.
 template <class T, class Weight>
 [[nodiscard]] constexpr dual_quaternion<T> blend(const dual_quaternion<T>* transforms,
                                                  const Weight* weights,

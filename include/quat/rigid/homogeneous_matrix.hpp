@@ -218,8 +218,10 @@ template <class T>
 
 /// The inverse x -> R^T (x - t) of the rigid motion m = [R t; 0 1]: rotation block R^T, translation
 /// -R^T t, exact transposition and 9 multiplications. Precondition: m is rigid (checked in debug
-/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to its
-/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that is
+/// builds, as to_dual_quaternion checks it). For any other matrix the same formula is applied to
+/// its
+/// blocks, the last row read as (0, 0, 0, 1): scale, shear or a projective row give a matrix that
+/// is
 /// not m's inverse (invert those with a general 4x4 inverse). NaN propagates.
 template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> inverse(const homogeneous_matrix<T>& m) noexcept {

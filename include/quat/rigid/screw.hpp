@@ -62,9 +62,9 @@ template <class T>
 }
 
 /// The unit dual quaternion of the screw motion s: real part (cos(h), sin(h) direction) and dual
-/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement / 2.
-/// from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion).
-/// Precondition: unit direction, and moment orthogonal to it.
+/// part (-d sin(h), sin(h) moment + d cos(h) direction) with h = angle / 2 and d = displacement /
+/// 2. from_screw(to_screw(dq)) is dq, or -dq when dq.real.w < 0 (the same motion). Precondition:
+/// unit direction, and moment orthogonal to it.
 template <class T>
 [[nodiscard]] constexpr dual_quaternion<T> from_screw(const screw<T>& s) noexcept {
     const T h = s.angle * T(0.5), d = s.displacement * T(0.5);

@@ -76,7 +76,8 @@ template <class T, int Options>
     return {q.w(), q.x(), q.y(), q.z()};
 }
 
-/// The same matrix as Eigen::Matrix3: element (row, col) to (row, col), whatever Eigen's storage order.
+/// The same matrix as Eigen::Matrix3: element (row, col) to (row, col), whatever Eigen's storage
+/// order.
 template <class T>
 [[nodiscard]] Eigen::Matrix<T, 3, 3> to_eigen(const rotation_matrix<T>& m) {
     Eigen::Matrix<T, 3, 3> out;

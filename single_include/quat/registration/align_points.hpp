@@ -25,11 +25,12 @@
 // Opt-in: keep this file at quat/registration/align_points.hpp beside the single quat.hpp, which it
 // includes.
 
-// Point-set registration: the rigid motion (align_points) or the similarity (align_points_with_scale)
-// that best maps one set of corresponding points onto another in the least-squares sense, after
-// Kabsch (1976) and Umeyama ("Least-squares estimation of transformation parameters between two
-// point patterns", IEEE PAMI 13(4), 1991), with the rotation from align_vectors' q-method instead of
-// an SVD: the centred points are a Wahba problem, so there is never a reflection.
+// Point-set registration: the rigid motion (align_points) or the similarity
+// (align_points_with_scale) that best maps one set of corresponding points onto another in the
+// least-squares sense, after Kabsch (1976) and Umeyama ("Least-squares estimation of transformation
+// parameters between two point patterns", IEEE PAMI 13(4), 1991), with the rotation from
+// align_vectors' q-method instead of an SVD: the centred points are a Wahba problem, so there is
+// never a reflection.
 #ifndef QUAT_REGISTRATION_ALIGN_POINTS_HPP_INCLUDED
 #define QUAT_REGISTRATION_ALIGN_POINTS_HPP_INCLUDED
 
@@ -39,9 +40,9 @@
 #include "../quat.hpp"
 // ---- begin quat/registration/detail/registration.hpp ----
 // The least-squares rigid motion or similarity between corresponding point sets, behind
-// align_points.hpp: three passes over the points in blocks of struct-of-arrays form, so that the
-// sums vectorize, and, for data whose sizes the passes cannot take as they are, the same passes on
-// the centred data divided by powers of two.
+// registration/align_points.hpp: three passes over the points in blocks of struct-of-arrays form,
+// so that the sums vectorize, and, for data whose sizes the passes cannot take as they are, the
+// same passes on the centred data divided by powers of two.
 #ifndef QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
 #define QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
 
@@ -187,10 +188,10 @@ template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, cla
 // The registration in three passes, for data whose sizes the passes can take as they are: the
 // weighted sums; then B of the pairs less that first mean, with the remainders that correct the
 // mean (B = sum w a b^T - dt ds^T / W for the remainders' sums dt, ds, exactly the B of the
-// corrected centroids); then the residuals. With `scaled` the scale is Umeyama's
-// trace(R^T B) / sum w |b|^2, otherwise it is `unit`. Empty where the data need
-// solve_registration's centred path: a NaN or infinite value, a negative or NaN weight, no positive weight,
-// weights or centred sizes outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
+// corrected centroids); then the residuals. With `scaled` the scale is Umeyama's trace(R^T B) / sum
+// w |b|^2, otherwise it is `unit`. Empty where the data need solve_registration's centred path: a
+// NaN or infinite value, a negative or NaN weight, no positive weight, weights or centred sizes
+// outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
 template <class T, std::size_t Lanes, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_lanes(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
@@ -485,12 +486,13 @@ template <class T, class Targets, class Sources, class Weights>
 /// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
 /// unit dual quaternion: never a reflection. targets and sources are equally long containers of
 /// vec3<T> with data() and size(), or C arrays, of corresponding points (QUAT_ASSERT; unchecked,
-/// other lengths give the NaN result below, and no element past either container is read). The centroids
-/// are taken in two passes, so points far from the origin keep their spread. unique is false when
-/// the targets, or the sources, less their centroid, all lie within 64 epsilon radians of one line
-/// (collinear points, fewer than three distinct): then the rotation is the one align_vectors
-/// chooses for the centred points. No points: the identity, rms 0, not unique. A NaN or infinite
-/// component gives NaN in every component, rms NaN, unique false; try_align_points checks instead.
+/// other lengths give the NaN result below, and no element past either container is read). The
+/// centroids are taken in two passes, so points far from the origin keep their spread. unique is
+/// false when the targets, or the sources, less their centroid, all lie within 64 epsilon radians
+/// of one line (collinear points, fewer than three distinct): then the rotation is the one
+/// align_vectors chooses for the centred points. No points: the identity, rms 0, not unique. A NaN
+/// or infinite component gives NaN in every component, rms NaN, unique false; try_align_points
+/// checks instead.
 template <class Targets, class Sources, class T = detail::element_scalar_t<vec3, Targets>>
 [[nodiscard]] constexpr point_alignment<T> align_points(const Targets& targets,
                                                         const Sources& sources) noexcept {

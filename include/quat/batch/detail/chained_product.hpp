@@ -1,5 +1,5 @@
 // The product of many factors in four interleaved chains: compose over an array of quaternions
-// (batch.hpp) and of dual quaternions (rigid_batch.hpp).
+// (batch/rotations.hpp) and of dual quaternions (batch/rigid_motions.hpp).
 #ifndef QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_CHAINED_PRODUCT_HPP_INCLUDED
 
@@ -13,9 +13,9 @@ namespace detail {
 inline constexpr std::size_t product_chains = 4;
 
 // The four chains of chained_product for types whose four running products the compiler keeps in
-// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1].
-// A type that needs another layout (dual quaternions, rigid_batch.hpp) gives chained_product a
-// class with the same static member.
+// registers as they are (quaternions): chain[j] = f[j run] f[j run + 1] ... f[j run + run - 1]. A
+// type that needs another layout (dual quaternions, batch/rigid_motions.hpp) gives chained_product
+// a class with the same static member.
 template <class Value>
 struct chain_values {
     static constexpr void run_products(const Value* f, std::size_t run,

@@ -1,4 +1,5 @@
-// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles spelled
+// The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles
+// spelled
 // out in GCC/clang vector extensions (__builtin_shufflevector, and the vinsertf128/vextractf128
 // builtins where g++ would otherwise add port-5 uops), because no compiler finds these arrangements
 // from a plain loop. No wide intrinsics header (only streaming_store.hpp's <xmmintrin.h>, for the
@@ -142,10 +143,10 @@ using float16 = float __attribute__((vector_size(64)));
 }
 
 // As transform_interleaved, 16 points (48 floats, three registers a, b, c) a step with full-width
-// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from
-// c; each output register is joined from x and y, then completed from z. 12 permutes and 9
-// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it keeps
-// to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
+// two-source permutes (vpermt2ps): each coordinate is gathered from a and b, then completed from c;
+// each output register is joined from x and y, then completed from z. 12 permutes and 9
+// multiply-adds per 16 points, where g++ 12 compiles the plain loop with 12 permutes per 8 (it
+// keeps to 256-bit vectors on these cores). Float g of a group is coordinate g % 3 of point g / 3.
 template <bool Translate>
 [[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
                                                           const vec3<float>& t, const float* in,

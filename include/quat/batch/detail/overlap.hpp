@@ -1,5 +1,6 @@
 // Whether two arrays overlap: the aliasing preconditions of the functions over many elements
-// (batch.hpp, elementwise.hpp, rigid_batch.hpp), checked by QUAT_ASSERT in debug builds.
+// (batch/rotations.hpp, batch/elementwise.hpp, batch/rigid_motions.hpp), checked by QUAT_ASSERT in
+// debug builds.
 #ifndef QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_OVERLAP_HPP_INCLUDED
 
@@ -11,7 +12,8 @@ namespace quat {
 namespace detail {
 
 // True when the byte ranges [a, a + a_bytes) and [b, b + b_bytes) do not overlap (an empty range
-// overlaps nothing). Compared as integers: relational operators on unrelated pointers are unspecified.
+// overlaps nothing). Compared as integers: relational operators on unrelated pointers are
+// unspecified.
 [[nodiscard]] inline bool disjoint(const void* a, std::size_t a_bytes, const void* b,
                                    std::size_t b_bytes) noexcept {
     const auto x = reinterpret_cast<std::uintptr_t>(a), y = reinterpret_cast<std::uintptr_t>(b);

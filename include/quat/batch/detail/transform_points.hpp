@@ -1,8 +1,9 @@
 // The loops that move many points by one matrix, output[i] = m input[i] (+ t): the batch rotate
-// (batch.hpp) and the batch rigid transform (rigid_batch.hpp), for arrays of structs and struct of
-// arrays. Plain loops that compilers vectorize; the float array-of-structs loop of AVX builds spells
-// its shuffles out (interleaved_points_avx.hpp), and float arrays that with their input exceed the
-// last-level cache are written on x86 with non-temporal stores (streaming_store.hpp).
+// (batch/rotations.hpp) and the batch rigid transform (batch/rigid_motions.hpp), for arrays of
+// structs and struct of arrays. Plain loops that compilers vectorize; the float array-of-structs
+// loop of AVX builds spells its shuffles out (interleaved_points_avx.hpp), and float arrays that
+// with their input exceed the last-level cache are written on x86 with non-temporal stores
+// (streaming_store.hpp).
 #ifndef QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
@@ -107,7 +108,8 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
     const T tx = t.x, ty = t.y, tz = t.z;
     // Each index is read before it is written, so each output array may be its own input array, and
     // there is no dependence between iterations (the documented aliasing rule): say so to the
-    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop scalar.
+    // compiler, which otherwise gives up on overlap checks of six arrays and leaves the loop
+    // scalar.
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)
@@ -133,7 +135,7 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 #endif
 
 // output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
-// and of the rigid transform (rigid_batch.hpp).
+// and of the rigid transform (batch/rigid_motions.hpp).
 template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
                       vec3<T>* output, std::size_t count) noexcept {

@@ -53,7 +53,8 @@ template <std::size_t N, class T>
         for (std::size_t p = 0; p < N - 1; ++p)
             for (std::size_t q = p + 1; q < N; ++q) {
                 if (k[p][q] == T(0)) continue;
-                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the smaller root.
+                // Rotation in the (p, q) plane that zeroes k[p][q]: t = tan of its angle, the
+                // smaller root.
                 const T theta = (k[q][q] - k[p][p]) / (T(2) * k[p][q]);
                 const T t = (theta < T(0) ? T(-1) : T(1)) /
                             (detail::abs(theta) + detail::sqrt(theta * theta + T(1)));

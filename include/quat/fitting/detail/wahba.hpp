@@ -1,7 +1,7 @@
-// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights,
-// with the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
-// weights, the uniqueness test and scipy's sensitivity matrix. align_vectors.hpp calls it on two
-// arrays; align_points.hpp on the points less their centroids.
+// Wahba's problem solved: Davenport's q-method over accessors to the pairs and their weights, with
+// the scaling that makes any finite sizes give the same rotation, the Newton polish for spread
+// weights, the uniqueness test and scipy's sensitivity matrix. fitting/align_vectors.hpp calls it
+// on two arrays; registration/align_points.hpp on the points less their centroids.
 #ifndef QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
 #define QUAT_FITTING_DETAIL_WAHBA_HPP_INCLUDED
 
@@ -21,7 +21,7 @@
 namespace quat {
 
 template <class T>
-struct alignment;  // align_vectors.hpp; complete wherever a solution is made
+struct alignment;  // fitting/align_vectors.hpp; complete wherever a solution is made
 
 #include "../../detail/isa_namespace.inc"
 namespace detail {
@@ -144,12 +144,12 @@ template <class T>
     return p.w < T(0) ? -p : p;
 }
 
-// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs
-// with w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x)
-// (1 - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and
-// A = sum w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest
-// at atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds
-// only its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
+// The turn phi about the unit axis maximizing sum w_i y_i . rot(axis, phi) x_i, over the pairs with
+// w_i > 0 other than `skip`: rot(axis, phi) x = x cos phi + (axis x x) sin phi + axis (axis . x) (1
+// - cos phi), so the sum is A cos phi + S sin phi + const with S = sum w axis . (x x y) and A = sum
+// w (x x axis) . (y x axis) (Lagrange's identity for x . y - (x . axis)(y . axis)), largest at
+// atan2(S, A). Both from accurate cross products: a pair along the axis, however heavy, adds only
+// its own rounding. Unique unless |A| and |S| are within 64 eps of sum w |x x axis| |y x axis|.
 template <class T>
 struct turn {
     T angle;

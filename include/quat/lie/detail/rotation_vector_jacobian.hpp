@@ -7,12 +7,12 @@
 // eqs. 143-144; F. Bullo, R. Murray, "Proportional derivative control on the Euclidean group",
 // 1995). Each coefficient is an analytic function of n^2: near zero, where the closed forms lose
 // their digits to cancellation, it is summed from its Taylor series. The same coefficients build
-// so3.hpp's and se3.hpp's Jacobians.
+// lie/so3.hpp's and lie/se3.hpp's Jacobians.
 //
 // Every coefficient takes both n2 = n^2 and n, and reads n only in its closed form, away from zero:
 // a dual-number scalar (ceres::Jet) differentiates n = sqrt(n^2) at 0 as 0/0 = NaN, so near zero
 // only n2 may be on the differentiated path (as detail::cos_sinc does). The one-argument forms,
-// f(n) = f(n n, n), are those rotation_spline.hpp calls.
+// f(n) = f(n n, n), are those paths/rotation_spline.hpp calls.
 #ifndef QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 #define QUAT_LIE_DETAIL_ROTATION_VECTOR_JACOBIAN_HPP_INCLUDED
 
@@ -151,8 +151,8 @@ template <class T>
     return inverse_jacobian_coefficient(n * n, n);
 }
 
-/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the
-/// shape of every Jr, Jl and inverse here (so3.hpp) and of the blocks of rotation_spline's solve.
+/// a I + b [r]x + c [r]x^2 as a matrix, with [r]x v = r x v and [r]x^2 = r r^T - |r|^2 I: the shape
+/// of every Jr, Jl and inverse here (lie/so3.hpp) and of the blocks of rotation_spline's solve.
 template <class T>
 [[nodiscard]] constexpr matrix3<T> skew_polynomial(const vec3<T>& r, T a, T b, T c) noexcept {
     const T diagonal = a - c * squared_norm(r);
@@ -194,9 +194,9 @@ template <class T>
     return cos_sinc(squared_norm(r) * T(0.25), norm(r) * T(0.5));
 }
 
-/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1
-/// of so3.hpp, se3.hpp and rotation_spline.hpp takes. A floating-point T takes the half angle
-/// (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
+/// Jr(r)'s coefficients a and b, or with `inverse` Jr(r)^-1's c: the one path every Jr and Jr^-1 of
+/// lie/so3.hpp, lie/se3.hpp and paths/rotation_spline.hpp takes. A floating-point T takes the half
+/// angle (above); a user scalar the functions in n^2 above, whose derivatives are finite at r = 0.
 template <class T>
 [[nodiscard]] constexpr right_jacobian_coefficients<T> right_jacobian_coefficients_of(
     const vec3<T>& r, bool inverse) noexcept {

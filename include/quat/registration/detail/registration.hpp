@@ -1,7 +1,7 @@
 // The least-squares rigid motion or similarity between corresponding point sets, behind
-// align_points.hpp: three passes over the points in blocks of struct-of-arrays form, so that the
-// sums vectorize, and, for data whose sizes the passes cannot take as they are, the same passes on
-// the centred data divided by powers of two.
+// registration/align_points.hpp: three passes over the points in blocks of struct-of-arrays form,
+// so that the sums vectorize, and, for data whose sizes the passes cannot take as they are, the
+// same passes on the centred data divided by powers of two.
 #ifndef QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
 #define QUAT_REGISTRATION_DETAIL_REGISTRATION_HPP_INCLUDED
 
@@ -130,10 +130,10 @@ template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, cla
 // The registration in three passes, for data whose sizes the passes can take as they are: the
 // weighted sums; then B of the pairs less that first mean, with the remainders that correct the
 // mean (B = sum w a b^T - dt ds^T / W for the remainders' sums dt, ds, exactly the B of the
-// corrected centroids); then the residuals. With `scaled` the scale is Umeyama's
-// trace(R^T B) / sum w |b|^2, otherwise it is `unit`. Empty where the data need
-// solve_registration's centred path: a NaN or infinite value, a negative or NaN weight, no positive weight,
-// weights or centred sizes outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
+// corrected centroids); then the residuals. With `scaled` the scale is Umeyama's trace(R^T B) / sum
+// w |b|^2, otherwise it is `unit`. Empty where the data need solve_registration's centred path: a
+// NaN or infinite value, a negative or NaN weight, no positive weight, weights or centred sizes
+// outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
 template <class T, std::size_t Lanes, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_lanes(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
