@@ -13,6 +13,9 @@ import re
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from amalgamate import only_includes  # noqa: E402  (an umbrella or an old path's forwarder)
+
 ROOT = Path(__file__).resolve().parent.parent
 QUAT = ROOT / "include" / "quat"
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
@@ -31,15 +34,6 @@ MAY_INCLUDE = {
     "interop": {"detail", "core", "rigid", "fitting", "lie", "paths", "batch", "registration",
                 "io"},
 }
-
-
-def only_includes(path: Path) -> bool:
-    """An umbrella or an old path's forwarder: nothing but includes, guards and comments."""
-    for line in path.read_text(encoding="utf-8").splitlines():
-        text = line.split("//")[0].strip()
-        if text and not text.startswith("#"):
-            return False
-    return True
 
 
 def layer_of(path: Path) -> str:
