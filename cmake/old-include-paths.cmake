@@ -23,17 +23,18 @@ foreach(_old IN LISTS _candidates)
     string(MAKE_C_IDENTIFIER "${_new}" _guard)
     string(TOUPPER "QUAT_${_guard}_INCLUDED" _guard)
     string(MAKE_C_IDENTIFIER "${_old}" _name)
-    set(_unit "${WORK_DIR}/${_name}.cpp")
-    file(WRITE "${_unit}" "#include <quat/${_old}>\n#ifndef ${_guard}\n#error quat/${_old} did not bring quat/${_new}\n#endif\nint main() { return 0; }\n")
+    # Against include/, the guard of the header it names must be defined; the single-header edition
+    # inlines that header, so there the old path only has to compile.
+    set(_unit_include "${WORK_DIR}/${_name}.cpp")
+    file(WRITE "${_unit_include}" "#include <quat/${_old}>\n#ifndef ${_guard}\n#error quat/${_old} did not bring quat/${_new}\n#endif\nint main() { return 0; }\n")
     set(_roots include)
     if(EXISTS "${SOURCE_DIR}/single_include/quat/${_old}")
+        set(_unit_single_include "${WORK_DIR}/${_name}_single.cpp")
+        file(WRITE "${_unit_single_include}" "#include <quat/${_old}>\nint main() { return 0; }\n")
         list(APPEND _roots single_include)
     endif()
     foreach(_root IN LISTS _roots)
-        # The single-header edition inlines the header, so its guard is the single header's.
-        if(_root STREQUAL "single_include")
-            file(WRITE "${_unit}" "#include <quat/${_old}>\nint main() { return 0; }\n")
-        endif()
+        set(_unit "${_unit_${_root}}")
         execute_process(COMMAND "${CXX}" -std=c++${STANDARD} -Wall -Wextra -Wpedantic -Werror
                                 -fsyntax-only "-I${SOURCE_DIR}/${_root}" "${_unit}"
                         RESULT_VARIABLE _result OUTPUT_VARIABLE _out ERROR_VARIABLE _out)

@@ -9,16 +9,14 @@ forward to a family's header may include anything.
 
     python3 tools/check_layers.py          check, and print the deepest chain; exit 1 on a violation
 """
-import re
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from amalgamate import only_includes  # noqa: E402  (an umbrella or an old path's forwarder)
+from amalgamate import includes_of, only_includes  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 QUAT = ROOT / "include" / "quat"
-INCLUDE_RE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 
 # What each layer may include besides itself.
 MAY_INCLUDE = {
@@ -47,18 +45,9 @@ def layer_of(path: Path) -> str:
     return parts[0]  # detail, or a family folder (its detail/ belongs to it)
 
 
-def includes(path: Path) -> list:
-    found = []
-    for spelled in INCLUDE_RE.findall(path.read_text(encoding="utf-8")):
-        target = (path.parent / spelled).resolve()
-        if target.is_file() and QUAT.resolve() in target.parents:
-            found.append(target)
-    return found
-
-
 def main() -> int:
     headers = sorted(p.resolve() for p in QUAT.rglob("*.hpp"))
-    graph = {h: [t for t in includes(h) if t.suffix == ".hpp"] for h in headers}
+    graph = {h: includes_of(h) for h in headers}
     problems = []
     for header, targets in graph.items():
         layer = layer_of(header)

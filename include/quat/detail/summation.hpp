@@ -15,6 +15,14 @@ namespace detail {
 // with the count.
 inline constexpr std::size_t summation_block = 256;
 
+/// Calls block(start, end) for [0, count) cut into consecutive pieces of at most summation_block
+/// elements, in order: each caller sums a piece from zero, then adds the pieces' sums.
+template <class Block>
+constexpr void for_each_block(std::size_t count, Block block) noexcept {
+    for (std::size_t start = 0; start < count; start += summation_block)
+        block(start, count - start < summation_block ? count : start + summation_block);
+}
+
 // sum term(i) weight(i) and sum weight(i) over i in [0, count), in blocks.
 template <class Value, class T>
 struct weighted_sum {
@@ -27,10 +35,8 @@ template <class T, class Value, class Term, class Weight>
 [[nodiscard]] constexpr weighted_sum<Value, T> blocked_weighted_sum(std::size_t count,
                                                                     const Value& zero, Term term,
                                                                     Weight weight) noexcept {
-    Value sum = zero;
-    T total = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+    weighted_sum<Value, T> result{zero, T(0)};
+    for_each_block(count, [&](std::size_t start, std::size_t end) {
         Value block = zero;
         T block_total = T(0);
         for (std::size_t i = start; i < end; ++i) {
@@ -38,10 +44,10 @@ template <class T, class Value, class Term, class Weight>
             block = block + term(i) * w;
             block_total = block_total + w;
         }
-        sum = sum + block;
-        total = total + block_total;
-    }
-    return {sum, total};
+        result.sum = result.sum + block;
+        result.total = result.total + block_total;
+    });
+    return result;
 }
 
 }  // namespace detail

@@ -55,8 +55,7 @@ template <bool checked, class T, class Rotation, class Weight>
     // Blocked sums (see summation_block): for 1e6 rotations in float the plain running sums put
     // the mean 327 eps from its long double value, the blocked ones 0.8 eps (double: 145, 7.6).
     T sum[10] = {};
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+    for_each_block(count, [&](std::size_t start, std::size_t end) {
         T ww = T(0), wx = T(0), wy = T(0), wz = T(0), xx = T(0), xy = T(0), xz = T(0), yy = T(0),
           yz = T(0), zz = T(0);
         for (std::size_t i = start; i < end; ++i) {
@@ -76,7 +75,7 @@ template <bool checked, class T, class Rotation, class Weight>
         }
         const T block[10] = {ww, wx, wy, wz, xx, xy, xz, yy, yz, zz};
         for (int n = 0; n < 10; ++n) sum[n] += block[n];
-    }
+    });
     const T ww = sum[0], wx = sum[1], wy = sum[2], wz = sum[3], xx = sum[4], xy = sum[5],
             xz = sum[6], yy = sum[7], yz = sum[8], zz = sum[9];
     const T trace = ww + xx + yy + zz;

@@ -87,9 +87,7 @@ template <class T, class Target, class Source, class Weight>
     for (int step = 0; step < 8; ++step) {
         const rotation_matrix<T> r = to_matrix(q);
         T g[3] = {}, h[3][3] = {}, tau = T(0);
-        for (std::size_t start = 0; start < count; start += summation_block) {
-            const std::size_t end =
-                count - start < summation_block ? count : start + summation_block;
+        for_each_block(count, [&](std::size_t start, std::size_t end) {
             T block_g[3] = {}, block_s[3][3] = {}, block_tau = T(0);
             for (std::size_t i = start; i < end; ++i) {
                 const T w = weight(i);
@@ -112,7 +110,7 @@ template <class T, class Target, class Source, class Weight>
                 g[a] += block_g[a];
                 for (int b = 0; b < 3; ++b) h[a][b] -= block_s[a][b] / T(2);
             }
-        }
+        });
         for (int a = 0; a < 3; ++a) h[a][a] += tau;
         T phi[3] = {};
         if (!detail::solve_positive_definite3(h, g, phi)) break;
@@ -220,8 +218,7 @@ constexpr T profile_of(T (&b)[3][3], data_sizes<T>& sizes, std::size_t count, Ta
     sizes = {T(0), T(0), T(0), T(0)};
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) b[r][c] = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+    for_each_block(count, [&](std::size_t start, std::size_t end) {
         T block[3][3] = {}, block_total = T(0);
         for (std::size_t i = start; i < end; ++i) {
             const T w = weight(i);
@@ -249,7 +246,7 @@ constexpr T profile_of(T (&b)[3][3], data_sizes<T>& sizes, std::size_t count, Ta
         total += block_total;
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) b[r][c] += block[r][c];
-    }
+    });
     return total;
 }
 
@@ -348,13 +345,12 @@ template <class T, class Target, class Source, class Weight>
                                   Source source, Weight weight) noexcept {
     const rotation_matrix<T> r = to_matrix(q);
     T squares = T(0);
-    for (std::size_t start = 0; start < count; start += summation_block) {
-        const std::size_t end = count - start < summation_block ? count : start + summation_block;
+    for_each_block(count, [&](std::size_t start, std::size_t end) {
         T block = T(0);
         for (std::size_t i = start; i < end; ++i)
             block += weight(i) * squared_norm(target(i) - rotate(r, source(i)));
         squares += block;
-    }
+    });
     return detail::sqrt(squares);
 }
 
