@@ -257,6 +257,9 @@ template <class T, class H, class S>
                 sums = then;
                 continue;
             }
+            // A step this small that does not lower the cost meets the cost's rounding: at the
+            // minimum to within it.
+            if (largest <= sqrt(epsilon<T>())) break;
             bool lowered = false;
             T step(1);
             for (int halving = 0; halving < 4 && !lowered; ++halving) {
