@@ -194,19 +194,28 @@ struct pose_refinement {
     bool refined;
 };
 
-/// The variance ratio sigma_r^2 / sigma_t^2 of the residual sums, each variance at least
-/// epsilon^2 (rounding: exact poses leave the ratio at 1 in the data's power-of-two unit).
+/// The noise's standard deviations per component that the residual sums imply, sigma_r (radians)
+/// and sigma_t (in the data's power-of-two unit), each at least epsilon (rounding: exact poses
+/// weigh rotation and translation alike in that unit).
 template <class T>
-[[nodiscard]] constexpr T variance_ratio(const pose_sums<T>& s, T components) noexcept {
-    const T floor = epsilon<T>() * epsilon<T>();
-    return max(s.rotation / components, floor) / max(s.translation / components, floor);
+struct noise_estimate {
+    T rotation, translation;
+};
+
+template <class T>
+[[nodiscard]] constexpr noise_estimate<T> noise_of(const pose_sums<T>& s, T components) noexcept {
+    return {max(sqrt(s.rotation / components), epsilon<T>()),
+            max(sqrt(s.translation / components), epsilon<T>())};
 }
 
-/// From the closed form's `mount` (translations in the data's unit), for count >= 1 poses; where
-/// `iterate` (count >= 2 poses that fix X, hand_eye's unique): the start W is the chordal mean of H_j X S_j; then up to 4 rounds of
-/// re-estimated variances with up to 8 Gauss-Newton steps each, a step halved up to 4 times until
-/// it lowers the round's cost; a round ends when a step moves no unknown by more than 2^-10
-/// sqrt(epsilon) (radians, and lengths in the power of two p of the data's largest translation).
+/// From the closed form's `mount` (translations in the data's unit), for count >= 1 poses: the
+/// start W is the chordal mean of H_j X S_j. Where `iterate` (count >= 2 poses that fix X,
+/// hand_eye's unique): two rounds, the first weighted by the closed form's residuals and the second
+/// by the first's, of up to 8 Gauss-Newton steps each; a step that raises the round's cost is
+/// halved up to 4 times (and ends the round where it is below sqrt(epsilon): the cost's rounding).
+/// A round also ends at a step below 2^-10 of the estimated noise in every unknown (rotations
+/// against sigma_r, translations against sigma_t): far below what the data can tell apart, and
+/// measured in the data's own unit.
 template <class T, class H, class S>
 [[nodiscard]] constexpr pose_refinement<T> refine_hand_eye(const H* hands, const S* targets,
                                                            std::size_t count,
@@ -231,21 +240,26 @@ template <class T, class H, class S>
     if (!iterate) return fallback;
 
     const T components = T(3) * poses;
-    const T tolerance = sqrt(epsilon<T>()) / T(1024);
     const pose_sums<T> start = accumulate_poses(hands, targets, count, p, x, T(1), nullptr);
     pose_sums<T> sums = start;
     T weight(1);
     for (int round = 0; round < 2; ++round) {
-        weight = variance_ratio(sums, components);
+        const noise_estimate<T> noise = noise_of(sums, components);
+        weight = (noise.rotation / noise.translation) * (noise.rotation / noise.translation);
         normal_equations<T> normal{};
         sums = accumulate_poses(hands, targets, count, p, x, weight, &normal);
         for (int iteration = 0; iteration < 8; ++iteration) {
             T delta[12] = {};
             for (int k = 0; k < 12; ++k) delta[k] = -normal.gradient[k];
             if (!cholesky_solve<12>(normal.matrix, delta)) break;
-            T largest(0);
-            for (const T d : delta) largest = max(largest, abs(d));
-            if (largest <= tolerance) break;
+            T largest(0), relative(0);
+            for (int k = 0; k < 12; ++k) {
+                largest = max(largest, abs(delta[k]));
+                const bool turn = k < 3 || (k >= 6 && k < 9);
+                relative =
+                    max(relative, abs(delta[k]) / (turn ? noise.rotation : noise.translation));
+            }
+            if (relative * T(1024) <= T(1)) break;
             // The full step, with the normal equations at its end, which the next iteration
             // reuses; halved steps where it raises the cost.
             const T cost = sums.rotation + weight * sums.translation;
