@@ -1,13 +1,13 @@
 // quat_accuracy --hand-eye: hand-eye calibration under noise, quat's methods beside OpenCV's five
 // (cv::calibrateHandEye: Tsai, Park, Horaud, Andreff, Daniilidis; where the tool was built with
-// OpenCV) on the same noisy poses, so the comparison is paired. The scene is examples/hand_eye.cpp's:
-// a camera mounted on an arm's flange, a fixed target 0.8 m away, the hand at random poses within
-// reach (turned up to 60 degrees about random axes), the camera's view of the target measured with
-// noise: turned by angle and moved by offset, each a uniform draw in [0, 2x) the level about a
-// random direction. The hand's poses are exact. Errors are those of the mount against the one the
-// poses were made from: rotation in degrees, translation in mm; per cell the median and the 95th
-// percentile over the trials, and the median time of one calibration (the median, so that a run on a
-// loaded machine is not decided by the calls the scheduler interrupted).
+// OpenCV) on the same noisy poses, so the comparison is paired. The scene is
+// examples/hand_eye.cpp's: a camera mounted on an arm's flange, a fixed target 0.8 m away, the
+// hand at random poses within reach (turned up to 60 degrees about random axes), the camera's view
+// of the target measured with noise: turned by angle and moved by offset, each a uniform draw in
+// [0, 2x) the level about a random direction. The hand's poses are exact. Errors are those of the
+// mount against the one the poses were made from: rotation in degrees, translation in mm; per cell
+// the median and the 95th percentile over the trials, and the median time of one calibration (the
+// median, so that a run on a loaded machine is not decided by the calls the scheduler interrupted).
 #pragma once
 
 #include <algorithm>

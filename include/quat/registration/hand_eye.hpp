@@ -2,7 +2,10 @@
 // mounted on it (the eye: camera, IMU) from motions measured by both, A_i X = X B_i, by
 // Daniilidis's dual-quaternion method ("Hand-eye calibration using dual quaternions", The
 // International Journal of Robotics Research 18(3), 1999): rotation and translation together, from
-// the null space of one stacked matrix.
+// the null space of one stacked matrix; or rotation first (the closed forms:
+// registration/detail/hand_eye_solvers.hpp). From the absolute poses, hand_eye_from_poses refines
+// the closed form to the maximum-likelihood mount and target
+// (registration/detail/hand_eye_poses.hpp).
 #ifndef QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
 #define QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
 

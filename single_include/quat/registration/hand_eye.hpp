@@ -29,7 +29,10 @@
 // mounted on it (the eye: camera, IMU) from motions measured by both, A_i X = X B_i, by
 // Daniilidis's dual-quaternion method ("Hand-eye calibration using dual quaternions", The
 // International Journal of Robotics Research 18(3), 1999): rotation and translation together, from
-// the null space of one stacked matrix.
+// the null space of one stacked matrix; or rotation first (the closed forms:
+// registration/detail/hand_eye_solvers.hpp). From the absolute poses, hand_eye_from_poses refines
+// the closed form to the maximum-likelihood mount and target
+// (registration/detail/hand_eye_poses.hpp).
 #ifndef QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
 #define QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
 
@@ -141,9 +144,9 @@ struct hand_eye_state {
 };
 
 /// Sums over the poses at one state: squared residual norms, and, when `normal` is given, adds
-/// the Gauss-Newton normal equations J^T D J and J^T D (r, e) to it for D = diag(1, weight) (the rotation
-/// rows weighted 1, the translation rows `weight` = sigma_r^2 / sigma_t^2). The 12 unknowns are
-/// the perturbations Y <- (exp(a) R_Y, t_Y + b), W <- (R_W exp(c), t_W + d). With
+/// the Gauss-Newton normal equations J^T D J and J^T D (r, e) to it for D = diag(1, weight) (the
+/// rotation rows weighted 1, the translation rows `weight` = sigma_r^2 / sigma_t^2). The 12
+/// unknowns are the perturbations Y <- (exp(a) R_Y, t_Y + b), W <- (R_W exp(c), t_W + d). With
 /// R_p = R_Y R_H^T R_W and t_p = R_Y u + t_Y, u = R_H^T (t_W - t_H), v = R_Y u:
 ///     d r = -Jr^-1(r) (a + R_p c),   d e = [v]x a - b - R_Y R_H^T d,
 /// (log(E exp(-x)) = log(E) - Jr^-1(log E) x to first order: lie/so3.hpp's log Jacobian).

@@ -84,9 +84,9 @@ struct hand_eye_state {
 };
 
 /// Sums over the poses at one state: squared residual norms, and, when `normal` is given, adds
-/// the Gauss-Newton normal equations J^T D J and J^T D (r, e) to it for D = diag(1, weight) (the rotation
-/// rows weighted 1, the translation rows `weight` = sigma_r^2 / sigma_t^2). The 12 unknowns are
-/// the perturbations Y <- (exp(a) R_Y, t_Y + b), W <- (R_W exp(c), t_W + d). With
+/// the Gauss-Newton normal equations J^T D J and J^T D (r, e) to it for D = diag(1, weight) (the
+/// rotation rows weighted 1, the translation rows `weight` = sigma_r^2 / sigma_t^2). The 12
+/// unknowns are the perturbations Y <- (exp(a) R_Y, t_Y + b), W <- (R_W exp(c), t_W + d). With
 /// R_p = R_Y R_H^T R_W and t_p = R_Y u + t_Y, u = R_H^T (t_W - t_H), v = R_Y u:
 ///     d r = -Jr^-1(r) (a + R_p c),   d e = [v]x a - b - R_Y R_H^T d,
 /// (log(E exp(-x)) = log(E) - Jr^-1(log E) x to first order: lie/so3.hpp's log Jacobian).
