@@ -2,8 +2,8 @@
 // fixed target (eye-in-hand, A_i X = X B_i). The arm moves between random poses; the camera
 // measures the target's pose with noise. Three ways: hand_eye on the motions between consecutive
 // poses (Daniilidis's dual-quaternion method, and rotation_first), and hand_eye_from_poses on the
-// poses themselves (rotation_first, then the maximum-likelihood mount and target). The error of the
-// recovered mount X falls as motions are added; the picture shows it for three noise levels.
+// poses themselves (rotation_first, then the mount and the target fitted to the poses). The error
+// of the recovered mount X falls as motions are added; the picture shows it for three noise levels.
 // Run: example_hand_eye [output directory]  -> hand_eye.svg
 #include <algorithm>
 #include <cmath>

@@ -168,6 +168,112 @@ TEST_CASE("hand_eye_from_poses: noisy poses give a mount at least as accurate as
     }
 }
 
+/// The sums of squared residuals of the model (docs/rigid-motions.md), sum |r_j|^2 and sum |e_j|^2,
+/// in long double, for X = (exp(a) R_X, t_X + b) and W = (exp(c) R_W, t_W + d) with
+/// at = (a, b, c, d).
+struct residual_sums {
+    long double rotation, translation;
+};
+
+residual_sums sums_at(const poses<double>& p, const dual_quaternion<double>& mount,
+                      const dual_quaternion<double>& world, const long double (&at)[12]) {
+    using L = long double;
+    const auto moved = [&at](const dual_quaternion<double>& m, int first) {
+        const quaternion<L> turn =
+            quat::from_rotation_vector(vec3<L>{at[first], at[first + 1], at[first + 2]});
+        const dual_quaternion<L> wide(m);
+        const vec3<L> shift{at[first + 3], at[first + 4], at[first + 5]};
+        return quat::to_dual_quaternion(turn * quat::rotation_of(wide),
+                                        quat::translation_of(wide) + shift);
+    };
+    const dual_quaternion<L> x = moved(mount, 0), w = moved(world, 6);
+    residual_sums s{0, 0};
+    for (std::size_t j = 0; j < p.hands.size(); ++j) {
+        const dual_quaternion<L> predicted =
+            quat::inverse(x) * quat::inverse(dual_quaternion<L>(p.hands[j])) * w;
+        const dual_quaternion<L> measured(p.targets[j]);
+        const vec3<L> r = quat::to_rotation_vector(quat::rotation_of(measured) *
+                                                   quat::conjugate(quat::rotation_of(predicted)));
+        const vec3<L> e = quat::translation_of(measured) - quat::translation_of(predicted);
+        s.rotation += quat::dot(r, r);
+        s.translation += quat::dot(e, e);
+    }
+    return s;
+}
+
+TEST_CASE("hand_eye_from_poses: a stationary point of the weighted cost, by finite differences",
+          "[hand_eye][poses]") {
+    // The gradients of sum |r|^2 and sum |e|^2 over the 12 unknowns by central differences in
+    // long double, independent of the refinement's Jacobians, each component times the noise of
+    // its kind / sqrt(poses) (so in units of the answer's uncertainty). At the answer of a weighted
+    // least-squares fit they are opposite: g_r + lambda g_t = 0 for the weight lambda it used.
+    // With many poses that weight is the variance ratio of the answer's own residuals and the
+    // answer the maximum of the likelihood with the variances unknown, where the concentrated cost
+    // log(sum |r|^2) + log(sum |e|^2) is stationary (checked against the closed form's gradient).
+    // With few poses that likelihood has no maximum (it grows without bound as one kind of
+    // residual goes to 0); the second round's weight, from the first round's residuals, then
+    // differs from the final residuals' ratio (measured: up to 22x at 4 poses, 2.6x at 11).
+    const double degree = quat::numbers::pi / 180;
+    for (const std::size_t count : {4, 11, 51}) {
+        quat::test::random_rotations random(59 + count);
+        double worst_opposite = 0, worst_ratio = 1, worst_ml = 0, closed_ml = 1e300;
+        for (int k = 0; k < 10; ++k) {
+            const dual_quaternion<double> mount = random.rigid_motion<double>(0.2);
+            const poses<double> p = poses_for(random, mount, count, degree, 0.01);
+            const auto r = quat::hand_eye_from_poses(p.hands, p.targets);
+            REQUIRE(r.refined);
+            std::vector<dual_quaternion<double>> a, b;
+            consecutive_motions(p, a, b);
+            const auto closed = quat::hand_eye(a, b, quat::hand_eye_method::rotation_first);
+            const double units[2] = {degree / std::sqrt(double(count)),
+                                     0.01 / std::sqrt(double(count))};
+            for (int which = 0; which < 2; ++which) {
+                const dual_quaternion<double> x = which == 0 ? r.calibration.mount : closed.mount;
+                const dual_quaternion<double> w =
+                    which == 0 ? r.target : quat::normalize(p.hands[0] * x * p.targets[0]);
+                const long double zero[12] = {};
+                const residual_sums at = sums_at(p, x, w, zero);
+                long double gr[12], gt[12];
+                for (int i = 0; i < 12; ++i) {
+                    const long double h = 1e-6L;
+                    long double up[12] = {}, down[12] = {};
+                    up[i] = h;
+                    down[i] = -h;
+                    const residual_sums u = sums_at(p, x, w, up), d = sums_at(p, x, w, down);
+                    gr[i] = (u.rotation - d.rotation) / (2 * h) * units[i % 6 < 3 ? 0 : 1];
+                    gt[i] = (u.translation - d.translation) / (2 * h) * units[i % 6 < 3 ? 0 : 1];
+                }
+                long double rt = 0, tt = 0, rr = 0, ml = 0;
+                for (int i = 0; i < 12; ++i) {
+                    rt += gr[i] * gt[i];
+                    tt += gt[i] * gt[i];
+                    rr += gr[i] * gr[i];
+                    ml = std::max(ml, std::abs(gr[i] / at.rotation + gt[i] / at.translation));
+                }
+                if (which == 1) {
+                    closed_ml = std::min(closed_ml, double(ml));
+                    continue;
+                }
+                worst_ml = std::max(worst_ml, double(ml));
+                const long double lambda = -rt / tt;
+                long double off = 0;
+                for (int i = 0; i < 12; ++i) off += std::pow(gr[i] + lambda * gt[i], 2.0L);
+                worst_opposite = std::max(worst_opposite, double(std::sqrt(off / rr)));
+                // lambda against the variance ratio of the answer's residuals, as a factor >= 1.
+                const double ratio = double(lambda / (at.rotation / at.translation));
+                worst_ratio = std::max(worst_ratio, std::max(ratio, 1 / ratio));
+            }
+        }
+        CAPTURE(count, worst_opposite, worst_ratio, worst_ml, closed_ml);
+        // The rounds end at steps below 2^-10 of the noise: sqrt(poses) / 1024 of the uncertainty.
+        CHECK(worst_opposite <= 1e-2);
+        if (count > 50) {
+            CHECK(worst_ratio <= 1.1);
+            CHECK(worst_ml * 100 <= closed_ml);
+        }
+    }
+}
+
 TEST_CASE("hand_eye_from_poses: the same answer in every unit of length", "[hand_eye][poses]") {
     quat::test::random_rotations random(54);
     const double degree = quat::numbers::pi / 180;

@@ -4,7 +4,7 @@
 // International Journal of Robotics Research 18(3), 1999): rotation and translation together, from
 // the null space of one stacked matrix; or rotation first (the closed forms:
 // registration/detail/hand_eye_solvers.hpp). From the absolute poses, hand_eye_from_poses refines
-// the closed form to the maximum-likelihood mount and target
+// the closed form by fitting the mount and the target's pose to the poses
 // (registration/detail/hand_eye_poses.hpp).
 #ifndef QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
 #define QUAT_REGISTRATION_HAND_EYE_HPP_INCLUDED
@@ -72,11 +72,11 @@ enum class hand_eye_method {
 template <class T>
 struct hand_eye_with_target {
     /// The mount X, and rotation_rms, translation_rms, unique and ambiguity as hand_eye gives them
-    /// for the motions between every pair of poses (A = H_k^-1 H_j, B = S_k S_j^-1, j < k).
+    /// for the motions between consecutive poses (A = H_(j+1)^-1 H_j, B = S_(j+1) S_j^-1).
     hand_eye_calibration<T> calibration;
     /// W, the target in the robot's base (x_base = W x_target): H_j X S_j = W for exact poses.
     dual_quaternion<T> target;
-    /// True where the maximum-likelihood refinement replaced the closed form; false where the
+    /// True where the refinement on the poses replaced the closed form; false where the
     /// poses do not fix X (calibration.unique false), for bad input, or where it did not lower
     /// the cost.
     bool refined;
@@ -254,10 +254,11 @@ template <class MotionsA, class MotionsB,
 /// The mount X and the target's pose W from absolute poses, eye-in-hand: hand_poses[j] is the
 /// hand in the robot's base (H_j), target_poses[j] a fixed target in the sensor's frame (S_j, e.g.
 /// from a camera's pose estimate), so that H_j X S_j = W for every j. hand_eye's rotation_first
-/// solution from the motions between every pair of poses, refined to the maximum-likelihood X and
-/// W for exact hand poses and target poses measured with isotropic rotation and translation noise
-/// of unknown variances, each estimated from the data (registration/detail/hand_eye_poses.hpp;
-/// docs/rigid-motions.md): the answer does not depend on the unit of length. Where the poses do
+/// solution from the motions between consecutive poses, then X and W fitted to the poses for exact
+/// hand poses and target poses measured with isotropic rotation and translation noise of unknown
+/// variances: weighted least squares, the weights from the data's residuals in two rounds (the
+/// maximum of the likelihood where there are many poses; registration/detail/hand_eye_poses.hpp,
+/// docs/rigid-motions.md). The answer does not depend on the unit of length. Where the poses do
 /// not fix X (calibration.unique false) the closed form stays, as hand_eye gives it.
 ///
 /// Unit dual quaternions, in containers with data() and size(), equally long, or C arrays. No

@@ -10,7 +10,13 @@
 // + 3 n log(sigma_r sigma_t) for r_j = log(R_sj R_pj^T) and e_j = t_sj - t_pj, (R_pj, t_pj) the
 // prediction X^-1 H_j^-1 W. For fixed X and W the variances that minimize it are the mean squared
 // residual components; for fixed variances X and W are a weighted least-squares problem. The
-// refinement alternates the two, a few Gauss-Newton steps per round. Weighting by the variances
+// refinement alternates the two for two rounds: Gauss-Newton weighted by the closed form's
+// residuals, then by the first round's. With many poses that is the likelihood's maximum (at 51
+// poses within 1e-3 of the answer's uncertainty, tests/test_hand_eye_from_poses.cpp). With few,
+// the likelihood has no maximum: it grows without bound as one kind of residual goes to 0, which
+// 12 unknowns can nearly reach from 6 n residuals; two rounds stop short of that, and more rounds
+// measured no better at 11 and 51 poses and worse at 4 (the 95th percentile of the rotation error
+// 17-19 % larger with four rounds, examples/hand_eye.cpp's scene). Weighting by the variances
 // that the data imply, not by a constant, is what keeps the answer independent of the unit of
 // length: scaling every translation by s scales sigma_t by s and leaves the weighted cost's
 // minimizer where it was (scaled).
