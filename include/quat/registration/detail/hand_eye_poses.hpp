@@ -158,25 +158,25 @@ constexpr pose_sums<T> accumulate_poses(const H* hands, const S* targets, std::s
 /// Solves the symmetric positive definite n x n system m x = b (upper triangle of m given) by
 /// Cholesky, in place in b. False where a pivot is not above 2^-40 of the largest diagonal
 /// element (a direction the poses do not fix): the caller keeps what it had.
-template <int N, class T>
+template <std::size_t N, class T>
 constexpr bool cholesky_solve(T (&m)[N][N], T (&b)[N]) noexcept {
     T largest(0);
-    for (int k = 0; k < N; ++k) largest = max(largest, m[k][k]);
+    for (std::size_t k = 0; k < N; ++k) largest = max(largest, m[k][k]);
     const T floor = largest * T(1) / T(1099511627776.0);
     if (!(largest > T(0))) return false;
-    for (int k = 0; k < N; ++k) {  // m = L L^T, L^T stored in the upper triangle
-        for (int s = 0; s < k; ++s)
-            for (int c = k; c < N; ++c) m[k][c] -= m[s][k] * m[s][c];
+    for (std::size_t k = 0; k < N; ++k) {  // m = L L^T, L^T stored in the upper triangle
+        for (std::size_t s = 0; s < k; ++s)
+            for (std::size_t c = k; c < N; ++c) m[k][c] -= m[s][k] * m[s][c];
         if (!(m[k][k] > floor)) return false;
         const T root = sqrt(m[k][k]);
-        for (int c = k; c < N; ++c) m[k][c] = m[k][c] / root;
+        for (std::size_t c = k; c < N; ++c) m[k][c] = m[k][c] / root;
     }
-    for (int k = 0; k < N; ++k) {  // L y = b
-        for (int s = 0; s < k; ++s) b[k] -= m[s][k] * b[s];
+    for (std::size_t k = 0; k < N; ++k) {  // L y = b
+        for (std::size_t s = 0; s < k; ++s) b[k] -= m[s][k] * b[s];
         b[k] = b[k] / m[k][k];
     }
-    for (int k = N - 1; k >= 0; --k) {  // L^T x = y
-        for (int s = k + 1; s < N; ++s) b[k] -= m[k][s] * b[s];
+    for (std::size_t k = N; k-- > 0;) {  // L^T x = y
+        for (std::size_t s = k + 1; s < N; ++s) b[k] -= m[k][s] * b[s];
         b[k] = b[k] / m[k][k];
     }
     return true;
