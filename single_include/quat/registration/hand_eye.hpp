@@ -903,9 +903,9 @@ template <class T, class H, class S>
 /// arrays). From absolute poses, the hand's H_j (hand in the robot's base) and the sensor's S_j
 /// (a fixed target in the sensor's frame), pair j -> k gives A = H_k^-1 H_j and B = S_k S_j^-1;
 /// X then maps sensor coordinates into hand coordinates (hand_eye_from_poses takes the poses
-/// themselves, and is more accurate under measurement noise). The sign of each B is chosen to match its
-/// A's screw (equal scalar parts), so either sign may be given. The robot-world form AX = YB is not
-/// solved here.
+/// themselves, and is more accurate under measurement noise). The sign of each B is chosen to
+/// match its A's screw (equal scalar parts), so either sign may be given. The robot-world form
+/// AX = YB is not solved here.
 ///
 /// unique is false where the motions do not fix X (hand_eye_calibration::ambiguity, reported, at
 /// 1/4 or more): the hand turning about one axis, or not at all, or about axes that differ only by
