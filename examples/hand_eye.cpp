@@ -1,7 +1,9 @@
 // hand_eye: a camera on a robot arm, calibrated from the arm's motions and the camera's view of a
-// fixed target (eye-in-hand, A_i X = X B_i, Daniilidis's dual-quaternion method). The arm moves
-// between random poses; the camera measures the target's pose with noise. The error of the
-// recovered mount X falls as motions are added; the picture shows it for three noise levels.
+// fixed target (eye-in-hand, A_i X = X B_i). The arm moves between random poses; the camera
+// measures the target's pose with noise. Three ways: hand_eye on the motions between consecutive
+// poses (Daniilidis's dual-quaternion method, and rotation_first), and hand_eye_from_poses on the
+// poses themselves (rotation_first, then the mount and the target fitted to the poses). The error
+// of the recovered mount X falls as motions are added; the picture shows it for three noise levels.
 // Run: example_hand_eye [output directory]  -> hand_eye.svg
 #include <algorithm>
 #include <cmath>
@@ -64,10 +66,10 @@ struct calibration_error {
     double rotation_degrees, translation_mm;
 };
 
-/// Calibrates from `motions` arm motions at one noise level, by both methods on the same
+/// Calibrates from `motions` arm motions at one noise level, by the three ways on the same
 /// measurements; the errors of the mounts found.
 struct calibration_errors {
-    calibration_error joint, rotation_first;
+    calibration_error joint, rotation_first, from_poses;
 };
 
 calibration_errors calibrate(generator& g, const dual_quaternion<double>& mount, int motions,
@@ -94,7 +96,8 @@ calibration_errors calibrate(generator& g, const dual_quaternion<double>& mount,
         return calibration_error{angle_between(x.mount.real, mount.real) / degree,
                                  norm(translation_of(x.mount) - translation_of(mount)) * 1000};
     };
-    return {error(hand_eye(a, b)), error(hand_eye(a, b, hand_eye_method::rotation_first))};
+    return {error(hand_eye(a, b)), error(hand_eye(a, b, hand_eye_method::rotation_first)),
+            error(hand_eye_from_poses(hands, cameras).calibration)};
 }
 
 }  // namespace
@@ -110,7 +113,7 @@ int main(int argc, char** argv) {
     generator g(2026);
 
     const calibration_errors exact = calibrate(g, mount, 8, 0.0, 0.0);
-    for (const calibration_error& e : {exact.joint, exact.rotation_first}) {
+    for (const calibration_error& e : {exact.joint, exact.rotation_first, exact.from_poses}) {
         std::printf("  without noise, 8 motions: %.2g deg, %.2g mm\n", e.rotation_degrees,
                     e.translation_mm);
         expect(e.rotation_degrees < 1e-10 && e.translation_mm < 1e-9,
@@ -123,28 +126,31 @@ int main(int argc, char** argv) {
     constexpr int trials = 40;
     std::vector<plot::series> rotation_curves, translation_curves;
     const char* colours[3] = {"#1f77b4", "#ff7f0e", "#d62728"};
-    // Per noise level, per method (0: Daniilidis's joint solution, 1: rotation_first), per count.
-    double rotation_rms[3][2][8] = {}, translation_rms[3][2][8] = {};
+    // Per noise level, per method (0: Daniilidis's joint solution, 1: rotation_first, 2:
+    // hand_eye_from_poses), per count.
+    double rotation_rms[3][3][8] = {}, translation_rms[3][3][8] = {};
     for (int level = 0; level < 3; ++level) {
         const double angle = levels[level][0] * degree, offset = levels[level][1] / 1000;
         for (int c = 0; c < 8; ++c) {
-            double squares[2][2] = {};
+            double squares[3][2] = {};
             for (int t = 0; t < trials; ++t) {
                 const calibration_errors e = calibrate(g, mount, counts[c], angle, offset);
-                for (int m = 0; m < 2; ++m) {
-                    const calibration_error& one = m == 0 ? e.joint : e.rotation_first;
+                for (int m = 0; m < 3; ++m) {
+                    const calibration_error& one =
+                        m == 0 ? e.joint : (m == 1 ? e.rotation_first : e.from_poses);
                     squares[m][0] += one.rotation_degrees * one.rotation_degrees;
                     squares[m][1] += one.translation_mm * one.translation_mm;
                 }
             }
-            for (int m = 0; m < 2; ++m) {
+            for (int m = 0; m < 3; ++m) {
                 rotation_rms[level][m][c] = std::sqrt(squares[m][0] / trials);
                 translation_rms[level][m][c] = std::sqrt(squares[m][1] / trials);
             }
         }
     }
-    const char* method_names[2] = {"Daniilidis (joint)", "rotation_first"};
-    for (int m = 0; m < 2; ++m) {
+    const char* method_names[3] = {"Daniilidis (joint)", "rotation_first", "hand_eye_from_poses"};
+    const char* dashes[3] = {"2 3", "6 4", ""};
+    for (int m = 0; m < 3; ++m) {
         std::printf(
             "  %s: RMS error of the mount over %d calibrations (rotation deg / "
             "translation mm):\n",
@@ -153,12 +159,11 @@ int main(int argc, char** argv) {
         for (const int n : counts) std::printf(" %14d", n);
         std::printf("\n");
         for (int level = 0; level < 3; ++level) {
-            char label[64], legend[80];
+            char label[64];
             std::snprintf(label, sizeof label, "%g deg, %g mm", levels[level][0], levels[level][1]);
-            std::snprintf(legend, sizeof legend, "%s%s", label, m == 0 ? "" : ", rotation first");
-            plot::series rotation{legend, {}, {}, {colours[level], 1.8}};
-            plot::series translation{legend, {}, {}, {colours[level], 1.8}};
-            if (m == 1) rotation.look.dash = translation.look.dash = "6 4";
+            plot::series rotation{label, {}, {}, {colours[level], 1.8}};
+            plot::series translation{label, {}, {}, {colours[level], 1.8}};
+            rotation.look.dash = translation.look.dash = dashes[m];
             std::printf("  %-16s", label);
             for (int c = 0; c < 8; ++c) {
                 std::printf(" %6.3f / %5.2f", rotation_rms[level][m][c],
@@ -179,22 +184,47 @@ int main(int argc, char** argv) {
             translation_curves.push_back(translation);
         }
     }
-    for (int level = 0; level < 3; ++level)
+    for (int level = 0; level < 3; ++level) {
         expect(rotation_rms[level][1][7] * 1.5 < rotation_rms[level][0][7],
                "rotation_first: the rotation at 50 motions 1.5x more accurate than the joint one");
+        bool better = true;
+        for (int c = 0; c < 8; ++c)
+            better = better && rotation_rms[level][2][c] <= rotation_rms[level][1][c] &&
+                     translation_rms[level][2][c] <= translation_rms[level][1][c];
+        expect(better, "hand_eye_from_poses: at least as accurate as rotation_first, every count");
+    }
 
-    svg::document doc(960, 420);
+    svg::document doc(960, 476);
     doc.text({480, 26}, "Hand-eye calibration (A X = X B): RMS error of the mount found", 17,
              "middle", "#222", true);
     plot::chart left{70, 80, 380, 270, "rotation", "motions", "error (deg)", 5, 50, 1e-3, 10, true};
     plot::chart right{560,          80, 380, 270,  "translation", "motions",
                       "error (mm)", 5,  50,  1e-2, 100,           true};
-    left.legend_top_left = right.legend_top_left = false;
+    left.legend = right.legend = false;
     plot::draw(doc, left, rotation_curves);
     plot::draw(doc, right, translation_curves);
-    doc.text({480, 408},
-             "camera pose noise per measurement (legend); 40 calibrations per point; "
-             "hand_eye(a, b): Daniilidis 1999 (solid), hand_eye_method::rotation_first (dashed)",
+    // One legend for both charts: colour the noise level, dash the method.
+    for (int m = 0; m < 3; ++m) {
+        const double x = 110 + 260 * m, y = 410;
+        svg::style look{"#444", 1.8};
+        look.dash = dashes[m];
+        doc.line({x, y - 4}, {x + 34, y - 4}, look);
+        doc.text({x + 40, y},
+                 m == 0   ? "hand_eye(a, b): Daniilidis"
+                 : m == 1 ? "hand_eye(a, b, rotation_first)"
+                          : "hand_eye_from_poses(hands, cameras)",
+                 12);
+    }
+    for (int level = 0; level < 3; ++level) {
+        const double x = 230 + 180 * level, y = 432;
+        doc.line({x, y - 4}, {x + 34, y - 4}, {colours[level], 2.5});
+        char label[64];
+        std::snprintf(label, sizeof label, "%g deg, %g mm", levels[level][0], levels[level][1]);
+        doc.text({x + 40, y}, label, 12);
+    }
+    doc.text({480, 462},
+             "camera pose noise per measurement (colour); 40 calibrations per point; relative "
+             "motions between consecutive poses",
              12, "middle", "#444");
     expect(doc.save(out), "hand_eye.svg written");
     std::printf("  wrote %s\n", out.c_str());

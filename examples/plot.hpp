@@ -27,6 +27,7 @@ struct chart {
     bool log_y = false;
     bool legend_top_left = true;
     double legend_down = 0.0;  // legend's top edge, as a fraction of the height below the top
+    bool legend = true;        // false: the caller draws one elsewhere
 };
 
 inline std::string format_tick(double v) {
@@ -91,6 +92,7 @@ inline void draw(svg::document& doc, const chart& c, const std::vector<series>& 
             points.push_back(map(s.x[i], s.y[i]));
         doc.polyline(points, s.look);
     }
+    if (!c.legend) return;
     // Legend in a corner box.
     std::size_t longest = 0;
     for (const series& s : curves) longest = std::max(longest, s.label.size());

@@ -324,3 +324,29 @@ HOSTILE("hand_eye", "hand_eye") {
                 }
             });
 }
+
+HOSTILE("hand_eye_from_poses", "hand_eye") {
+    using T = TestType;
+    const good<T> g;
+    // Four hand poses and the target's poses S_j = X^-1 H_j^-1 W for X = dq, W = dq2.
+    const std::vector<dual_quaternion<T>> hands{
+        quat::to_dual_quaternion(g.q, g.v), quat::to_dual_quaternion(g.q2, g.v2),
+        quat::to_dual_quaternion(g.q3, g.v), quat::to_dual_quaternion(g.q4, g.v2)};
+    std::vector<dual_quaternion<T>> targets;
+    for (const dual_quaternion<T>& h : hands)
+        targets.push_back(quat::normalize(quat::inverse(h * g.dq) * g.dq2));
+    for (int side = 0; side < 2; ++side)
+        for_each_bad<T>(side == 0 ? "hands[1]" : "targets[1]", hands[1],
+                        [&](const dual_quaternion<T>& m, const std::string& where) {
+                            std::vector<dual_quaternion<T>> h = hands, s = targets;
+                            (side == 0 ? h : s)[1] = m;
+                            const auto r = quat::hand_eye_from_poses(h, s);
+                            EXPECT_ALL_NAN(
+                                "hand_eye_from_poses (doc: NaN in every component) with " << where,
+                                r);
+                            CHECK_FALSE(r.calibration.unique);
+                            CHECK_FALSE(r.refined);
+                            EXPECT_EMPTY("try_hand_eye_from_poses with " << where,
+                                         quat::try_hand_eye_from_poses(h, s));
+                        });
+}

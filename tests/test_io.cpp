@@ -112,6 +112,11 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
     CHECK(text_of(mount) ==
           "hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, "
           "0}}, 0.125, 0.5, false, 1}");
+    const quat::hand_eye_with_target<T> with{mount, motion, true};
+    CHECK(text_of(with) ==
+          "hand_eye_with_target{hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, "
+          "quaternion{-0.5, 0, 0, 0}}, 0.125, 0.5, false, 1}, dual_quaternion{quaternion{0, 0, 0, "
+          "1}, quaternion{-0.5, 0, 0, 0}}, true}");
     CHECK(text_of(quat::to_homogeneous(motion)) ==
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};

@@ -77,6 +77,12 @@ TEMPLATE_TEST_CASE("std::format prints the documented format", "[io][format]", f
                       quat::hand_eye_calibration<T>{motion, T(0.125), T(0.5), false, T(1)}) ==
           "hand_eye_calibration{dual_quaternion{quaternion{0.0, 0.0, 0.0, 1.0}, "
           "quaternion{-0.5, 0.0, 0.0, 0.0}}, 0.1, 0.5, false, 1.0}");
+    CHECK(std::format("{}",
+                      quat::hand_eye_with_target<T>{
+                          {motion, T(0.125), T(0.5), true, T(0.25)}, motion, false}) ==
+          "hand_eye_with_target{hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, "
+          "quaternion{-0.5, 0, 0, 0}}, 0.125, 0.5, true, 0.25}, dual_quaternion{quaternion{0, 0, "
+          "0, 1}, quaternion{-0.5, 0, 0, 0}}, false}");
     CHECK(std::format("{}", motion) ==
           "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
     CHECK(std::format("{}", quat::to_homogeneous(motion)) ==

@@ -27,7 +27,7 @@ MAY_INCLUDE = {
     "lie": {"detail", "core", "rigid", "fitting"},
     "paths": {"detail", "core", "lie"},
     "batch": {"detail", "core", "rigid", "paths"},
-    "registration": {"detail", "core", "rigid", "fitting"},
+    "registration": {"detail", "core", "rigid", "fitting", "lie"},
     "io": {"detail", "core"},
     "interop": {"detail", "core", "rigid", "fitting", "lie", "paths", "batch", "registration",
                 "io"},

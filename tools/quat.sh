@@ -16,7 +16,7 @@ cd "$repo"
 packages=(g++ cmake clang libglm-dev catch2 libbenchmark-dev libeigen3-dev doxygen
           libclang-rt-14-dev valgrind clang-format clang-tidy python3 pkg-config libfmt-dev
           clang-19 libc++-19-dev libc++abi-19-dev libclang-rt-19-dev qemu-user libceres-dev
-          libgtest-dev libgmock-dev)
+          libgtest-dev libgmock-dev libopencv-dev)
 matrix=(ci-gcc-cxx17-asan ci-clang-cxx20-asan ci-gcc-cxx20-release ci-clang-cxx17-release)
 jobs="${QUAT_JOBS:-2}"
 

@@ -27,6 +27,8 @@
 //   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true, 0.01}
 //                                                             mount, rotation_rms, translation_rms,
 //                                                             unique, ambiguity
+//   hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, true}
+//                                                             calibration, target, refined
 // lie/se3.hpp
 //   se3::twist{vec3{1, 0, 0}, vec3{0, 0, 0.5}}                linear, angular
 //
@@ -206,6 +208,14 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, c);
 }
 
+/// Prints hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, refined}
+/// (registration/hand_eye.hpp); stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const hand_eye_with_target<T>& r) {
+    return detail::print_to_stream(os, r);
+}
+
 /// Prints swing_twist_parts{quaternion{...}, quaternion{...}}, swing then twist; stream settings as
 /// for vec3.
 template <class T, class CharT, class Traits>
@@ -325,6 +335,12 @@ struct formatter<::quat::similarity_alignment<T>, CharT>
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>
     : ::quat::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
+
+/// Formats hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, refined}; the spec
+/// applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::hand_eye_with_target<T>, CharT>
+    : ::quat::value_formatter<::quat::hand_eye_with_target<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>

@@ -54,6 +54,8 @@
 //   hand_eye_calibration{dual_quaternion{...}, 0.1, 0.2, true, 0.01}
 //                                                             mount, rotation_rms, translation_rms,
 //                                                             unique, ambiguity
+//   hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, true}
+//                                                             calibration, target, refined
 // lie/se3.hpp
 //   se3::twist{vec3{1, 0, 0}, vec3{0, 0, 0.5}}                linear, angular
 //
@@ -139,6 +141,8 @@ template <class T>
 struct similarity_alignment;
 template <class T>
 struct hand_eye_calibration;
+template <class T>
+struct hand_eye_with_target;
 namespace se3 {
 template <class T>
 struct twist;
@@ -318,6 +322,15 @@ void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
     p.text(c.unique ? ", true, " : ", false, ");
     p.value(c.ambiguity);
     p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const hand_eye_with_target<T>& r) {
+    p.text("hand_eye_with_target{");
+    write_layout(p, r.calibration);
+    p.text(", ");
+    write_layout(p, r.target);
+    p.text(r.refined ? ", true}" : ", false}");
 }
 
 template <class Printer, class T>
@@ -633,6 +646,14 @@ std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>&
     return detail::print_to_stream(os, c);
 }
 
+/// Prints hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, refined}
+/// (registration/hand_eye.hpp); stream settings as for vec3.
+template <class T, class CharT, class Traits>
+std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& os,
+                                              const hand_eye_with_target<T>& r) {
+    return detail::print_to_stream(os, r);
+}
+
 /// Prints swing_twist_parts{quaternion{...}, quaternion{...}}, swing then twist; stream settings as
 /// for vec3.
 template <class T, class CharT, class Traits>
@@ -775,6 +796,12 @@ struct formatter<::quat::similarity_alignment<T>, CharT>
 template <class T, class CharT>
 struct formatter<::quat::hand_eye_calibration<T>, CharT>
     : ::quat::value_formatter<::quat::hand_eye_calibration<T>, std::formatter<T, CharT>> {};
+
+/// Formats hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, refined}; the spec
+/// applies to each number.
+template <class T, class CharT>
+struct formatter<::quat::hand_eye_with_target<T>, CharT>
+    : ::quat::value_formatter<::quat::hand_eye_with_target<T>, std::formatter<T, CharT>> {};
 
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class CharT>

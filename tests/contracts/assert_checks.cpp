@@ -44,6 +44,7 @@ int valid() {
     const std::vector<quat::dual_quaterniond> motions{
         quat::to_dual_quaternion(unit, v), quat::to_dual_quaternion(quat::rotation_x(1.0), v)};
     sink = sink + quat::hand_eye(motions, motions).rotation_rms;
+    sink = sink + quat::hand_eye_from_poses(motions, motions).calibration.rotation_rms;
     sink = sink + quat::align_points(points, points, weights).rms +
            quat::align_points_with_scale(points, points).scale +
            quat::align_vectors(points, points, weights).rssd;
@@ -171,6 +172,14 @@ int run(const char* name) {
     if (std::strcmp(name, "hand_eye_not_unit") == 0) {
         const std::vector<quat::dual_quaterniond> twice{{quatd{2, 0, 0, 0}, quatd{0, 0, 0, 0}}};
         sink = quat::hand_eye(twice, twice).rotation_rms;
+    }
+    if (std::strcmp(name, "hand_eye_from_poses_size") == 0)
+        sink = quat::hand_eye_from_poses(std::vector<quat::dual_quaterniond>(2),
+                                         std::vector<quat::dual_quaterniond>(3))
+                   .calibration.rotation_rms;
+    if (std::strcmp(name, "hand_eye_from_poses_not_unit") == 0) {
+        const std::vector<quat::dual_quaterniond> twice{{quatd{2, 0, 0, 0}, quatd{0, 0, 0, 0}}};
+        sink = quat::hand_eye_from_poses(twice, twice).calibration.rotation_rms;
     }
     if (std::strcmp(name, "align_points_size") == 0)
         sink = quat::align_points(pair, std::vector<vec3<double>>{v}).rms;

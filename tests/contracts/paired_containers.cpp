@@ -109,6 +109,12 @@ void fits(std::size_t a, std::size_t b) {
               "hand_eye");
         check(!quat::try_hand_eye(hand, eye, method), "try_hand_eye");
     }
+    const auto poses = quat::hand_eye_from_poses(hand, eye);
+    check(is_nan(poses.calibration.mount) && is_nan(poses.target) &&
+              std::isnan(poses.calibration.rotation_rms) && !poses.calibration.unique &&
+              !poses.refined,
+          "hand_eye_from_poses");
+    check(!quat::try_hand_eye_from_poses(hand, eye), "try_hand_eye_from_poses");
 }
 
 // Averages and blends with weights: NaN, and an empty try_.

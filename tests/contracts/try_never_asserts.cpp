@@ -82,6 +82,10 @@ bool finite(const quat::hand_eye_calibration<T>& c) {
     return finite(c.mount) && finite(c.rotation_rms) && finite(c.translation_rms);
 }
 template <class T>
+bool finite(const quat::hand_eye_with_target<T>& r) {
+    return finite(r.calibration) && finite(r.target);
+}
+template <class T>
 bool finite(const quat::point_alignment<T>& a) {
     return finite(a.motion) && finite(a.rms);
 }
@@ -102,6 +106,12 @@ template <class T>
 bool unit(const quat::hand_eye_calibration<T>& c) {
     return unit(c.mount.real) &&
            std::fabs(quat::dot(c.mount.real, c.mount.dual)) <= T(1e-3) * quat::norm(c.mount.dual);
+}
+template <class T>
+bool unit(const quat::hand_eye_with_target<T>& r) {
+    return unit(r.calibration) && unit(r.target.real) &&
+           std::fabs(quat::dot(r.target.real, r.target.dual)) <=
+               T(1e-3) * quat::norm(r.target.dual);
 }
 template <class T>
 bool unit(const quat::point_alignment<T>& a) {
@@ -434,6 +444,21 @@ void hand_eye_cases() {
     CHECK_TRY(quat::try_hand_eye(one, one), "try_hand_eye(one motion)");
     CHECK_TRY(quat::try_hand_eye(good, one), "try_hand_eye(3 and 1 motions)");
     CHECK_TRY(quat::try_hand_eye(good, good), "try_hand_eye(a = b)");
+
+    current = "try_hand_eye_from_poses";
+    for (const quaternion<T>& p : quaternions<T>()) {
+        std::vector<dual_quaternion<T>> real_bad = good, dual_bad = good;
+        real_bad[1] = dual_quaternion<T>{p, dual};
+        dual_bad[1] = dual_quaternion<T>{real, p};
+        CHECK_TRY(quat::try_hand_eye_from_poses(good, real_bad),
+                  "try_hand_eye_from_poses(targets[1].real " + str(p) + ")");
+        CHECK_TRY(quat::try_hand_eye_from_poses(dual_bad, good),
+                  "try_hand_eye_from_poses(hands[1].dual " + str(p) + ")");
+    }
+    CHECK_TRY(quat::try_hand_eye_from_poses(none, none), "try_hand_eye_from_poses(no poses)");
+    CHECK_TRY(quat::try_hand_eye_from_poses(good, one), "try_hand_eye_from_poses(3 and 1 poses)");
+    CHECK_TRY(quat::try_hand_eye_from_poses(good, good),
+              "try_hand_eye_from_poses(hands = targets)");
 }
 
 template <class T>

@@ -64,6 +64,12 @@ TEMPLATE_TEST_CASE("fmt::format prints the documented format", "[io][fmt]", floa
     const quat::dual_quaternion<T> motion{{T(0), T(0), T(0), T(1)}, {T(-0.5), T(0), T(0), T(0)}};
     CHECK(fmt::format("{}", motion) ==
           "dual_quaternion{quaternion{0, 0, 0, 1}, quaternion{-0.5, 0, 0, 0}}");
+    CHECK(fmt::format("{}",
+                      quat::hand_eye_with_target<T>{
+                          {motion, T(0.125), T(0.5), true, T(0.25)}, motion, false}) ==
+          "hand_eye_with_target{hand_eye_calibration{dual_quaternion{quaternion{0, 0, 0, 1}, "
+          "quaternion{-0.5, 0, 0, 0}}, 0.125, 0.5, true, 0.25}, dual_quaternion{quaternion{0, 0, "
+          "0, 1}, quaternion{-0.5, 0, 0, 0}}, false}");
     CHECK(fmt::format("{}", quat::to_homogeneous(motion)) ==
           "homogeneous_matrix{{-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1}}");
     const quat::screw<T> s{{T(0), T(0), T(1)}, {T(0), T(-1), T(0)}, T(1.5), T(2)};

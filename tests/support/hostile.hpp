@@ -118,6 +118,11 @@ void flat(flat_t& o, const quat::hand_eye_calibration<T>& c) {
     flat(o, c.rotation_rms);
     flat(o, c.translation_rms);
 }
+template <class T>
+void flat(flat_t& o, const quat::hand_eye_with_target<T>& r) {
+    flat(o, r.calibration);
+    flat(o, r.target);
+}
 
 template <class R>
 flat_t flatten(const R& r) {

@@ -1,8 +1,8 @@
 // Instantiates fitting/align_vectors.hpp, registration/align_points.hpp and fitting/mean.hpp
 // (align_vectors, try_align_vectors, align_vectors_with_sensitivity, align_points[_with_scale] and
-// their try_ forms, hand_eye, try_hand_eye, mean, try_mean) for float, double and long double under
-// the strict warning flags, with weights of another scalar type beside them (a double weight
-// converts to T). Compiled, not run, by the strict_warnings CTest test.
+// their try_ forms, hand_eye, try_hand_eye, hand_eye_from_poses, try_hand_eye_from_poses, mean,
+// try_mean) for float, double and long double under the strict warning flags, with weights of
+// another scalar type beside them (a double weight converts to T). Compiled, not run, by the strict_warnings CTest test.
 #include <array>
 #include <vector>
 
@@ -45,6 +45,9 @@ T estimation() {
     sum += mount.rotation_rms + mount.mount.real.w +
            try_hand_eye(hand, eye).value_or(mount).translation_rms +
            hand_eye(hand, eye, hand_eye_method::rotation_first).rotation_rms;
+    const hand_eye_with_target<T> poses = hand_eye_from_poses(hand, eye);
+    sum += poses.calibration.rotation_rms + poses.target.real.w +
+           try_hand_eye_from_poses(hand, eye).value_or(poses).calibration.translation_rms;
     const std::vector<quaternion<T>> rotations{quaternion<T>::identity(), rotation, -rotation};
     sum += mean(rotations).w + mean(rotations, weights).x;
     sum += try_mean(rotations).value_or(quaternion<T>::identity()).y;

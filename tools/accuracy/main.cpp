@@ -9,6 +9,10 @@
 //                                           transform vs long double; sclerp's constant speed
 //                                           against dual-quaternion blending, quat's and GLM's;
 //                                           exit 1 when a row exceeds its bound, measure_rigid.hpp)
+//   quat_accuracy --hand-eye [--quick]     (hand-eye calibration under camera-pose noise, quat's
+//                                           methods beside OpenCV's five where built with it;
+//                                           exit 1 when hand_eye_from_poses misses a criterion,
+//                                           measure_hand_eye.hpp)
 
 // g++ 12 at -O3 reports a false -Warray-bounds (and, with AVX-512, -Wmaybe-uninitialized) inside
 // Eigen::umeyama's packet loads of its 3-vector means (measure_registration.hpp calls it); the code
@@ -25,6 +29,7 @@
 #include "measure_align.hpp"
 #include "measure_euler.hpp"
 #include "measure_fast_slerp.hpp"
+#include "measure_hand_eye.hpp"
 #include "measure_lie.hpp"
 #include "measure_registration.hpp"
 #include "measure_rigid.hpp"
@@ -40,6 +45,7 @@ struct options {
     bool conventions = false;  // print the Euler maximum of each convention
     bool slerp_fast = false;   // the fast-slerp family's table instead
     bool rigid = false;        // the rigid-motion tables of measure_rigid.hpp instead
+    bool hand_eye = false;     // hand-eye calibration under noise, against OpenCV
 };
 
 // quat's targets, in eps (double; float in the same ratio to its epsilon).
@@ -260,6 +266,7 @@ int run(const options& opt) {
     if (opt.slerp_fast) return run_fast_slerp(opt.quick, seed) > 0 ? 1 : 0;
     if (opt.scipy) return run_scipy();
     if (opt.rigid) return rigid::run_rigid(opt.quick, seed) > 0 ? 1 : 0;
+    if (opt.hand_eye) return hand_eye_noise::run_hand_eye_noise(opt.quick, seed) > 0 ? 1 : 0;
     std::vector<row> rows;
     runner<float> f{opt, rows, seed};
     runner<double> d{opt, rows, seed};
@@ -328,10 +335,12 @@ int main(int argc, char** argv) {
             opt.scipy = true;
         } else if (std::strcmp(argv[i], "--rigid") == 0) {
             opt.rigid = true;
+        } else if (std::strcmp(argv[i], "--hand-eye") == 0) {
+            opt.hand_eye = true;
         } else {
             std::fprintf(stderr,
                          "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick] | "
-                         "--scipy | --rigid [--quick]\n",
+                         "--scipy | --rigid [--quick] | --hand-eye [--quick]\n",
                          argv[0]);
             return 2;
         }

@@ -52,6 +52,8 @@ template <class T>
 struct similarity_alignment;
 template <class T>
 struct hand_eye_calibration;
+template <class T>
+struct hand_eye_with_target;
 namespace se3 {
 template <class T>
 struct twist;
@@ -208,6 +210,15 @@ void write_layout(Printer& p, const hand_eye_calibration<T>& c) {
     p.text(c.unique ? ", true, " : ", false, ");
     p.value(c.ambiguity);
     p.text("}");
+}
+
+template <class Printer, class T>
+void write_layout(Printer& p, const hand_eye_with_target<T>& r) {
+    p.text("hand_eye_with_target{");
+    write_layout(p, r.calibration);
+    p.text(", ");
+    write_layout(p, r.target);
+    p.text(r.refined ? ", true}" : ", false}");
 }
 
 template <class Printer, class T>

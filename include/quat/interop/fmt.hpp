@@ -86,6 +86,12 @@ template <class T, class Char>
 struct formatter<::quat::hand_eye_calibration<T>, Char>
     : ::quat::value_formatter<::quat::hand_eye_calibration<T>, fmt::formatter<T, Char>> {};
 
+/// Formats hand_eye_with_target{hand_eye_calibration{...}, dual_quaternion{...}, refined}; the spec
+/// applies to each number.
+template <class T, class Char>
+struct formatter<::quat::hand_eye_with_target<T>, Char>
+    : ::quat::value_formatter<::quat::hand_eye_with_target<T>, fmt::formatter<T, Char>> {};
+
 /// Formats swing_twist_parts{quaternion{...}, quaternion{...}}; the spec applies to each component.
 template <class T, class Char>
 struct formatter<::quat::swing_twist_parts<T>, Char>
