@@ -16,8 +16,10 @@
 
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/manifold.h>
+#include <ceres/problem.h>
 #include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
+#include <ceres/solver.h>
 #include <quat/interop/ceres.hpp>
 #include <quat/lie/relative_pose.hpp>
 #include <quat/quat.hpp>
@@ -329,4 +331,64 @@ TEST_CASE("information_square_root: U^T U is the information; empty unless posit
     matrix6<double> not_a_number = matrix6<double>::identity();
     not_a_number(2, 2) = std::numeric_limits<double>::quiet_NaN();
     CHECK_FALSE(quat::information_square_root(not_a_number).has_value());
+}
+
+namespace {
+
+// docs/lie-groups.md's pose-graph example, as written there (the Markdown block is not compiled by
+// docs_code_blocks, which does not link Ceres): four poses round a unit square, measured by four
+// edges, solved from a rough guess.
+struct square_solution {
+    double poses[4][7];
+    double final_cost;
+};
+
+square_solution solve_square() {
+    using namespace quat;
+    // Each edge: one step forward along x, then a quarter turn to the left.
+    const dual_quaternion<double> step =
+        to_dual_quaternion(rotation_z(numbers::pi / 2), vec3<double>{1, 0, 0});
+    const matrix6<double> sqrt_information =
+        *information_square_root(100.0 * matrix6<double>::identity());  // sigma 0.1
+
+    square_solution s{};
+    double(&poses)[4][7] = s.poses;  // w, x, y, z, tx, ty, tz each
+    // A rough first guess: x, y and heading of each pose.
+    const double guess[4][3] = {{0, 0, 0}, {1.2, 0.1, 1.3}, {0.9, 1.2, 3.4}, {-0.2, 0.8, 4.5}};
+    for (int k = 0; k < 4; ++k)
+        write_parameters(
+            to_dual_quaternion(rotation_z(guess[k][2]), vec3<double>{guess[k][0], guess[k][1], 0}),
+            poses[k]);
+    ceres::Problem problem;
+    for (int i = 0; i < 4; ++i)
+        problem.AddResidualBlock(
+            new relative_pose_cost(relative_pose_form::so3xr3, step, sqrt_information), nullptr,
+            poses[i], poses[(i + 1) % 4]);
+    for (auto& pose : poses) problem.SetManifold(pose, new pose_manifold);
+    problem.SetParameterBlockConstant(poses[0]);  // the measurements fix only relative poses
+
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    // poses[k] is step^k: at (0, 0), (1, 0), (1, 1), (0, 1), turned k quarter turns.
+    s.final_cost = summary.final_cost;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("docs/lie-groups.md's pose-graph example solves the square",
+          "[interop][ceres][relative_pose]") {
+    const square_solution s = solve_square();
+    CHECK(s.final_cost < 1e-20);
+    const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int k = 0; k < 4; ++k) {
+        const dual_quaternion<double> x = quat::pose_from_parameters(s.poses[k]);
+        const vec3<double> t = quat::translation_of(x);
+        CHECK(std::abs(t.x - corners[k][0]) < 1e-9);
+        CHECK(std::abs(t.y - corners[k][1]) < 1e-9);
+        CHECK(std::abs(t.z) < 1e-9);
+        CHECK(quat::angle_between(x.real, quat::rotation_z(k * quat::numbers::pi / 2)) < 1e-9);
+    }
 }
