@@ -392,3 +392,27 @@ TEST_CASE("docs/lie-groups.md's pose-graph example solves the square",
         CHECK(quat::angle_between(x.real, quat::rotation_z(k * quat::numbers::pi / 2)) < 1e-9);
     }
 }
+
+TEST_CASE("relative_pose_cost gives a non-finite residual for a NaN or infinite parameter",
+          "[interop][ceres][relative_pose]") {
+    const double bad[2] = {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity()};
+    for (const quat::relative_pose_form form :
+         {quat::relative_pose_form::so3xr3, quat::relative_pose_form::se3}) {
+        for (const double value : bad) {
+            for (int component = 0; component < 7; ++component) {
+                double a[7] = {1, 0, 0, 0, 1, 2, 3}, b[7] = {0, 1, 0, 0, -1, 0, 2};
+                a[component] = value;
+                const quat::relative_pose_cost cost(form, dual_quaternion<double>::identity(),
+                                                    matrix6<double>::identity());
+                const double* parameters[2] = {a, b};
+                double r[6], ja[42], jb[42];
+                double* jacobians[2] = {ja, jb};
+                REQUIRE(cost.Evaluate(parameters, r, jacobians));
+                bool finite = true;
+                for (const double v : r) finite = finite && std::isfinite(v);
+                CHECK_FALSE(finite);
+            }
+        }
+    }
+}
