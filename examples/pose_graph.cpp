@@ -1,28 +1,49 @@
-// pose_graph: a 3D pose graph solved with Ceres on quat's SE(3) (quat/interop/ceres.hpp). A vehicle
-// spirals over a sphere (300 poses) measuring its motion from pose to pose (odometry) and, once a
-// lap, its pose relative to the one a lap earlier (loop closures), all with noise
-// (tools/pose_graph_data.py). Chaining the odometry drifts; a least-squares fit of every
-// measurement on SE(3) pulls the trajectory back. Solved twice: with analytic Jacobians from
-// quat::se3 and with automatic differentiation (ceres::Jet through the same quat functions).
-// Run: example_pose_graph [output directory] [data directory]
-//   reads  <data>/pose_graph.g2o, <data>/pose_graph_truth.g2o (default data: examples/data)
-//   writes <output>/pose_graph.svg, <output>/pose_graph_optimized.g2o
+// pose_graph: a 3D pose graph from a g2o file solved with Ceres on quat's ready residuals
+// (quat/interop/ceres.hpp's relative_pose_cost, lie/relative_pose.hpp's errors). Every edge
+// measured the pose of one vertex seen from another; the solve starts from the file's vertex
+// estimates, holds the first pose (the lowest id) fixed and fits all edges, once per residual form:
+//   so3xr3: Ceres's pose_graph_3d error (R_a^T (p_b - p_a) - p_ab, 2 vec(q_ab (q_a^-1 q_b)^-1));
+//   se3:    the SE(3) log, log(Z^-1 A^-1 B).
+// Each with quat's analytic Jacobians and, for comparison, with ceres::Jet autodiff of the same
+// quat function. Solver options are those of Ceres's pose_graph_3d: SPARSE_NORMAL_CHOLESKY, at
+// most 200 iterations, default tolerances, one thread.
+//
+// Run: example_pose_graph <output directory> <file.g2o> [options]
+//   --residual so3xr3|se3|both   which error to minimize (default both)
+//   --weight lower|upper         the information's square root: lower = the Cholesky factor L
+//                                (information = L L^T), as Ceres's pose_graph_3d weighs (default);
+//                                upper = L^T, for which |L^T e|^2 = e^T information e
+//   --manifold split|pose        split: ceres::QuaternionManifold x EuclideanManifold<3>, Ceres's
+//                                parameterization (default); pose: quat's pose_manifold (SE(3))
+//   --start file|odometry        the initial poses: the file's vertex estimates (default), or the
+//                                first pose with the edges i -> i + 1 chained (a harder start)
+//   --perturb SIGMA              turn every initial pose but the first by a random rotation
+//                                vector, each component Gaussian with SIGMA radians (seeded: the
+//                                same turns on every run), to probe where each residual converges
+//   --no-autodiff                skip the Jet variants
+//   --expect-so3xr3 COST         check the so3xr3 final cost against COST (1e-5 relative)
+// Writes <output>/pose_graph.svg (top view, the data set's name in the title) and
+// <output>/pose_graph_optimized.g2o (the so3xr3 solution, or se3's if only it ran).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <ceres/autodiff_cost_function.h>
+#include <ceres/manifold.h>
 #include <ceres/problem.h>
-#include <ceres/sized_cost_function.h>
+#include <ceres/product_manifold.h>
 #include <ceres/solver.h>
 #include <quat/interop/ceres.hpp>
-#include <quat/lie/se3.hpp>
+#include <quat/lie/relative_pose.hpp>
 #include <quat/quat.hpp>
 
 #include "check.hpp"
@@ -32,24 +53,21 @@ using namespace quat;
 
 namespace {
 
-/// One measurement: the pose of j seen from i, z = X_i^-1 X_j, with the information matrix (inverse
-/// covariance) of the error log(z^-1 X_i^-1 X_j), a twist, linear part first. That is how
-/// tools/pose_graph_data.py writes it and how Ceres's pose_graph_3d example reads g2o files; g2o's
-/// own EDGE_SE3:QUAT weighs the quaternion's vector part (half the rotation vector) instead, so
-/// its rotation block is 4 times this one.
+/// One EDGE_SE3:QUAT: the pose of vertex j seen from vertex i, with the information matrix of the
+/// error, ordered (translation, rotation).
 struct edge {
     int i, j;
-    dual_quaternion<double> z;
+    dual_quaternion<double> measured;
     matrix6<double> information;
 };
 
 struct graph {
-    std::map<int, dual_quaternion<double>> vertices;
+    std::map<int, dual_quaternion<double>> vertices;  // by id: begin() is the pose held fixed
     std::vector<edge> edges;
 };
 
 /// g2o writes x, y, z, qx, qy, qz, qw: the quaternion's scalar LAST. Reads those seven numbers as
-/// a unit dual quaternion (normalized: the file keeps 12 digits).
+/// a unit dual quaternion (normalized, as Ceres's reader does: the file keeps few digits).
 dual_quaternion<double> read_g2o_pose(std::istream& in) {
     double t[3], q[4];
     in >> t[0] >> t[1] >> t[2] >> q[0] >> q[1] >> q[2] >> q[3];
@@ -57,17 +75,9 @@ dual_quaternion<double> read_g2o_pose(std::istream& in) {
                               vec3<double>{t[0], t[1], t[2]});
 }
 
-void write_g2o_pose(std::ostream& out, const dual_quaternion<double>& x) {
-    const quaternion<double> q = x.real;
-    const vec3<double> t = translation_of(x);
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "%.9f %.9f %.9f %.12f %.12f %.12f %.12f", t.x, t.y, t.z,
-                  q.x, q.y, q.z, q.w);
-    out << buffer;
-}
-
-/// Reads VERTEX_SE3:QUAT and EDGE_SE3:QUAT lines (others are skipped); false if the file cannot be
-/// read or a line is malformed.
+/// Reads VERTEX_SE3:QUAT and EDGE_SE3:QUAT lines (others are skipped): the information's upper
+/// triangle, 21 numbers row by row. False if the file cannot be read, a line is malformed, or an
+/// edge names a vertex the file does not have.
 bool read_g2o(const std::string& path, graph& g) {
     std::ifstream file(path);
     if (!file) return false;
@@ -83,7 +93,7 @@ bool read_g2o(const std::string& path, graph& g) {
         } else if (tag == "EDGE_SE3:QUAT") {
             edge e{};
             in >> e.i >> e.j;
-            e.z = read_g2o_pose(in);
+            e.measured = read_g2o_pose(in);
             for (int r = 0; r < 6; ++r)
                 for (int c = r; c < 6; ++c) {
                     in >> e.information(r, c);
@@ -93,144 +103,121 @@ bool read_g2o(const std::string& path, graph& g) {
         }
         if (!in) return false;
     }
-    return true;
+    for (const edge& e : g.edges)
+        if (g.vertices.count(e.i) == 0 || g.vertices.count(e.j) == 0) return false;
+    return !g.vertices.empty();
 }
 
-bool write_g2o(const std::string& path, const graph& g) {
+bool write_g2o(const std::string& path, const std::map<int, dual_quaternion<double>>& poses) {
     std::ofstream out(path);
-    out.precision(10);
-    for (const auto& [id, x] : g.vertices) {
-        out << "VERTEX_SE3:QUAT " << id << ' ';
-        write_g2o_pose(out, x);
-        out << '\n';
-    }
-    for (const edge& e : g.edges) {
-        out << "EDGE_SE3:QUAT " << e.i << ' ' << e.j << ' ';
-        write_g2o_pose(out, e.z);
-        for (int r = 0; r < 6; ++r)
-            for (int c = r; c < 6; ++c) out << ' ' << e.information(r, c);
-        out << '\n';
+    for (const auto& [id, x] : poses) {
+        const vec3<double> t = translation_of(x);
+        char buffer[200];
+        std::snprintf(buffer, sizeof buffer,
+                      "VERTEX_SE3:QUAT %d %.9f %.9f %.9f %.12f %.12f %.12f %.12f\n", id, t.x, t.y,
+                      t.z, x.real.x, x.real.y, x.real.z, x.real.w);
+        out << buffer;
     }
     return static_cast<bool>(out);
 }
 
-/// The upper-triangular U with U^T U = a (a symmetric positive definite): the residual U e has
-/// the squared norm e^T a e.
-matrix6<double> square_root(const matrix6<double>& a) {
-    matrix6<double> u = matrix6<double>::zero();
-    for (int r = 0; r < 6; ++r) {
-        double d = a(r, r);
-        for (int k = 0; k < r; ++k) d -= u(k, r) * u(k, r);
-        u(r, r) = std::sqrt(d);
-        for (int c = r + 1; c < 6; ++c) {
-            double s = a(r, c);
-            for (int k = 0; k < r; ++k) s -= u(k, r) * u(k, c);
-            u(r, c) = s / u(r, r);
-        }
+/// Replaces every vertex after the first by the previous one times the measurement of the edge
+/// from it (ids in order): the odometry chained. False if such an edge is missing.
+bool chain_odometry(graph& g) {
+    std::map<int, const edge*> from;
+    for (const edge& e : g.edges)
+        if (std::next(g.vertices.find(e.i)) == g.vertices.find(e.j)) from[e.i] = &e;
+    for (auto it = std::next(g.vertices.begin()); it != g.vertices.end(); ++it) {
+        const auto previous = std::prev(it);
+        if (from.count(previous->first) == 0) return false;
+        it->second = normalize(previous->second * from.at(previous->first)->measured);
     }
-    return u;
+    return true;
 }
 
-/// (a) Analytic: r = U log(z^-1 X_i^-1 X_j) with its 6x6 tangent Jacobians from quat::se3, turned
-/// into the 6x7 ambient ones Ceres asks for by pose_manifold's MinusJacobian (Ceres multiplies them
-/// by PlusJacobian, and MinusJacobian * PlusJacobian = I).
-class relative_pose_cost final : public ceres::SizedCostFunction<6, 7, 7> {
-public:
-    explicit relative_pose_cost(const edge& e)
-        : z_inverse_(inverse(e.z)), sqrt_information_(square_root(e.information)) {}
-
-    bool Evaluate(double const* const* parameters, double* residuals,
-                  double** jacobians) const override {
-        const dual_quaternion<double> xi = pose_from_parameters(parameters[0]);
-        const dual_quaternion<double> xj = pose_from_parameters(parameters[1]);
-        // Jacobians only when Ceres asks (it evaluates residuals alone to try a step).
-        const bool derive = jacobians != nullptr;
-        matrix6<double> d_xi, d_xj, d_log;
-        const dual_quaternion<double> seen =
-            se3::between(xi, xj, derive ? &d_xi : nullptr, derive ? &d_xj : nullptr);
-        // z^-1 seen: its right Jacobian with respect to seen is the identity.
-        const se3::twist<double> error = se3::log(z_inverse_ * seen, derive ? &d_log : nullptr);
-        const matrix<double, 6, 1> r = sqrt_information_ * se3::to_vector(error);
-        for (int k = 0; k < 6; ++k) residuals[k] = r(k, 0);
-        if (!derive) return true;
-        const matrix6<double> weighted_log = sqrt_information_ * d_log;
-        const matrix6<double>* tangent[2] = {&d_xi, &d_xj};
-        for (int b = 0; b < 2; ++b) {
-            if (jacobians[b] == nullptr) continue;
-            const matrix6<double> j = weighted_log * *tangent[b];
-            double minus[6 * 7];
-            (void)manifold_.MinusJacobian(parameters[b], minus);
-            for (int row = 0; row < 6; ++row)
-                for (int col = 0; col < 7; ++col) {
-                    double sum = 0;
-                    for (int k = 0; k < 6; ++k) sum += j(row, k) * minus[k * 7 + col];
-                    jacobians[b][row * 7 + col] = sum;
-                }
-        }
-        return true;
-    }
-
-private:
-    dual_quaternion<double> z_inverse_;
-    matrix6<double> sqrt_information_;
-    pose_manifold manifold_;
+struct options {
+    std::string output, input;
+    bool so3xr3 = true, se3 = true, upper = false, pose_manifold = false, autodiff = true,
+         odometry = false;
+    double perturb = 0;
+    double expect_so3xr3 = 0;  // 0: no check
 };
 
-/// (b) Automatic differentiation: the same residual, templated on the scalar, through the same quat
-/// functions; Ceres evaluates it with ceres::Jet.
-struct relative_pose_functor {
-    dual_quaternion<double> z_inverse;
+/// The Jet variant: the same quat function, differentiated by Ceres.
+struct autodiff_residual {
+    relative_pose_form form;
+    dual_quaternion<double> measured;
     matrix6<double> sqrt_information;
 
     template <class T>
-    bool operator()(const T* pose_i, const T* pose_j, T* residuals) const {
-        const dual_quaternion<T> seen =
-            se3::between(pose_from_parameters(pose_i), pose_from_parameters(pose_j));
-        const se3::twist<T> error = se3::log(dual_quaternion<T>(z_inverse) * seen);
-        const matrix<T, 6, 1> e = se3::to_vector(error);
-        for (int row = 0; row < 6; ++row) {
+    bool operator()(const T* a, const T* b, T* residuals) const {
+        const dual_quaternion<T> pa = pose_from_parameters(a), pb = pose_from_parameters(b);
+        const dual_quaternion<T> z(measured);
+        const matrix<T, 6, 1> e = form == relative_pose_form::so3xr3
+                                      ? so3xr3::relative_pose_error(pa, pb, z)
+                                      : se3::relative_pose_error(pa, pb, z);
+        for (int r = 0; r < 6; ++r) {
             T sum = T(0);
-            for (int k = row; k < 6; ++k) sum += sqrt_information(row, k) * e(k, 0);
-            residuals[row] = sum;
+            for (int c = 0; c < 6; ++c) sum += sqrt_information(r, c) * e(c, 0);
+            residuals[r] = sum;
         }
         return true;
     }
 };
 
 struct solve_result {
-    std::vector<double> poses;  // 7 numbers a pose
-    double initial_cost, final_cost, seconds, evaluation_seconds;
-    int iterations;
+    std::vector<double> poses;  // 7 numbers a pose, in the order of the vertex ids
+    double initial_cost = 0, final_cost = 0, seconds = 0, evaluation_seconds = 0;
+    int iterations = 0;
     std::string termination;
 };
 
-solve_result solve(const graph& g, const std::vector<double>& initial, bool analytic) {
-    solve_result result{initial, 0, 0, 0, 0, 0, ""};
+matrix6<double> weight_of(const edge& e, bool upper) {
+    const std::optional<matrix6<double>> u = information_square_root(e.information);
+    if (!u) {
+        std::fprintf(stderr,
+                     "an edge %d -> %d has an information matrix that is not positive definite\n",
+                     e.i, e.j);
+        std::exit(1);
+    }
+    return upper ? *u : transpose(*u);
+}
+
+solve_result solve(const graph& g, const options& o, relative_pose_form form, bool analytic) {
+    solve_result result;
+    std::map<int, std::size_t> index;
+    for (const auto& [id, x] : g.vertices) {
+        index[id] = result.poses.size();
+        result.poses.resize(result.poses.size() + 7);
+        write_parameters(x, &result.poses[index[id]]);
+    }
     ceres::Problem::Options problem_options;
     problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(problem_options);
-    pose_manifold manifold;
     for (const edge& e : g.edges) {
+        const matrix6<double> s = weight_of(e, o.upper);
         ceres::CostFunction* cost =
-            analytic ? static_cast<ceres::CostFunction*>(new relative_pose_cost(e))
-                     : new ceres::AutoDiffCostFunction<relative_pose_functor, 6, 7, 7>(
-                           new relative_pose_functor{inverse(e.z), square_root(e.information)});
-        problem.AddResidualBlock(cost, nullptr, &result.poses[static_cast<std::size_t>(7 * e.i)],
-                                 &result.poses[static_cast<std::size_t>(7 * e.j)]);
+            analytic
+                ? static_cast<ceres::CostFunction*>(new relative_pose_cost(form, e.measured, s))
+                : new ceres::AutoDiffCostFunction<autodiff_residual, 6, 7, 7>(
+                      new autodiff_residual{form, e.measured, s});
+        problem.AddResidualBlock(cost, nullptr, &result.poses[index.at(e.i)],
+                                 &result.poses[index.at(e.j)]);
     }
-    const int count = static_cast<int>(initial.size() / 7);
-    for (int k = 0; k < count; ++k)
-        problem.SetManifold(&result.poses[static_cast<std::size_t>(7 * k)], &manifold);
-    // The first pose anchors the graph (the measurements fix only relative poses).
-    problem.SetParameterBlockConstant(result.poses.data());
+    pose_manifold pose;
+    ceres::ProductManifold<ceres::QuaternionManifold, ceres::EuclideanManifold<3>> split;
+    ceres::Manifold* manifold = o.pose_manifold ? static_cast<ceres::Manifold*>(&pose) : &split;
+    for (std::size_t k = 0; k < result.poses.size(); k += 7)
+        if (problem.HasParameterBlock(&result.poses[k]))
+            problem.SetManifold(&result.poses[k], manifold);
+    // The measurements fix only relative poses: the first pose anchors the graph.
+    if (problem.HasParameterBlock(result.poses.data()))
+        problem.SetParameterBlockConstant(result.poses.data());
 
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-    options.num_threads = 1;  // deterministic: the same steps on every run
-    options.max_num_iterations = 100;
-    options.function_tolerance = 1e-12;
-    options.gradient_tolerance = 1e-12;
-    options.parameter_tolerance = 1e-12;
+    options.max_num_iterations = 200;
+    options.num_threads = 1;
     ceres::Solver::Summary summary;
     const auto start = std::chrono::steady_clock::now();
     ceres::Solve(options, &problem, &summary);
@@ -245,192 +232,210 @@ solve_result solve(const graph& g, const std::vector<double>& initial, bool anal
     return result;
 }
 
-dual_quaternion<double> pose_at(const std::vector<double>& poses, int k) {
-    return pose_from_parameters(&poses[static_cast<std::size_t>(7 * k)]);
+/// The cost (1/2 the sum of squared weighted residuals) of the given form at the poses.
+double cost_at(const graph& g, const options& o, relative_pose_form form,
+               const std::vector<double>& poses) {
+    std::map<int, std::size_t> index;
+    std::size_t next = 0;
+    for (const auto& entry : g.vertices) {
+        index[entry.first] = next;
+        next += 7;
+    }
+    double cost = 0;
+    for (const edge& e : g.edges) {
+        const relative_pose_cost c(form, e.measured, weight_of(e, o.upper));
+        const double* parameters[2] = {&poses[index.at(e.i)], &poses[index.at(e.j)]};
+        double r[6];
+        (void)c.Evaluate(parameters, r, nullptr);
+        for (const double v : r) cost += v * v / 2;
+    }
+    return cost;
 }
 
-struct trajectory_error {
-    double position_rms, rotation_rms_degrees;
-};
-
-/// RMS errors against the truth after moving the estimate so that its first pose is the true one.
-trajectory_error error_of(const std::vector<double>& poses,
-                          const std::vector<dual_quaternion<double>>& truth) {
-    const dual_quaternion<double> align = truth[0] * inverse(pose_at(poses, 0));
-    double p = 0, r = 0;
-    for (std::size_t k = 0; k < truth.size(); ++k) {
-        const dual_quaternion<double> x = align * pose_at(poses, static_cast<int>(k));
-        p += squared_norm(translation_of(x) - translation_of(truth[k]));
-        const double a = angle_between(x.real, truth[k].real);
-        r += a * a;
+bool parse(int argc, char** argv, options& o) {
+    if (argc < 3) return false;
+    o.output = argv[1];
+    o.input = argv[2];
+    for (int k = 3; k < argc; ++k) {
+        const std::string a = argv[k];
+        const std::string next = k + 1 < argc ? argv[k + 1] : "";
+        if (a == "--residual" && (next == "so3xr3" || next == "se3" || next == "both")) {
+            o.so3xr3 = next != "se3";
+            o.se3 = next != "so3xr3";
+            ++k;
+        } else if (a == "--weight" && (next == "lower" || next == "upper")) {
+            o.upper = next == "upper";
+            ++k;
+        } else if (a == "--manifold" && (next == "split" || next == "pose")) {
+            o.pose_manifold = next == "pose";
+            ++k;
+        } else if (a == "--start" && (next == "file" || next == "odometry")) {
+            o.odometry = next == "odometry";
+            ++k;
+        } else if (a == "--perturb" && !next.empty()) {
+            o.perturb = std::atof(next.c_str());
+            ++k;
+        } else if (a == "--no-autodiff") {
+            o.autodiff = false;
+        } else if (a == "--expect-so3xr3" && !next.empty()) {
+            o.expect_so3xr3 = std::atof(next.c_str());
+            ++k;
+        } else {
+            return false;
+        }
     }
-    const double n = static_cast<double>(truth.size());
-    return {std::sqrt(p / n), std::sqrt(r / n) * 180 / numbers::pi};
+    return true;
+}
+
+std::string file_name(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::map<int, dual_quaternion<double>> poses_of(const graph& g, const std::vector<double>& p) {
+    std::map<int, dual_quaternion<double>> out;
+    std::size_t k = 0;
+    for (const auto& entry : g.vertices) {
+        out[entry.first] = pose_from_parameters(&p[k]);
+        k += 7;
+    }
+    return out;
+}
+
+/// Top view (x, y) of the initial and the optimized poses, every edge a line.
+bool draw(const std::string& path, const std::string& title, const graph& g,
+          const std::map<int, dual_quaternion<double>>& optimized, const std::string& caption) {
+    svg::document doc(960, 520);
+    doc.text({480, 28}, title, 17, "middle", "#222", true);
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (const auto* poses : {&g.vertices, &optimized})
+        for (const auto& entry : *poses) {
+            const vec3<double> p = translation_of(entry.second);
+            lo_x = std::min(lo_x, p.x);
+            hi_x = std::max(hi_x, p.x);
+            lo_y = std::min(lo_y, p.y);
+            hi_y = std::max(hi_y, p.y);
+        }
+    const double scale =
+        std::min(440.0 / std::max(hi_x - lo_x, 1e-9), 400.0 / std::max(hi_y - lo_y, 1e-9));
+    const auto panel = [&](double left, const std::string& name,
+                           const std::map<int, dual_quaternion<double>>& poses,
+                           const char* colour) {
+        const auto map = [&](int id) {
+            const vec3<double> p = translation_of(poses.at(id));
+            return svg::point{left + (p.x - lo_x) * scale, 475 - (p.y - lo_y) * scale};
+        };
+        doc.text({left + 220, 56}, name, 14, "middle", "#222", true);
+        for (const edge& e : g.edges) doc.line(map(e.i), map(e.j), {colour, 0.6, "none", 0.6});
+    };
+    panel(30, "initial: the file's vertex estimates", g.vertices, "#d62728");
+    panel(500, "optimized", optimized, "#1f77b4");
+    doc.text({480, 508}, caption, 12, "middle", "#444");
+    return doc.save(path);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     using example::expect;
-    const std::string out_dir = argc > 1 ? std::string(argv[1]) : std::string(".");
-    const std::string data_dir = argc > 2 ? std::string(argv[2]) : std::string("examples/data");
-    std::printf("pose_graph: 3D pose-graph optimization with Ceres on quat's SE(3)\n");
-
-    graph g, truth_graph;
-    if (!read_g2o(data_dir + "/pose_graph.g2o", g) ||
-        !read_g2o(data_dir + "/pose_graph_truth.g2o", truth_graph)) {
-        std::printf("  cannot read %s/pose_graph.g2o and pose_graph_truth.g2o\n", data_dir.c_str());
+    options o;
+    if (!parse(argc, argv, o)) {
+        std::fprintf(stderr,
+                     "usage: example_pose_graph <output directory> <file.g2o> [--residual "
+                     "so3xr3|se3|both] [--weight lower|upper] [--manifold split|pose] "
+                     "[--no-autodiff] [--expect-so3xr3 COST]\n");
+        return 2;
+    }
+    graph g;
+    if (!read_g2o(o.input, g)) {
+        std::fprintf(stderr, "cannot read %s as a g2o 3D pose graph\n", o.input.c_str());
         return 1;
     }
-    const int count = static_cast<int>(g.vertices.size());
-    std::vector<dual_quaternion<double>> truth;
-    for (const auto& [id, x] : truth_graph.vertices) truth.push_back(x);
-    int odometry = 0;
-    for (const edge& e : g.edges) odometry += e.j == e.i + 1 ? 1 : 0;
-    std::printf("  %d poses, %d odometry edges, %d loop closures\n", count, odometry,
-                static_cast<int>(g.edges.size()) - odometry);
-    expect(count == static_cast<int>(truth.size()) && count > 1 && g.vertices.begin()->first == 0 &&
-               g.vertices.rbegin()->first == count - 1,
-           "poses 0 .. n-1, as many as the true ones");
-
-    // The initial estimate: the first pose, then the odometry chained, X_(i+1) = X_i z.
-    std::vector<dual_quaternion<double>> chained(static_cast<std::size_t>(count));
-    chained[0] = g.vertices.at(0);
-    std::map<int, const edge*> odometry_from;
-    for (const edge& e : g.edges)
-        if (e.j == e.i + 1) odometry_from[e.i] = &e;
-    for (int k = 1; k < count; ++k)
-        chained[static_cast<std::size_t>(k)] =
-            normalize(chained[static_cast<std::size_t>(k - 1)] * odometry_from.at(k - 1)->z);
-    std::vector<double> initial(static_cast<std::size_t>(7 * count));
-    for (int k = 0; k < count; ++k)
-        write_parameters(chained[static_cast<std::size_t>(k)],
-                         &initial[static_cast<std::size_t>(7 * k)]);
-
-    const trajectory_error before = error_of(initial, truth);
-    const solve_result analytic = solve(g, initial, true);
-    const solve_result autodiff = solve(g, initial, false);
-    const trajectory_error after_analytic = error_of(analytic.poses, truth);
-    const trajectory_error after_autodiff = error_of(autodiff.poses, truth);
-
-    // Times vary from run to run (and are not drawn): the whole solve, and the part spent
-    // evaluating residuals and Jacobians, where the two variants differ.
-    std::printf("  %-22s %11s %11s %10s %11s %5s %8s %8s\n", "", "cost before", "cost after",
-                "RMS pos m", "RMS rot deg", "iter", "solve s", "eval s");
-    std::printf("  %-22s %11s %11s %10.4f %11.4f\n", "odometry chained", "", "",
-                before.position_rms, before.rotation_rms_degrees);
-    const auto row = [](const char* name, const solve_result& s, const trajectory_error& e) {
-        std::printf("  %-22s %11.1f %11.3f %10.4f %11.4f %5d %8.3f %8.3f  %s\n", name,
-                    s.initial_cost, s.final_cost, e.position_rms, e.rotation_rms_degrees,
-                    s.iterations, s.seconds, s.evaluation_seconds, s.termination.c_str());
-    };
-    row("analytic Jacobians", analytic, after_analytic);
-    row("autodiff (ceres::Jet)", autodiff, after_autodiff);
-
-    // The two solutions, pose by pose.
-    double position_gap = 0, rotation_gap = 0;
-    for (int k = 0; k < count; ++k) {
-        const dual_quaternion<double> a = pose_at(analytic.poses, k),
-                                      b = pose_at(autodiff.poses, k);
-        position_gap = std::max(position_gap, norm(translation_of(a) - translation_of(b)));
-        rotation_gap = std::max(rotation_gap, angle_between(a.real, b.real));
+    if (o.odometry && !chain_odometry(g)) {
+        std::fprintf(stderr, "%s: no edge i -> i + 1 for every pose to chain\n", o.input.c_str());
+        return 1;
     }
-    std::printf("  analytic vs autodiff: largest difference %.1e m, %.1e rad\n", position_gap,
-                rotation_gap);
-
-    expect(analytic.final_cost < analytic.initial_cost / 100,
-           "the solve lowers the cost a hundredfold at least");
-    expect(std::abs(analytic.initial_cost - autodiff.initial_cost) <= 1e-12 * analytic.initial_cost,
-           "both variants evaluate the same initial cost");
-    expect(std::abs(analytic.final_cost - autodiff.final_cost) <= 1e-9 * analytic.final_cost,
-           "both variants reach the same final cost");
-    expect(position_gap < 1e-9 && rotation_gap < 1e-10,
-           "both variants reach the same poses (within 1e-9 m and 1e-10 rad)");
-    expect(after_analytic.position_rms < before.position_rms / 10,
-           "the optimized trajectory is ten times closer to the truth than the chained odometry");
-    expect(after_analytic.rotation_rms_degrees < before.rotation_rms_degrees / 4,
-           "and its rotations four times closer");
-    // The noise the data were drawn with, seen in the costs (chi-square statistics): at the true
-    // poses the cost is about half the number of residuals, 6 * edges / 2; at the optimum, about
-    // half the residuals less the unknowns, 6 * (edges - (poses - 1)) / 2.
-    std::vector<double> true_parameters(static_cast<std::size_t>(7 * count));
-    for (int k = 0; k < count; ++k)
-        write_parameters(truth[static_cast<std::size_t>(k)],
-                         &true_parameters[static_cast<std::size_t>(7 * k)]);
-    double true_cost = 0;
-    for (const edge& e : g.edges) {
-        double r[6];
-        (void)relative_pose_functor{inverse(e.z), square_root(e.information)}(
-            &true_parameters[static_cast<std::size_t>(7 * e.i)],
-            &true_parameters[static_cast<std::size_t>(7 * e.j)], r);
-        for (const double v : r) true_cost += v * v / 2;
-    }
-    const double edges = static_cast<double>(g.edges.size());
-    const double expected_true = 3 * edges, expected_final = 3 * (edges - (count - 1));
-    std::printf(
-        "  cost at the true poses %.1f (expected about %.0f), at the optimum %.1f "
-        "(expected about %.0f)\n",
-        true_cost, expected_true, analytic.final_cost, expected_final);
-    expect(std::abs(true_cost - expected_true) < 0.1 * expected_true,
-           "the cost at the true poses is that of the stated noise (within 10%)");
-    expect(std::abs(analytic.final_cost - expected_final) < 0.25 * expected_final,
-           "the final cost is that of the stated noise, less the unknowns fitted (within 25%)");
-    expect(analytic.final_cost < true_cost, "the optimum fits the data better than the truth does");
-
-    graph optimized = g;
-    for (int k = 0; k < count; ++k) optimized.vertices[k] = pose_at(analytic.poses, k);
-    expect(write_g2o(out_dir + "/pose_graph_optimized.g2o", optimized),
-           "pose_graph_optimized.g2o written");
-
-    // Top view (x, y): truth, chained odometry, optimized.
-    svg::document doc(960, 520);
-    doc.text({480, 28}, "Pose graph on SE(3): 300 poses, 299 odometry edges, 120 loop closures", 17,
-             "middle", "#222", true);
-    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
-    const auto extend = [&](const vec3<double>& p) {
-        lo_x = std::min(lo_x, p.x);
-        hi_x = std::max(hi_x, p.x);
-        lo_y = std::min(lo_y, p.y);
-        hi_y = std::max(hi_y, p.y);
-    };
-    for (int k = 0; k < count; ++k) {
-        extend(translation_of(truth[static_cast<std::size_t>(k)]));
-        extend(translation_of(chained[static_cast<std::size_t>(k)]));
-    }
-    const double scale = std::min(440.0 / (hi_x - lo_x), 400.0 / (hi_y - lo_y));
-    const auto panel = [&](double left, const std::string& title,
-                           const std::vector<dual_quaternion<double>>& estimate,
-                           const svg::style& look) {
-        const auto map = [&](const vec3<double>& p) {
-            return svg::point{left + (p.x - lo_x) * scale, 475 - (p.y - lo_y) * scale};
-        };
-        std::vector<svg::point> t, e;
-        for (int k = 0; k < count; ++k) {
-            t.push_back(map(translation_of(truth[static_cast<std::size_t>(k)])));
-            e.push_back(map(translation_of(estimate[static_cast<std::size_t>(k)])));
+    if (o.perturb > 0) {
+        std::mt19937_64 engine(20190501);
+        std::normal_distribution<double> gauss(0.0, o.perturb);
+        for (auto it = std::next(g.vertices.begin()); it != g.vertices.end(); ++it) {
+            const double x = gauss(engine), y = gauss(engine), z = gauss(engine);
+            it->second =
+                to_dual_quaternion(it->second.real * from_rotation_vector(vec3<double>{x, y, z}),
+                                   translation_of(it->second));
         }
-        doc.text({left + 220, 56}, title, 14, "middle", "#222", true);
-        doc.polyline(t, {"#999", 3.0});
-        // The loop closures, between the estimated poses they join.
-        for (const edge& c : g.edges)
-            if (c.j != c.i + 1)
-                doc.line(e[static_cast<std::size_t>(c.i)], e[static_cast<std::size_t>(c.j)],
-                         {"#2ca02c", 0.8, "none", 0.7});
-        doc.polyline(e, look);
+    }
+    const std::string name = file_name(o.input);
+    std::printf("pose_graph: %s, %d poses, %d edges; start %s, weight %s, manifold %s\n",
+                name.c_str(), static_cast<int>(g.vertices.size()), static_cast<int>(g.edges.size()),
+                o.odometry ? "odometry" : "file",
+                o.upper ? "upper (L^T)" : "lower (L, as Ceres's pose_graph_3d)",
+                o.pose_manifold ? "pose_manifold" : "QuaternionManifold x R^3");
+    std::printf("  %-26s %13s %13s %5s %8s %8s  %s\n", "", "initial cost", "final cost", "iter",
+                "solve s", "eval s", "termination");
+    const auto row = [](const char* label, const solve_result& s) {
+        std::printf("  %-26s %13.6f %13.7f %5d %8.3f %8.3f  %s\n", label, s.initial_cost,
+                    s.final_cost, s.iterations, s.seconds, s.evaluation_seconds,
+                    s.termination.c_str());
     };
-    std::vector<dual_quaternion<double>> solved(static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k)
-        solved[static_cast<std::size_t>(k)] = pose_at(analytic.poses, k);
-    panel(30, "odometry chained (initial)", chained, {"#d62728", 1.2});
-    panel(500, "optimized (Ceres, pose_manifold)", solved, {"#1f77b4", 1.2});
-    char caption[200];
-    std::snprintf(caption, sizeof caption,
-                  "top view; grey: truth, green: loop closures. RMS position error %.2f m before, "
-                  "%.3f m after",
-                  before.position_rms, after_analytic.position_rms);
-    doc.text({480, 508}, caption, 12, "middle", "#444");
-    const std::string svg_path = out_dir + "/pose_graph.svg";
-    expect(doc.save(svg_path), "pose_graph.svg written");
-    std::printf("  wrote %s\n", svg_path.c_str());
+    std::map<relative_pose_form, solve_result> solved;
+    for (const relative_pose_form form : {relative_pose_form::so3xr3, relative_pose_form::se3}) {
+        const bool split = form == relative_pose_form::so3xr3;
+        if (split ? !o.so3xr3 : !o.se3) continue;
+        const solve_result analytic = solve(g, o, form, true);
+        row(split ? "so3xr3, analytic" : "se3 log, analytic", analytic);
+        expect(analytic.final_cost < analytic.initial_cost, "the solve lowers the cost");
+        if (o.autodiff) {
+            const solve_result jet = solve(g, o, form, false);
+            row(split ? "so3xr3, autodiff (Jet)" : "se3 log, autodiff (Jet)", jet);
+            expect(
+                std::abs(jet.initial_cost - analytic.initial_cost) <= 1e-12 * analytic.initial_cost,
+                "analytic and autodiff Jacobians: the same initial cost");
+            expect(std::abs(jet.final_cost - analytic.final_cost) <= 1e-7 * analytic.final_cost,
+                   "and the same final cost (1e-7 relative)");
+        }
+        solved[form] = analytic;
+    }
+    if (o.so3xr3 && o.expect_so3xr3 > 0) {
+        const double final_cost = solved[relative_pose_form::so3xr3].final_cost;
+        std::printf("  so3xr3 final cost %.7f, reference %.7f: relative difference %.1e\n",
+                    final_cost, o.expect_so3xr3,
+                    std::abs(final_cost - o.expect_so3xr3) / o.expect_so3xr3);
+        expect(std::abs(final_cost - o.expect_so3xr3) <= 1e-5 * o.expect_so3xr3,
+               "the so3xr3 final cost is the reference's (Ceres's pose_graph_3d), 1e-5 relative");
+    }
+    if (o.so3xr3 && o.se3) {
+        // The two minima: each solution under the other's cost, and how far apart the poses are.
+        const std::vector<double>& a = solved[relative_pose_form::so3xr3].poses;
+        const std::vector<double>& b = solved[relative_pose_form::se3].poses;
+        double position = 0, angle = 0;
+        for (std::size_t k = 0; k < a.size(); k += 7) {
+            const dual_quaternion<double> x = pose_from_parameters(&a[k]),
+                                          y = pose_from_parameters(&b[k]);
+            position = std::max(position, norm(translation_of(x) - translation_of(y)));
+            angle = std::max(angle, angle_between(x.real, y.real));
+        }
+        std::printf(
+            "  so3xr3 cost at the se3 solution %.7f; se3 cost at the so3xr3 solution %.7f\n",
+            cost_at(g, o, relative_pose_form::so3xr3, b),
+            cost_at(g, o, relative_pose_form::se3, a));
+        std::printf("  the two solutions differ by up to %.3g (position) and %.3g rad\n", position,
+                    angle);
+    }
+    const solve_result& shown =
+        o.so3xr3 ? solved[relative_pose_form::so3xr3] : solved[relative_pose_form::se3];
+    const std::map<int, dual_quaternion<double>> optimized = poses_of(g, shown.poses);
+    expect(write_g2o(o.output + "/pose_graph_optimized.g2o", optimized),
+           "pose_graph_optimized.g2o written");
+    char title[200], caption[200];
+    std::snprintf(title, sizeof title, "Pose graph %s: %d poses, %d edges", name.c_str(),
+                  static_cast<int>(g.vertices.size()), static_cast<int>(g.edges.size()));
+    std::snprintf(
+        caption, sizeof caption,
+        "top view; %s residual, cost %.1f from %.1f in %d iterations (Ceres, first pose fixed)",
+        o.so3xr3 ? "SO(3)xR3" : "SE(3) log", shown.final_cost, shown.initial_cost,
+        shown.iterations);
+    expect(draw(o.output + "/pose_graph.svg", title, g, optimized, caption),
+           "pose_graph.svg written");
     return example::failures() == 0 ? 0 : 1;
 }

@@ -1,10 +1,11 @@
-// Instantiates matrix.hpp, lie/so3.hpp, lie/se3.hpp and lie/geodesic_mean.hpp (every function with
-// its Jacobians requested, the means of rotations and of rigid motions with and without weights and
-// their try_ forms) for float, double and long double under the strict warning flags. Compiled, not
-// run, by the strict_warnings CTest test.
+// Instantiates matrix.hpp, lie/so3.hpp, lie/se3.hpp, lie/geodesic_mean.hpp and
+// lie/relative_pose.hpp (every function with its Jacobians requested, the means of rotations and of
+// rigid motions with and without weights and their try_ forms) for float, double and long double
+// under the strict warning flags. Compiled, not run, by the strict_warnings CTest test.
 #include <vector>
 
 #include <quat/lie/geodesic_mean.hpp>
+#include <quat/lie/relative_pose.hpp>
 #include <quat/lie/se3.hpp>
 #include <quat/lie/so3.hpp>
 #include <quat/matrix.hpp>
@@ -45,6 +46,8 @@ T lie() {
     sum += geodesic_mean(motions).real.w + geodesic_mean(motions, weights).dual.x +
            try_geodesic_mean(motions).value_or(m).real.y +
            try_geodesic_mean(motions, weights).value_or(m).dual.z;
+    sum += so3xr3::relative_pose_error(m, n, m, &c, &d)(3, 0) +
+           se3::relative_pose_error(m, n, n, &c, &d)(4, 0);
     return sum + c(0, 0);
 }
 

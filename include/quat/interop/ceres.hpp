@@ -1,6 +1,8 @@
 // Opt-in Ceres Solver support (not included by quat.hpp; needs Ceres's headers and library): two
-// ceres::Manifold classes with analytic Jacobians, and functions that read a cost functor's
-// parameter blocks (`const T*`, T double or ceres::Jet) as quat types and write quat types back.
+// ceres::Manifold classes with analytic Jacobians, a pose-graph edge as a ceres::CostFunction
+// (relative_pose_cost, lie/relative_pose.hpp's errors with analytic Jacobians), and functions that
+// read a cost functor's parameter blocks (`const T*`, T double or ceres::Jet) as quat types and
+// write quat types back.
 //
 // Parameter-block layouts (scalar FIRST, quat's order, the memory layout of
 // ceres::QuaternionManifold
@@ -23,11 +25,14 @@
 #define QUAT_INTEROP_CERES_HPP_INCLUDED
 
 #include <cmath>
+#include <optional>
 
 #include <ceres/manifold.h>
+#include <ceres/sized_cost_function.h>
 
 #include "../constants.hpp"
 #include "../conversions.hpp"
+#include "../lie/relative_pose.hpp"
 #include "../lie/se3.hpp"
 #include "../lie/so3.hpp"
 #include "../quaternion.hpp"
@@ -251,6 +256,110 @@ public:
             for (int col = 0; col < 4; ++col) jacobian[(3 + row) * 7 + col] = m[row * 4 + col];
         return true;
     }
+};
+/// Which relative-pose error a relative_pose_cost evaluates (lie/relative_pose.hpp).
+enum class relative_pose_form {
+    so3xr3,  ///< so3xr3::relative_pose_error, Ceres's pose_graph_3d: (delta p, 2 vec(delta q))
+    se3,     ///< se3::relative_pose_error: log(Z^-1 A^-1 B)
+};
+
+/// The upper-triangular U with U^T U = information, so that |U e|^2 = e^T information e: the
+/// square root that weighs a residual e by the information (inverse covariance). Only the upper
+/// triangle of information is read. Empty when a pivot is not positive and finite (information not
+/// positive definite, or NaN). Ceres's pose_graph_3d example weighs by L = transpose(U), the lower
+/// Cholesky factor (information = L L^T): |L e|^2 = e^T L^T L e, which equals e^T information e
+/// only where the information is diagonal.
+[[nodiscard]] inline std::optional<matrix6<double>> information_square_root(
+    const matrix6<double>& information) noexcept {
+    matrix6<double> u = matrix6<double>::zero();
+    for (int r = 0; r < 6; ++r) {
+        double pivot = information(r, r);
+        for (int k = 0; k < r; ++k) pivot -= u(k, r) * u(k, r);
+        if (!(pivot > 0) || !std::isfinite(pivot)) return std::nullopt;
+        u(r, r) = std::sqrt(pivot);
+        for (int c = r + 1; c < 6; ++c) {
+            double s = information(r, c);
+            for (int k = 0; k < r; ++k) s -= u(k, r) * u(k, c);
+            u(r, c) = s / u(r, r);
+        }
+    }
+    return u;
+}
+
+/// A pose-graph edge as a ceres::CostFunction on two pose blocks (w, x, y, z, tx, ty, tz each, the
+/// layout of pose_manifold): the residual S e(A, B) for the relative-pose error e of the chosen
+/// form, with the measured pose Z of B seen from A and S the square root of the information
+/// (information_square_root, or any 6x6 weight). The Jacobians are analytic: S times the tangent
+/// Jacobians of lie/relative_pose.hpp times pose_manifold's MinusJacobian, 6x7 with respect to the
+/// ambient numbers. They are exact along every change that keeps the quaternion unit and zero along
+/// the quaternion itself, so they serve pose_manifold and any other manifold on these 7 numbers
+/// that keeps the quaternion unit (ceres::ProductManifold of ceres::QuaternionManifold and
+/// ceres::EuclideanManifold<3>, Ceres's own split parameterization). Precondition: unit
+/// quaternions in the blocks and in Z; a NaN or infinite number gives a non-finite residual, which
+/// Ceres rejects as a failed evaluation.
+class relative_pose_cost final : public ::ceres::SizedCostFunction<6, 7, 7> {
+public:
+    relative_pose_cost(relative_pose_form form, const dual_quaternion<double>& measured,
+                       const matrix6<double>& sqrt_information) noexcept
+        : form_(form),
+          measured_(measured),
+          measured_rotation_(rotation_of(measured)),
+          measured_translation_(translation_of(measured)),
+          sqrt_information_(sqrt_information) {}
+
+    bool Evaluate(double const* const* parameters, double* residuals,
+                  double** jacobians) const override {
+        const double* const a = parameters[0];
+        const double* const b = parameters[1];
+        const bool want_a = jacobians != nullptr && jacobians[0] != nullptr;
+        const bool want_b = jacobians != nullptr && jacobians[1] != nullptr;
+        matrix6<double> J_e_a{}, J_e_b{};
+        matrix<double, 6, 1> e{};
+        if (form_ == relative_pose_form::so3xr3) {
+            e = quat::detail::so3xr3_relative_pose_error(
+                quaternion_from_parameters(a), vec3_from_parameters(a + 4),
+                quaternion_from_parameters(b), vec3_from_parameters(b + 4), measured_rotation_,
+                measured_translation_, want_a ? &J_e_a : nullptr, want_b ? &J_e_b : nullptr);
+        } else {
+            e = se3::relative_pose_error(pose_from_parameters(a), pose_from_parameters(b),
+                                         measured_, want_a ? &J_e_a : nullptr,
+                                         want_b ? &J_e_b : nullptr);
+        }
+        const matrix<double, 6, 1> r = sqrt_information_ * e;
+        for (int k = 0; k < 6; ++k) residuals[k] = r(k, 0);
+        if (want_a) write_ambient_jacobian(sqrt_information_ * J_e_a, a, jacobians[0]);
+        if (want_b) write_ambient_jacobian(sqrt_information_ * J_e_b, b, jacobians[1]);
+        return true;
+    }
+
+private:
+    /// j times pose_manifold's MinusJacobian at the block x, [[0, R^T], [M, 0]], to the 6x7
+    /// row-major ambient Jacobian: the quaternion's columns are j's angular columns times M, the
+    /// translation's are j's linear columns times R^T.
+    static void write_ambient_jacobian(const matrix6<double>& j, const double* x,
+                                       double* ambient) noexcept {
+        double m[3 * 4];
+        detail::quaternion_minus_jacobian(x, m);
+        const rotation_matrix<double> r = to_matrix(quaternion_from_parameters(x));
+        for (int row = 0; row < 6; ++row) {
+            for (int col = 0; col < 4; ++col) {
+                double sum = 0;
+                for (int k = 0; k < 3; ++k) sum += j(row, 3 + k) * m[k * 4 + col];
+                ambient[row * 7 + col] = sum;
+            }
+            for (int col = 0; col < 3; ++col) {
+                double sum = 0;
+                for (int k = 0; k < 3; ++k) sum += j(row, k) * r(col, k);
+                ambient[row * 7 + 4 + col] = sum;
+            }
+        }
+    }
+
+    relative_pose_form form_;
+    dual_quaternion<double> measured_;
+    quaternion<double> measured_rotation_;
+    vec3<double> measured_translation_;
+    matrix6<double> sqrt_information_;
 };
 }  // inline namespace isa_...
 
