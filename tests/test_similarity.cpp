@@ -22,6 +22,12 @@ static_assert(std::is_aggregate_v<similarity<double>>);
 static_assert(std::is_trivially_copyable_v<similarity<float>>);
 static_assert(similarity<double>::identity().scale == 1.0);
 static_assert(similarity<double>::identity().motion == dual_quaternion<double>::identity());
+static_assert(quat::to_matrix4(similarity<double>::identity()) ==
+              quat::matrix<double, 4, 4>::identity());
+static_assert(quat::transform(similarity<double>{dual_quaternion<double>::identity(), 2.0},
+                              vec3<double>{1, 2, 3}) == vec3<double>{2, 4, 6});
+static_assert(quat::inverse(similarity<double>{dual_quaternion<double>::identity(), 4.0}).scale ==
+              0.25);
 
 namespace {
 
