@@ -57,34 +57,45 @@ void align_vectors(benchmark::State& state, std::size_t n) {
 
 // The rigid motion of n noisy point pairs: quat's align_points, or Eigen::umeyama on the same
 // points held as 3 x n matrices (built once, outside the timing), or only the sums of both point
-// sets (read_input: one read of the input).
+// sets (read_input: one read of the input). Small sets cycle through 64 different sets: the shape
+// of three or four points decides how well separated the best rotation is, and with it the work
+// (three random points have a rank-2 B, and most of them a small eigen-gap).
 template <class T>
 void align_points(benchmark::State& state, std::size_t n, bool eigen, bool read_only = false) {
     random_source random;
-    vector_set<T> set = make_vector_set<T>(random, n);
-    for (quat::vec3<T>& target : set.targets) target += quat::vec3<T>{T(1), T(2), T(3)};
-    Eigen::Matrix<T, 3, Eigen::Dynamic> sources(3, Eigen::Index(n)), targets(3, Eigen::Index(n));
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto c = Eigen::Index(i);
-        sources.col(c) << set.sources[i].x, set.sources[i].y, set.sources[i].z;
-        targets.col(c) << set.targets[i].x, set.targets[i].y, set.targets[i].z;
+    const std::size_t sets = n <= 16 ? 64 : 1;
+    std::vector<vector_set<T>> set;
+    std::vector<Eigen::Matrix<T, 3, Eigen::Dynamic>> sources, targets;
+    for (std::size_t k = 0; k < sets; ++k) {
+        set.push_back(make_vector_set<T>(random, n));
+        for (quat::vec3<T>& target : set[k].targets) target += quat::vec3<T>{T(1), T(2), T(3)};
+        sources.emplace_back(3, Eigen::Index(n));
+        targets.emplace_back(3, Eigen::Index(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto c = Eigen::Index(i);
+            sources[k].col(c) << set[k].sources[i].x, set[k].sources[i].y, set[k].sources[i].z;
+            targets[k].col(c) << set[k].targets[i].x, set[k].targets[i].y, set[k].targets[i].z;
+        }
     }
+    std::size_t k = 0;
     for (auto _ : state) {
         if (read_only) {  // the centroids' sums: what every method reads once
             quat::vec3<T> target_sum{}, source_sum{};
             for (std::size_t i = 0; i < n; ++i) {
-                target_sum += set.targets[i];
-                source_sum += set.sources[i];
+                target_sum += set[k].targets[i];
+                source_sum += set[k].sources[i];
             }
             benchmark::DoNotOptimize(target_sum);
             benchmark::DoNotOptimize(source_sum);
         } else if (eigen) {
-            const Eigen::Matrix<T, 4, 4> result = Eigen::umeyama(sources, targets, false);
+            const Eigen::Matrix<T, 4, 4> result = Eigen::umeyama(sources[k], targets[k], false);
             benchmark::DoNotOptimize(result);
         } else {
-            const quat::point_alignment<T> result = quat::align_points(set.targets, set.sources);
+            const quat::point_alignment<T> result =
+                quat::align_points(set[k].targets, set[k].sources);
             benchmark::DoNotOptimize(result);
         }
+        k = k + 1 == sets ? 0 : k + 1;
     }
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
 }
@@ -185,7 +196,10 @@ void register_estimation_for() {
             name("align_vectors", "read_input", "vec3", type, size).c_str(),
             [n](benchmark::State& state) { read_input<T>(state, n); });
     }
-    for (const std::size_t n : {std::size_t(4), std::size_t(64), std::size_t(4096)}) {
+    // Three and four points (the smallest sets, where a fixed cost dominates) to 10,000 (where
+    // reading the input does).
+    for (const std::size_t n : {std::size_t(3), std::size_t(4), std::size_t(64), std::size_t(100),
+                                std::size_t(4096), std::size_t(10000)}) {
         const auto size = static_cast<long long>(n);
         benchmark::RegisterBenchmark(
             name("align_points", "quat", "vec3", type, size).c_str(),

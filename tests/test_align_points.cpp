@@ -306,3 +306,33 @@ TEST_CASE("the motion converts to the homogeneous matrix", "[align_points]") {
     for (std::size_t i = 0; i < sources.size(); ++i)
         CHECK(quat::norm(quat::transform(h, sources[i]) - targets[i]) <= 1e-5f);
 }
+
+TEMPLATE_TEST_CASE("to_similarity applies the fitted scale; to_matrix4 is Eigen's umeyama matrix",
+                   "[align_points]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations rng(15);
+    for (int k = 0; k < 50; ++k) {
+        const quaternion<T> q = rng.unit_quaternion<T>();
+        const vec3<T> t = rng.vector<T>(2.0);
+        const T scale = rng.uniform<T>(0.1, 10.0);
+        const point_pairs<T> exact = exact_pairs(rng, q, t, scale, vec3<T>{}, 1.0, 12);
+        const quat::similarity<T> fit =
+            quat::to_similarity(quat::align_points_with_scale(exact.targets, exact.sources));
+        CHECK(fit.scale == quat::align_points_with_scale(exact.targets, exact.sources).scale);
+        for (std::size_t i = 0; i < exact.sources.size(); ++i)
+            CHECK(quat::norm(quat::transform(fit, exact.sources[i]) - exact.targets[i]) <=
+                  T(64) * eps<T> * (T(1) + scale + quat::norm(t)));
+
+        // Noisy data: the 4x4 matrix equals Eigen's umeyama with scaling, element by element.
+        point_pairs<T> noisy = exact_pairs(rng, q, t, scale, vec3<T>{T(1), T(2), T(3)}, 1.0, 30);
+        for (vec3<T>& target : noisy.targets) target += rng.vector<T>(0.01);
+        const Eigen::Matrix<T, 4, 4> e =
+            Eigen::umeyama(to_eigen(noisy.sources), to_eigen(noisy.targets), true);
+        const quat::matrix<T, 4, 4> m = quat::to_matrix4(
+            quat::to_similarity(quat::align_points_with_scale(noisy.targets, noisy.sources)));
+        const T tolerance = (std::is_same_v<T, float> ? T(2e-5) : T(1e-12)) * scale;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                CHECK(std::abs(m(i, j) - e(i, j)) <= (j < 3 ? tolerance : tolerance * 8));
+    }
+}

@@ -1,5 +1,6 @@
 // The rigid-motion family, x -> R x + t: dual quaternions, homogeneous matrices, screw parameters,
-// screw interpolation (sclerp) and dual-quaternion blending. Included by quat.hpp.
+// screw interpolation (sclerp), dual-quaternion blending, and similarities (a rigid motion after a
+// uniform scale). Included by quat.hpp.
 #ifndef QUAT_RIGID_HPP_INCLUDED
 #define QUAT_RIGID_HPP_INCLUDED
 
@@ -7,6 +8,7 @@
 #include "rigid/dual_quaternion.hpp"
 #include "rigid/homogeneous_matrix.hpp"
 #include "rigid/sclerp.hpp"
+#include "rigid/similarity.hpp"
 #include "rigid/screw.hpp"
 
 #endif  // QUAT_RIGID_HPP_INCLUDED

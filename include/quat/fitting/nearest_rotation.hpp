@@ -67,10 +67,13 @@ template <class T>
 // R = ((kappa + |m|^2) m + lambda cof(m) - m m^T m) / zeta, kappa = (lambda^2 - |m|^2) / 2,
 // zeta = lambda kappa - det m = (s0 + s1)(s1 + s2)(s2 + s0). The eigen-gap 2 (s1 + s2) is at least
 // zeta / (2 |m|^2), the returned bound: only where that is separated_gap() or more is the rotation
-// used (K's eigenvector would be as accurate: FOAM measures 3.6 eps at worst, Jacobi's 10.7, over
-// 18,000 noisy point sets); elsewhere zeta's cancellation spoils R. m is unit_scaled.
+// used as it is (K's eigenvector would be as accurate: FOAM measures 3.6 eps at worst, Jacobi's
+// 10.7, over 18,000 noisy point sets); below, zeta's cancellation spoils R by about eps / bound^2,
+// which Newton steps can still remove down to `floor` (registration's small sets). Below `floor`:
+// the identity and bound 0. m is unit_scaled.
 template <class T>
-[[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m) noexcept {
+[[nodiscard]] constexpr horn_solution<T> foam(const rotation_matrix<T>& m,
+                                              T floor = separated_gap<T>()) noexcept {
     // cof(m), row by row: the cross products of the other two rows.
     const rotation_matrix<T> cofactor = rotation_matrix<T>::from_rows(
         cross(row(m, 1), row(m, 2)), cross(row(m, 2), row(m, 0)), cross(row(m, 0), row(m, 1)));
@@ -94,7 +97,7 @@ template <class T>
     const T kappa = (lambda * lambda - square) / T(2);
     const T zeta = lambda * kappa - det;
     const T bound = zeta / (T(2) * square);
-    if (!(bound >= separated_gap<T>())) return {quaternion<T>::identity(), T(0)};
+    if (!(bound >= floor)) return {quaternion<T>::identity(), T(0)};
     const rotation_matrix<T> cubic = m * transpose(m) * m;
     rotation_matrix<T> r{};
     for (int i = 0; i < 3; ++i)

@@ -16,6 +16,7 @@
 #include "../fitting/align_vectors.hpp"
 #include "../quaternion.hpp"
 #include "../rigid/dual_quaternion.hpp"
+#include "../rigid/similarity.hpp"
 #include "../vec3.hpp"
 #include "detail/registration.hpp"
 
@@ -36,7 +37,9 @@ struct point_alignment {
 };
 
 /// The similarity that best maps sources onto targets (align_points_with_scale): a point_alignment
-/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map.
+/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map. motion alone
+/// is not the fit: transform(fit.motion, p) leaves the scale out. to_similarity(fit) is the fit
+/// with its scale, to apply (transform), compose, invert or write as a 4x4 matrix (to_matrix4).
 template <class T>
 struct similarity_alignment : point_alignment<T> {
     /// The uniform scale, > 0.
@@ -104,6 +107,12 @@ template <class T, class Targets, class Sources, class Weights>
 }
 
 }  // namespace detail
+
+/// The fitted similarity x -> scale R x + t, scale included: {fit.motion, fit.scale}.
+template <class T>
+[[nodiscard]] constexpr similarity<T> to_similarity(const similarity_alignment<T>& fit) noexcept {
+    return {fit.motion, fit.scale};
+}
 
 /// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
 /// unit dual quaternion: never a reflection. targets and sources are equally long containers of

@@ -98,19 +98,18 @@ inline constexpr std::size_t registration_lanes = 8;
 
 // A block of pairs less their offsets, coordinate by coordinate, padded to whole lanes with zero
 // pairs of zero weight (which add nothing to any sum, and nothing below zero to any maximum).
-template <class T, std::size_t Lanes>
+template <class T, std::size_t Lanes, std::size_t Size>
 struct pair_block {
-    // 32 pairs a lane for built-in scalars (7 KiB of float); larger scalars (autodiff types) keep
-    // the stack small with 8.
-    static constexpr std::size_t size = Lanes * (sizeof(T) <= sizeof(double) ? 32 : 8);
+    static_assert(Size % Lanes == 0, "a block holds whole lanes");
+    static constexpr std::size_t size = Size;
     T target[3][size];
     T source[3][size];
     T weight[size];
     std::size_t padded;
 };
 
-template <class T, std::size_t Lanes, class Target, class Source, class Weight>
-constexpr void load_pairs(pair_block<T, Lanes>& block, std::size_t start, std::size_t count,
+template <class T, std::size_t Lanes, std::size_t Size, class Target, class Source, class Weight>
+constexpr void load_pairs(pair_block<T, Lanes, Size>& block, std::size_t start, std::size_t count,
                           Target target, Source source, Weight weight, const vec3<T>& target_offset,
                           const vec3<T>& source_offset) noexcept {
     const auto load = [&](std::size_t i) {
@@ -124,8 +123,8 @@ constexpr void load_pairs(pair_block<T, Lanes>& block, std::size_t start, std::s
         block.weight[i] = weight(start + i);
     };
     // A whole block in a loop of constant length, which compilers vectorize.
-    if (count == pair_block<T, Lanes>::size) {
-        for (std::size_t i = 0; i < pair_block<T, Lanes>::size; ++i) load(i);
+    if (count == Size) {
+        for (std::size_t i = 0; i < Size; ++i) load(i);
     } else {
         for (std::size_t i = 0; i < count; ++i) load(i);
     }
@@ -157,24 +156,34 @@ struct lane_totals {
     }
 };
 
-template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, class Target,
-          class Source, class Weight, class Add>
+template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, std::size_t Size,
+          class Target, class Source, class Weight, class Add>
 [[nodiscard]] constexpr lane_totals<T, Count, Lanes> sum_pairs(std::size_t count, Target target,
                                                                Source source, Weight weight,
                                                                const vec3<T>& target_offset,
                                                                const vec3<T>& source_offset,
                                                                Add add) noexcept {
-    using block_type = pair_block<T, Lanes>;
+    // One lane reads the pairs where they are, one at a time into a one-pair block (registers):
+    // copying them to a cleared block first took about 10 % of align_points for four pairs. Either
+    // way the sums restart from zero every `Size` pairs, so the result is the same.
+    using block_type = pair_block<T, Lanes, Lanes == 1 ? 1 : Size>;
     lane_totals<T, Count, Lanes> totals{};
     // A local block: the compiler then knows that its stores do not alias the input.
     block_type block{};
-    for (std::size_t start = 0; start < count; start += block_type::size) {
-        const std::size_t size =
-            count - start < block_type::size ? count - start : block_type::size;
-        load_pairs(block, start, size, target, source, weight, target_offset, source_offset);
+    for (std::size_t start = 0; start < count; start += Size) {
+        const std::size_t size = count - start < Size ? count - start : Size;
         T sums[Count][Lanes] = {};
-        for (std::size_t i = 0; i < block.padded; i += Lanes)
-            for (std::size_t lane = 0; lane < Lanes; ++lane) add(block, i + lane, lane, sums);
+        if constexpr (Lanes == 1) {
+            for (std::size_t i = 0; i < size; ++i) {
+                load_pairs(block, start + i, 1, target, source, weight, target_offset,
+                           source_offset);
+                add(block, 0, 0, sums);
+            }
+        } else {
+            load_pairs(block, start, size, target, source, weight, target_offset, source_offset);
+            for (std::size_t i = 0; i < block.padded; i += Lanes)
+                for (std::size_t lane = 0; lane < Lanes; ++lane) add(block, i + lane, lane, sums);
+        }
         // The last `Maxima` quantities are maxima: they carry over, the others are added.
         for (std::size_t k = 0; k + Maxima < Count; ++k)
             for (std::size_t lane = 0; lane < Lanes; ++lane) totals.value[k][lane] += sums[k][lane];
@@ -192,14 +201,14 @@ template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, cla
 // w |b|^2, otherwise it is `unit`. Empty where the data need solve_registration's centred path: a
 // NaN or infinite value, a negative or NaN weight, no positive weight, weights or centred sizes
 // outside [min()^(1/4), max()^(1/4)] (scale_of), a sum that overflows.
-template <class T, std::size_t Lanes, class Target, class Source, class Weight>
+template <class T, std::size_t Lanes, std::size_t Size, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_lanes(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
     const vec3<T> origin{T(0), T(0), T(0)};
     // The weights' total, the weighted sums of targets and sources, a sum that is 0 while every
     // value is finite (NaN or an overflow's infinity otherwise); the heaviest weight and minus the
     // lowest, as maxima.
-    const lane_totals<T, 10, Lanes> first = sum_pairs<T, 10, 2, Lanes>(
+    const lane_totals<T, 10, Lanes> first = sum_pairs<T, 10, 2, Lanes, Size>(
         count, target, source, weight, origin, origin,
         [](const auto& block, std::size_t i, std::size_t lane, auto& s) {
             const T w = block.weight[i];
@@ -223,7 +232,7 @@ template <class T, std::size_t Lanes, class Target, class Source, class Weight>
 
     // B of the pairs less the first means (0 to 8), the remainders' weighted sums (9 to 14), the
     // sources' spread (15), and the largest centred components (16, 17).
-    const lane_totals<T, 18, Lanes> second = sum_pairs<T, 18, 2, Lanes>(
+    const lane_totals<T, 18, Lanes> second = sum_pairs<T, 18, 2, Lanes, Size>(
         count, target, source, weight, mean_target, mean_source,
         [](const auto& block, std::size_t i, std::size_t lane, auto& s) {
             const T w = block.weight[i];
@@ -278,7 +287,7 @@ template <class T, std::size_t Lanes, class Target, class Source, class Weight>
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) turn(r, c) = m(r, c) * (scale / p);
     const T inverse_p = T(1) / p;
-    const lane_totals<T, 1, Lanes> third = sum_pairs<T, 1, 0, Lanes>(
+    const lane_totals<T, 1, Lanes> third = sum_pairs<T, 1, 0, Lanes, Size>(
         count, target, source, weight, ct, cs,
         [&turn, inverse_p](const auto& block, std::size_t i, std::size_t lane, auto& s) {
             for (int r = 0; r < 3; ++r) {
@@ -295,13 +304,23 @@ template <class T, std::size_t Lanes, class Target, class Source, class Weight>
                            detail::sqrt(squares / total) * p, scale, fit.unique && determined};
 }
 
-// register_in_lanes in vector lanes for sets of 64 pairs or more, pair by pair below that.
+// register_in_lanes in vector lanes for sets of 64 pairs or more, pair by pair below that. Each
+// pass clears its block (a constexpr function cannot leave it uninitialized before C++20): sets of
+// up to 128 pairs take a block of 128, since a block of 256 (14 KiB of double, cleared three times)
+// made 100 double pairs about 15 % slower (g++ 12, -O3 -march=native). Larger sets of built-in
+// scalars take blocks of 32 pairs a lane (7 KiB of float); larger scalars (autodiff types) keep the
+// stack small with 8.
 template <class T, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_range(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
-    if (count < 8 * registration_lanes)
-        return register_in_lanes<T, 1>(target, source, count, weight, scaled, unit);
-    return register_in_lanes<T, registration_lanes>(target, source, count, weight, scaled, unit);
+    constexpr std::size_t lanes = registration_lanes;
+    constexpr std::size_t per_lane = sizeof(T) <= sizeof(double) ? 32 : 8;
+    if (count < 8 * lanes)
+        return register_in_lanes<T, 1, per_lane>(target, source, count, weight, scaled, unit);
+    if (count <= 16 * lanes)
+        return register_in_lanes<T, lanes, 16 * lanes>(target, source, count, weight, scaled, unit);
+    return register_in_lanes<T, lanes, per_lane * lanes>(target, source, count, weight, scaled,
+                                                         unit);
 }
 
 // The weighted mean of point(i), i < count, with weights weight(i) / total (total their sum):
@@ -391,7 +410,9 @@ struct point_alignment {
 };
 
 /// The similarity that best maps sources onto targets (align_points_with_scale): a point_alignment
-/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map.
+/// whose motion holds R and t of x -> scale R x + t, and rms the residual of that map. motion alone
+/// is not the fit: transform(fit.motion, p) leaves the scale out. to_similarity(fit) is the fit
+/// with its scale, to apply (transform), compose, invert or write as a 4x4 matrix (to_matrix4).
 template <class T>
 struct similarity_alignment : point_alignment<T> {
     /// The uniform scale, > 0.
@@ -482,6 +503,12 @@ template <class T, class Targets, class Sources, class Weights>
 }
 
 }  // namespace detail
+
+/// The fitted similarity x -> scale R x + t, scale included: {fit.motion, fit.scale}.
+template <class T>
+[[nodiscard]] constexpr similarity<T> to_similarity(const similarity_alignment<T>& fit) noexcept {
+    return {fit.motion, fit.scale};
+}
 
 /// The rigid motion x -> R x + t minimizing sum |targets[i] - (R sources[i] + t)|^2 (Kabsch), as a
 /// unit dual quaternion: never a reflection. targets and sources are equally long containers of
