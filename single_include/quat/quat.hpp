@@ -6739,30 +6739,34 @@ constexpr T profile_of(T (&b)[3][3], data_sizes<T>& sizes, std::size_t count, Ta
 template <class T, class Target, class Source, class Weight>
 [[nodiscard]] constexpr alignment<T> rotation_of_profile(const T (&b)[3][3], std::size_t count,
                                                          Target target, Source source,
-                                                         Weight weight) noexcept {
+                                                         Weight weight,
+                                                         T as_is_gap = T(1)) noexcept {
     const rotation_matrix<T> scaled = unit_scaled(rotation_matrix<T>{b});
-    // Few pairs: two Newton steps over the pairs cost less than the eigen-solve, so FOAM serves
-    // down to a gap bound of 1/32, where its error (about eps / bound^2, at most about a thousand
-    // eps) is well inside Newton's reach: one step brings it to the floor of the pairs' rounding,
-    // the second confirms it (more only repeat that floor where it lies above eps). Three random
-    // points fall below separated_gap() 71 % of the time (their B has rank 2), four 46 %; over
-    // 20,000 random sets of 4 or 5 points the rotation's worst error fell from 7.9 eps to 3.9 eps.
-    // Newton's steps leave out pairs of weight <= 0, so a negative weight (align_vectors'
-    // precondition, unchecked) keeps the eigen-solve, where it counts against its pair.
+    // Few pairs: Newton steps over the pairs cost less than the eigen-solve, so FOAM serves down
+    // to a gap bound of 1/1024, where its error (about eps / bound^2, at most about a million eps)
+    // is well inside Newton's reach: as the error squares with each step, two bring it to the
+    // floor of the pairs' rounding, a third confirms it (more only repeat that floor where it lies
+    // above eps). Three random points fall below separated_gap() 71 % of the time (their B has
+    // rank 2), four 46 %; over 20,000 random sets of 4 or 5 points the rotation's worst error fell
+    // from 7.9 eps to 3.8 eps, and 3 double points took 0.72 us where they took 0.87 with a bound
+    // of 1/32 and the eigen-solve below it. Newton's steps leave out pairs of weight <= 0, so a
+    // negative weight (align_vectors' precondition, unchecked) keeps the eigen-solve, where it
+    // counts against its pair. Where `as_is_gap` is below 1 (a wider type solving for a narrower
+    // one, whose eps is far above eps / as_is_gap^2), FOAM's rotation is used as it is down to it.
     constexpr std::size_t few = 16;
     bool small = count <= few;
     for (std::size_t i = 0; small && i < count; ++i) small = weight(i) >= T(0);
-    const horn_solution<T> separated =
-        detail::foam(scaled, small ? T(1) / T(32) : separated_gap<T>());
+    const T floor = small ? T(1) / T(1024) : separated_gap<T>();
+    const horn_solution<T> separated = detail::foam(scaled, as_is_gap < floor ? as_is_gap : floor);
     // FOAM's error grows as its gap bound shrinks: above 1 (B's singular values within about a
-    // factor 2 of each other) it is within a few eps as it is, below that one polish; below
+    // factor 2 of each other) it is within a few eps as it is (as_is_gap's default), below that one polish; below
     // separated_gap(), Newton's method over the pairs, as for the eigenvector of a small gap (K's
     // gap 2 (s1 + s2) is at least the bound, so the optimum is unique).
-    if (separated.eigenvalue_gap >= T(1)) return {separated.rotation, T(0), true};
+    if (separated.eigenvalue_gap >= as_is_gap) return {separated.rotation, T(0), true};
     if (separated.eigenvalue_gap >= separated_gap<T>())
         return {polish_with_profile(separated.rotation, b), T(0), true};
     if (separated.eigenvalue_gap > T(0))
-        return {newton_refine(separated.rotation, count, target, source, weight, 2), T(0), true};
+        return {newton_refine(separated.rotation, count, target, source, weight, 3), T(0), true};
     const symmetric_eigen4<T> eigen = detail::horn_eigen(scaled);
     const T gap = eigen.values[0] - eigen.values[1];
     const T tie = detail::sqrt(detail::epsilon<T>());
