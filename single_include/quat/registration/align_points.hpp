@@ -92,8 +92,11 @@ struct registration {
 // eighth pair, so the sums vectorize without reassociation by the compiler), over blocks of pairs
 // copied to struct-of-arrays form. Measured on 4096 float pairs (g++ 12, -march=native, AVX-512):
 // align_points takes 9.7 us in blocks of 256 pairs, 12.8 us in blocks of 64, 24.4 us pair by pair
-// as before; clang 19 does not vectorize the copy and stays at 30 us either way. Sets of up to 128
-// pairs are summed in one lane (register_in_range).
+// as before; clang 19 does not vectorize the copy and stays at 30 us either way. Sets below 64
+// pairs are summed in one lane (register_in_range). Each quantity's term is written out in the
+// functions that add a pair (add in sum_pairs), with no loop of its own: g++ 12 vectorizes the loop
+// over the lanes at -O2 only where nothing inside it loops (100 double pairs: 3.2 us with the
+// loops, 1.7 us written out).
 inline constexpr std::size_t registration_lanes = 8;
 
 // A block of pairs less their offsets, coordinate by coordinate, padded to whole lanes with zero
@@ -156,22 +159,15 @@ struct lane_totals {
     }
 };
 
-template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, std::size_t Size,
+// sum_pairs' loop over the blocks, through a block the caller provides.
+template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, class Block,
           class Target, class Source, class Weight, class Add>
-[[nodiscard]] constexpr lane_totals<T, Count, Lanes> sum_pairs(std::size_t count, Target target,
-                                                               Source source, Weight weight,
-                                                               const vec3<T>& target_offset,
-                                                               const vec3<T>& source_offset,
-                                                               Add add) noexcept {
-    // One lane reads the pairs where they are, one at a time into a one-pair block (registers):
-    // copying them to a cleared block first took about 10 % of align_points for four pairs. Either
-    // way the sums restart from zero every `Size` pairs, so the result is the same.
-    using block_type = pair_block<T, Lanes, Lanes == 1 ? 1 : Size>;
+[[nodiscard]] constexpr lane_totals<T, Count, Lanes> sum_blocks(
+    Block& block, std::size_t count, Target target, Source source, Weight weight,
+    const vec3<T>& target_offset, const vec3<T>& source_offset, Add add) noexcept {
     lane_totals<T, Count, Lanes> totals{};
-    // A local block: the compiler then knows that its stores do not alias the input.
-    block_type block{};
-    for (std::size_t start = 0; start < count; start += Size) {
-        const std::size_t size = count - start < Size ? count - start : Size;
+    for (std::size_t start = 0; start < count; start += Block::size) {
+        const std::size_t size = count - start < Block::size ? count - start : Block::size;
         T sums[Count][Lanes] = {};
         if constexpr (Lanes == 1) {
             for (std::size_t i = 0; i < size; ++i) {
@@ -194,6 +190,41 @@ template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, std
     return totals;
 }
 
+// sum_blocks through a block left uncleared, at run time only (a constexpr function cannot hold
+// one before C++20): load_pairs writes every element the sums read, and clearing a block of 256
+// double pairs (14 KiB) in each of the three passes took a fifth of the time for 100 pairs.
+template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, class Block,
+          class Target, class Source, class Weight, class Add>
+[[nodiscard]] lane_totals<T, Count, Lanes> sum_blocks_uncleared(std::size_t count, Target target,
+                                                                Source source, Weight weight,
+                                                                const vec3<T>& target_offset,
+                                                                const vec3<T>& source_offset,
+                                                                Add add) noexcept {
+    Block block;
+    return sum_blocks<T, Count, Maxima, Lanes>(block, count, target, source, weight, target_offset,
+                                               source_offset, add);
+}
+
+template <class T, std::size_t Count, std::size_t Maxima, std::size_t Lanes, std::size_t Size,
+          class Target, class Source, class Weight, class Add>
+[[nodiscard]] constexpr lane_totals<T, Count, Lanes> sum_pairs(std::size_t count, Target target,
+                                                               Source source, Weight weight,
+                                                               const vec3<T>& target_offset,
+                                                               const vec3<T>& source_offset,
+                                                               Add add) noexcept {
+    // One lane reads the pairs where they are, one at a time into a one-pair block (registers):
+    // copying them to a cleared block first took about 10 % of align_points for four pairs. Either
+    // way the sums restart from zero every `Size` pairs, so the result is the same. A local block:
+    // the compiler then knows that its stores do not alias the input.
+    using block_type = pair_block<T, Lanes, Lanes == 1 ? 1 : Size>;
+    if (!constant_evaluated())
+        return sum_blocks_uncleared<T, Count, Maxima, Lanes, block_type>(
+            count, target, source, weight, target_offset, source_offset, add);
+    block_type block{};
+    return sum_blocks<T, Count, Maxima, Lanes>(block, count, target, source, weight, target_offset,
+                                               source_offset, add);
+}
+
 // The registration in three passes, for data whose sizes the passes can take as they are: the
 // weighted sums; then B of the pairs less that first mean, with the remainders that correct the
 // mean (B = sum w a b^T - dt ds^T / W for the remainders' sums dt, ds, exactly the B of the
@@ -213,14 +244,16 @@ template <class T, std::size_t Lanes, std::size_t Size, class Target, class Sour
         count, target, source, weight, origin, origin,
         [](const auto& block, std::size_t i, std::size_t lane, auto& s) {
             const T w = block.weight[i];
+            const T t0 = block.target[0][i], t1 = block.target[1][i], t2 = block.target[2][i];
+            const T s0 = block.source[0][i], s1 = block.source[1][i], s2 = block.source[2][i];
             s[0][lane] += w;
-            for (std::size_t c = 0; c < 3; ++c) {
-                s[1 + c][lane] += block.target[c][i] * w;
-                s[4 + c][lane] += block.source[c][i] * w;
-            }
-            s[7][lane] += (block.target[0][i] + block.target[1][i] + block.target[2][i] +
-                           block.source[0][i] + block.source[1][i] + block.source[2][i] + w) *
-                          T(0);
+            s[1][lane] += t0 * w;
+            s[2][lane] += t1 * w;
+            s[3][lane] += t2 * w;
+            s[4][lane] += s0 * w;
+            s[5][lane] += s1 * w;
+            s[6][lane] += s2 * w;
+            s[7][lane] += (t0 + t1 + t2 + s0 + s1 + s2 + w) * T(0);
             s[8][lane] = detail::max(s[8][lane], w);
             s[9][lane] = detail::max(s[9][lane], -w);
         });
@@ -237,15 +270,31 @@ template <class T, std::size_t Lanes, std::size_t Size, class Target, class Sour
         count, target, source, weight, mean_target, mean_source,
         [](const auto& block, std::size_t i, std::size_t lane, auto& s) {
             const T w = block.weight[i];
-            for (std::size_t r = 0; r < 3; ++r) {
-                const T wa = block.target[r][i] * w;
-                for (std::size_t c = 0; c < 3; ++c) s[3 * r + c][lane] += wa * block.source[c][i];
-                s[9 + r][lane] += wa;
-                s[12 + r][lane] += block.source[r][i] * w;
-                s[15][lane] += block.source[r][i] * block.source[r][i] * w;
-                s[16][lane] = detail::max(s[16][lane], detail::abs(block.target[r][i]));
-                s[17][lane] = detail::max(s[17][lane], detail::abs(block.source[r][i]));
-            }
+            const T t0 = block.target[0][i], t1 = block.target[1][i], t2 = block.target[2][i];
+            const T s0 = block.source[0][i], s1 = block.source[1][i], s2 = block.source[2][i];
+            const T wa0 = t0 * w, wa1 = t1 * w, wa2 = t2 * w;
+            s[0][lane] += wa0 * s0;
+            s[1][lane] += wa0 * s1;
+            s[2][lane] += wa0 * s2;
+            s[3][lane] += wa1 * s0;
+            s[4][lane] += wa1 * s1;
+            s[5][lane] += wa1 * s2;
+            s[6][lane] += wa2 * s0;
+            s[7][lane] += wa2 * s1;
+            s[8][lane] += wa2 * s2;
+            s[9][lane] += wa0;
+            s[10][lane] += wa1;
+            s[11][lane] += wa2;
+            s[12][lane] += s0 * w;
+            s[13][lane] += s1 * w;
+            s[14][lane] += s2 * w;
+            s[15][lane] += (s0 * s0 + s1 * s1 + s2 * s2) * w;
+            s[16][lane] = detail::max(
+                s[16][lane],
+                detail::max(detail::max(detail::abs(t0), detail::abs(t1)), detail::abs(t2)));
+            s[17][lane] = detail::max(
+                s[17][lane],
+                detail::max(detail::max(detail::abs(s0), detail::abs(s1)), detail::abs(s2)));
         });
     const vec3<T> target_rest{second.sum(9), second.sum(10), second.sum(11)};
     const vec3<T> source_rest{second.sum(12), second.sum(13), second.sum(14)};
@@ -291,13 +340,12 @@ template <class T, std::size_t Lanes, std::size_t Size, class Target, class Sour
     const lane_totals<T, 1, Lanes> third = sum_pairs<T, 1, 0, Lanes, Size>(
         count, target, source, weight, ct, cs,
         [&turn, inverse_p](const auto& block, std::size_t i, std::size_t lane, auto& s) {
-            for (int r = 0; r < 3; ++r) {
-                const T residual =
-                    block.target[r][i] * inverse_p -
-                    (turn(r, 0) * block.source[0][i] + turn(r, 1) * block.source[1][i] +
-                     turn(r, 2) * block.source[2][i]);
-                s[0][lane] += block.weight[i] * residual * residual;
-            }
+            const T t0 = block.target[0][i], t1 = block.target[1][i], t2 = block.target[2][i];
+            const T s0 = block.source[0][i], s1 = block.source[1][i], s2 = block.source[2][i];
+            const T r0 = t0 * inverse_p - (turn(0, 0) * s0 + turn(0, 1) * s1 + turn(0, 2) * s2);
+            const T r1 = t1 * inverse_p - (turn(1, 0) * s0 + turn(1, 1) * s1 + turn(1, 2) * s2);
+            const T r2 = t2 * inverse_p - (turn(2, 0) * s0 + turn(2, 1) * s1 + turn(2, 2) * s2);
+            s[0][lane] += block.weight[i] * (r0 * r0 + r1 * r1 + r2 * r2);
         });
     const T squares = third.sum(0);
     if (!detail::is_finite(squares)) return std::nullopt;
@@ -305,21 +353,18 @@ template <class T, std::size_t Lanes, std::size_t Size, class Target, class Sour
                            detail::sqrt(squares / total) * p, scale, fit.unique && determined};
 }
 
-// register_in_lanes in vector lanes for sets of more than 128 pairs, pair by pair up to that: at
-// -O2, where g++ 12 does not vectorize the lanes, 100 double pairs took 3.2 us in lanes and 2.0 us
-// pair by pair; at -O3 -march=native 0.80 and 0.85 us. Few float pairs are summed and solved in
-// double, where FOAM's closed form is within a small fraction of float's eps down to a gap bound of
-// 1/256 (its error is about double's eps / bound^2), so they need no Newton steps: 3 and 4 float
-// pairs took 40 % less time, their worst rotation error over 20,000 noisy sets fell from 22 to
-// 0.84 float eps. Each pass clears its block (a constexpr function cannot leave it uninitialized
-// before C++20): sets of built-in scalars take blocks of 32 pairs a lane (7 KiB of float), larger
-// scalars (autodiff types) keep the stack small with 8.
+// register_in_lanes in vector lanes for sets of 64 pairs or more, pair by pair below that. Few
+// float pairs are summed and solved in double, where FOAM's closed form is within a small fraction
+// of float's eps down to a gap bound of 1/256 (its error is about double's eps / bound^2), so they
+// need no Newton steps: 3 and 4 float pairs took 40 % less time, their worst rotation error over
+// 20,000 noisy sets fell from 22 to 0.84 float eps. Sets of built-in scalars take blocks of 32
+// pairs a lane (7 KiB of float); larger scalars (autodiff types) keep the stack small with 8.
 template <class T, class Target, class Source, class Weight>
 [[nodiscard]] constexpr std::optional<registration<T>> register_in_range(
     Target target, Source source, std::size_t count, Weight weight, bool scaled, T unit) noexcept {
     constexpr std::size_t lanes = registration_lanes;
     constexpr std::size_t per_lane = sizeof(T) <= sizeof(double) ? 32 : 8;
-    constexpr std::size_t few = 128;
+    constexpr std::size_t few = 63;
     if constexpr (std::is_same_v<T, float>) {
         if (count <= few) {
             const auto wide = register_in_lanes<double, 1, per_lane>(
