@@ -209,12 +209,19 @@ comparison compare(quat::relative_pose_form form, Make make_reference) {
     return worst;
 }
 
-void report(const char* form, const comparison& worst) {
+/// Reports the worst differences from Jet autodiff and holds them to the tolerances.
+void check(const char* form, const comparison& worst) {
     const std::string f(form);
     report((f + ": residual").c_str(), worst.residual);
     report((f + ": Jacobian times pose_manifold PlusJacobian").c_str(), worst.along_pose_manifold);
     report((f + ": Jacobian times Ceres split PlusJacobian").c_str(), worst.along_ceres_manifold);
     report((f + ": Jacobian along the quaternion").c_str(), worst.along_quaternion);
+    CAPTURE(worst.residual, worst.along_pose_manifold, worst.along_ceres_manifold,
+            worst.along_quaternion);
+    CHECK(worst.residual < 1e-14);
+    CHECK(worst.along_pose_manifold < jacobian_tolerance);
+    CHECK(worst.along_ceres_manifold < jacobian_tolerance);
+    CHECK(worst.along_quaternion < 1e-15);
 }
 
 }  // namespace
@@ -230,13 +237,7 @@ TEST_CASE("relative_pose_cost, SO(3) x R^3: Ceres's pose_graph_3d error, Jacobia
                                      for (int k = 0; k < 36; ++k) r.s[k] = s(k / 6, k % 6);
                                      return r;
                                  });
-    report("so3xr3", worst);
-    CAPTURE(worst.residual, worst.along_pose_manifold, worst.along_ceres_manifold,
-            worst.along_quaternion);
-    CHECK(worst.residual < 1e-14);
-    CHECK(worst.along_pose_manifold < jacobian_tolerance);
-    CHECK(worst.along_ceres_manifold < jacobian_tolerance);
-    CHECK(worst.along_quaternion < 1e-15);
+    check("so3xr3", worst);
 }
 
 TEST_CASE("relative_pose_cost, SE(3) log: Jacobians as Jet autodiff",
@@ -248,13 +249,7 @@ TEST_CASE("relative_pose_cost, SE(3) log: Jacobians as Jet autodiff",
                                    for (int k = 0; k < 36; ++k) r.s[k] = s(k / 6, k % 6);
                                    return r;
                                });
-    report("se3", worst);
-    CAPTURE(worst.residual, worst.along_pose_manifold, worst.along_ceres_manifold,
-            worst.along_quaternion);
-    CHECK(worst.residual < 1e-14);
-    CHECK(worst.along_pose_manifold < jacobian_tolerance);
-    CHECK(worst.along_ceres_manifold < jacobian_tolerance);
-    CHECK(worst.along_quaternion < 1e-15);
+    check("se3", worst);
 }
 
 TEST_CASE("relative_pose_error: the tangent Jacobians are those of the pose manifold's tangent",
