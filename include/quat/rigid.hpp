@@ -8,7 +8,7 @@
 #include "rigid/dual_quaternion.hpp"
 #include "rigid/homogeneous_matrix.hpp"
 #include "rigid/sclerp.hpp"
-#include "rigid/similarity.hpp"
 #include "rigid/screw.hpp"
+#include "rigid/similarity.hpp"
 
 #endif  // QUAT_RIGID_HPP_INCLUDED

@@ -299,6 +299,7 @@ enum class relative_pose_form {
 /// Ceres rejects as a failed evaluation.
 class relative_pose_cost final : public ::ceres::SizedCostFunction<6, 7, 7> {
 public:
+    /// An edge of the given form: Z = measured (unit), S = sqrt_information applied to the error.
     relative_pose_cost(relative_pose_form form, const dual_quaternion<double>& measured,
                        const matrix6<double>& sqrt_information) noexcept
         : form_(form),
@@ -307,6 +308,9 @@ public:
           measured_translation_(translation_of(measured)),
           sqrt_information_(sqrt_information) {}
 
+    /// S e(A, B) to residuals (6), A and B read from parameters[0] and [1] (w, x, y, z, tx, ty,
+    /// tz); each jacobians[k] that is not null receives the 6x7 row-major Jacobian with respect to
+    /// block k. Always succeeds: a non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
         const double* const a = parameters[0];

@@ -25,7 +25,7 @@ struct similarity {
     T scale;                    ///< The uniform scale s.
 
     /// The similarity that moves nothing: the identity motion, scale 1.
-    [[nodiscard]] static constexpr similarity identity() noexcept {
+    [[nodiscard]] [[gnu::always_inline]] static constexpr similarity identity() noexcept {
         return {dual_quaternion<T>::identity(), T(1)};
     }
 };
