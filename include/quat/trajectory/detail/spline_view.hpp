@@ -1,0 +1,81 @@
+// The non-owning view every uniform spline of trajectory/ holds: its control points, their count,
+// the start time t0 and the knot spacing dt, with the domain checks the splines share.
+#ifndef QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
+#define QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
+
+#include <array>
+#include <cstddef>
+
+#include "../../detail/math.hpp"
+#include "../../matrix.hpp"
+#include "../../quaternion.hpp"
+#include "../../rigid/dual_quaternion.hpp"
+#include "../../vec3.hpp"
+#include "uniform_basis.hpp"
+
+namespace quat {
+#include "../../detail/isa_namespace.inc"
+namespace detail {
+
+/// True when every component is finite.
+template <class T>
+[[nodiscard]] constexpr bool is_finite_point(const quaternion<T>& q) noexcept {
+    return is_finite(q);
+}
+template <class T>
+[[nodiscard]] constexpr bool is_finite_point(const dual_quaternion<T>& x) noexcept {
+    return is_finite(x.real) && is_finite(x.dual);
+}
+template <class T>
+[[nodiscard]] constexpr bool is_finite_point(const vec3<T>& v) noexcept {
+    return is_finite(v);
+}
+
+/// Every entry of every block NaN.
+template <class T, int R, int C, std::size_t N>
+constexpr void fill_nan(std::array<matrix<T, R, C>, N>& blocks) noexcept {
+    for (matrix<T, R, C>& m : blocks)
+        for (int r = 0; r < R; ++r)
+            for (int c = 0; c < C; ++c) m(r, c) = quiet_nan<T>();
+}
+template <class T, std::size_t N>
+constexpr void fill_nan(std::array<T, N>& weights) noexcept {
+    for (T& w : weights) w = quiet_nan<T>();
+}
+
+/// Control points, their count, t0 and dt; see spline_position for the domain.
+template <class T, class Point>
+struct spline_view {
+    const Point* points;
+    std::size_t count;
+    T t0, dt;
+
+    template <int K>
+    [[nodiscard]] constexpr bool valid() const noexcept {
+        return points != nullptr && count >= static_cast<std::size_t>(K) && dt > T(0) &&
+               is_finite(dt) && is_finite(t0);
+    }
+    template <int K>
+    [[nodiscard]] constexpr T end_time() const noexcept {
+        if (!valid<K>()) return quiet_nan<T>();
+        return t0 + T(static_cast<double>(count - static_cast<std::size_t>(K) + 1)) * dt;
+    }
+    template <int K>
+    [[nodiscard]] constexpr knot_position<T> locate(const T& t) const noexcept {
+        if (points == nullptr) return {0, quiet_nan<T>(), false};
+        return spline_position<K>(t, t0, dt, count);
+    }
+    /// True when the K points of the segment are finite.
+    template <int K>
+    [[nodiscard]] constexpr bool finite_points(std::size_t segment) const noexcept {
+        for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
+            if (!is_finite_point(points[segment + m])) return false;
+        return true;
+    }
+};
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
