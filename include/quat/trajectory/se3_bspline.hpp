@@ -1,0 +1,136 @@
+// Cumulative B-splines on SE(3) with uniform knots: a smooth rigid motion near control motions (unit
+// dual quaternions), increments by se3's log and exp, with its body-frame twist and the twist's
+// first two derivatives, and their analytic Jacobians with respect to the control points, in O(K)
+// per evaluation (C. Sommer, V. Usenko,
+// D. Schubert, N. Demmel, D. Cremers, "Efficient Derivative Computation for Cumulative B-Splines on
+// Lie Groups", CVPR 2020; trajectory/detail/lie_bspline.hpp derives the recurrences).
+#ifndef QUAT_TRAJECTORY_SE3_BSPLINE_HPP_INCLUDED
+#define QUAT_TRAJECTORY_SE3_BSPLINE_HPP_INCLUDED
+
+#include <array>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+
+#include "../detail/containers.hpp"
+#include "../detail/math.hpp"
+#include "../lie/se3.hpp"
+#include "../matrix.hpp"
+#include "../quaternion.hpp"
+#include "../rigid/dual_quaternion.hpp"
+#include "detail/lie_bspline.hpp"
+#include "detail/spline_view.hpp"
+#include "detail/uniform_basis.hpp"
+
+namespace quat {
+#include "../detail/isa_namespace.inc"
+
+/// A rigid motion and the derivatives of its body-frame twist at one time, and which K control
+/// points it depends on: points first .. first + K - 1 (Jacobian block m is point first + m).
+template <class T>
+struct se3_bspline_sample {
+    std::size_t first;           ///< the first control point of the segment
+    dual_quaternion<T> motion;   ///< X(t), a unit dual quaternion
+    se3::twist<T> velocity;      ///< (X^-1 X')^v = (R^T p', omega), the body-frame twist
+    se3::twist<T> acceleration;  ///< its time derivative
+    se3::twist<T> jerk;          ///< its second time derivative; for K = 4 it jumps at knots
+};
+
+/// The cumulative B-spline of order K (degree K - 1; K = 4 is cubic) on SE(3) with uniform knots:
+/// on [t0 + i dt, t0 + (i + 1) dt], with u = (t - t0) / dt - i and the twists d_j =
+/// se3::log(X_(i+j-1)^-1 X_(i+j)) (rotation angle in [0, pi], so X and -X are the same point),
+///     X(t) = X_i exp(b~_1(u) d_1) ... exp(b~_(K-1)(u) d_(K-1)),
+/// b~_j the cumulative basis of the uniform B-spline. It is C^(K-2) in t, passes near (not
+/// through) its control points, and is defined for t in [t0, t0 + (count - K + 1) dt] (the last
+/// segment includes its end). Only uniform knots are supported.
+///
+/// A non-owning view: it keeps a pointer to the caller's `count` unit dual quaternions (which must
+/// outlive it and may change between evaluations), t0 and dt. Every view is valid to evaluate:
+/// fewer than K points, dt not positive or not finite, t0 not finite, a null pointer, or t NaN or
+/// outside the range give the NaN sample (first = 0, every component and Jacobian entry NaN) from
+/// evaluate and operator(), and an empty optional from try_evaluate. Evaluation allocates nothing.
+template <class T, int K>
+class se3_bspline {
+    static_assert(K >= 2 && K <= 8, "quat::se3_bspline: order K in [2, 8]");
+
+public:
+    /// K 6x6 blocks (twists linear first), block m the Jacobian with respect to point first + m.
+    using jacobian_blocks = std::array<matrix6<T>, K>;
+
+    /// The view of `count` control motions at `points`, knots t0 + m dt.
+    constexpr se3_bspline(const dual_quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
+        : view_{points, count, t0, dt} {}
+    /// The view of a container of dual quaternions (data() and size(), or a C array), which must
+    /// outlive it.
+    template <class Points>
+    constexpr se3_bspline(const Points& points, T t0, T dt) noexcept
+        : se3_bspline(detail::data_of(points), detail::size_of(points), t0, dt) {}
+    template <class Points>
+    se3_bspline(const Points&& points, T t0, T dt) = delete;  ///< no view of a temporary
+
+    /// True when the view can be evaluated somewhere: count >= K, finite t0, finite dt > 0.
+    [[nodiscard]] constexpr bool valid() const noexcept { return view_.template valid<K>(); }
+    /// t0, the start of the range of evaluation.
+    [[nodiscard]] constexpr T start_time() const noexcept { return view_.t0; }
+    /// t0 + (count - K + 1) dt, the end of the range; NaN when not valid().
+    [[nodiscard]] constexpr T end_time() const noexcept { return view_.template end_time<K>(); }
+    /// dt, the knot spacing.
+    [[nodiscard]] constexpr T knot_spacing() const noexcept { return view_.dt; }
+    /// The number of control points.
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return view_.count; }
+    /// The control points viewed.
+    [[nodiscard]] constexpr const dual_quaternion<T>* points() const noexcept { return view_.points; }
+
+    /// X(t) alone (no derivatives): NaN outside the domain (see the class comment).
+    [[nodiscard]] constexpr dual_quaternion<T> operator()(T t) const noexcept {
+        const detail::knot_position<T> at = view_.template locate<K>(t);
+        if (!at.valid) return {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()};
+        return detail::evaluate_lie_bspline<group, T, K>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+                   0, nullptr, nullptr, nullptr, nullptr)
+            .value;
+    }
+
+    /// X(t) with its body-frame twist and the twist's two derivatives; each Jacobian pointer that is
+    /// not null receives the K blocks of that output with respect to the segment's control points,
+    /// in the right convention of lie/se3.hpp (X_m <- X_m exp(delta), the motion's change as
+    /// log(X^-1 X'), the twists' as a difference). Precondition: unit control points. The NaN
+    /// sample, and NaN in every requested block, outside the domain.
+    [[nodiscard]] constexpr se3_bspline_sample<T> evaluate(
+        T t, jacobian_blocks* J_x_points = nullptr, jacobian_blocks* J_v_points = nullptr,
+        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        const detail::knot_position<T> at = view_.template locate<K>(t);
+        if (!at.valid) {
+            for (jacobian_blocks* J : {J_x_points, J_v_points, J_a_points, J_j_points})
+                if (J != nullptr) detail::fill_nan(*J);
+            const T nan = detail::quiet_nan<T>();
+            const se3::twist<T> nan_twist{{nan, nan, nan}, {nan, nan, nan}};
+            return {0, {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()}, nan_twist,
+                    nan_twist, nan_twist};
+        }
+        const auto s = detail::evaluate_lie_bspline<group, T, K>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
+            J_x_points, J_v_points, J_a_points, J_j_points);
+        return {at.segment, s.value, se3::to_twist(s.velocity), se3::to_twist(s.acceleration),
+                se3::to_twist(s.jerk)};
+    }
+
+    /// evaluate(t, ...), or std::nullopt outside the domain or when one of the segment's K control
+    /// points is not finite; never asserts. The Jacobians are written only with a value.
+    [[nodiscard]] constexpr std::optional<se3_bspline_sample<T>> try_evaluate(
+        T t, jacobian_blocks* J_x_points = nullptr, jacobian_blocks* J_v_points = nullptr,
+        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        const detail::knot_position<T> at = view_.template locate<K>(t);
+        if (!at.valid || !view_.template finite_points<K>(at.segment)) return std::nullopt;
+        return evaluate(t, J_x_points, J_v_points, J_a_points, J_j_points);
+    }
+
+private:
+    using group = detail::se3_spline_group<T>;
+    detail::spline_view<T, dual_quaternion<T>> view_;
+};
+
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_TRAJECTORY_SE3_BSPLINE_HPP_INCLUDED
