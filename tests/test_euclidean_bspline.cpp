@@ -49,7 +49,7 @@ void check_path(double t0, double dt) {
     std::vector<double> times;
     for (std::size_t i = 0; i <= points.size() - K + 1; ++i) times.push_back(t0 + static_cast<double>(i) * dt);
     for (int n = 0; n < 6; ++n)
-        times.push_back(t0 + (std::floor(random.uniform<double>(0, 5)) + random.uniform<double>(0.05, 0.95)) * dt);
+        times.push_back(t0 + (std::floor(random.uniform<double>(0, 9.0 - K + 1)) + random.uniform<double>(0.05, 0.95)) * dt);
     for (const double t : times) {
         INFO(order << "t = " << t);
         std::array<double, K> Jp{}, Jv{}, Ja{}, Jj{};
