@@ -41,7 +41,7 @@ class euclidean_bspline {
 public:
     /// K weights: the Jacobian of an output with respect to point first + m is weight m times the
     /// 3x3 identity (the path is linear in its points).
-    using jacobian_weights = std::array<T, K>;
+    using jacobian_weights = std::array<T, static_cast<std::size_t>(K)>;
 
     /// The view of `count` control points at `points`, knots t0 + m dt.
     constexpr euclidean_bspline(const vec3<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -84,18 +84,18 @@ public:
             const vec3<T> v{nan, nan, nan};
             return {0, v, v, v, v};
         }
-        const detail::cumulative_weights<T, K> w =
-            detail::cumulative_weights_at<T, K>(at.u, view_.dt);
+        const detail::cumulative_weights<T, static_cast<std::size_t>(K)> w =
+            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt);
         const vec3<T>* p = view_.points + at.segment;
         vec3<T> out[4] = {p[0], {T(0), T(0), T(0)}, {T(0), T(0), T(0)}, {T(0), T(0), T(0)}};
-        for (std::size_t j = 1; j < K; ++j) {
+        for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
             const vec3<T> step = p[j] - p[j - 1];
             for (std::size_t d = 0; d < 4; ++d) out[d] = out[d] + step * w.b[d][j];
         }
         // d p / d p_m = b~_m - b~_(m+1) (b~_0 = 1 and b~_K = 0; for derivatives b~_0' = 0).
         for (std::size_t d = 0; d < 4; ++d) {
             if (J[d] == nullptr) continue;
-            for (std::size_t m = 0; m < K; ++m)
+            for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
                 (*J[d])[m] = m + 1 < K ? w.b[d][m] - w.b[d][m + 1] : w.b[d][m];
         }
         return {at.segment, out[0], out[1], out[2], out[3]};

@@ -55,7 +55,7 @@ class se3_bspline {
 
 public:
     /// K 6x6 blocks (twists linear first), block m the Jacobian with respect to point first + m.
-    using jacobian_blocks = std::array<matrix6<T>, K>;
+    using jacobian_blocks = std::array<matrix6<T>, static_cast<std::size_t>(K)>;
 
     /// The view of `count` control motions at `points`, knots t0 + m dt.
     constexpr se3_bspline(const dual_quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -85,8 +85,8 @@ public:
     [[nodiscard]] constexpr dual_quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()};
-        return detail::evaluate_lie_bspline<group, T, K>(
-                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+        return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt),
                    0, nullptr, nullptr, nullptr, nullptr)
             .value;
     }
@@ -108,8 +108,8 @@ public:
             return {0, {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()}, nan_twist,
                     nan_twist, nan_twist};
         }
-        const auto s = detail::evaluate_lie_bspline<group, T, K>(
-            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
+        const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
             J_x_points, J_v_points, J_a_points, J_j_points);
         return {at.segment, s.value, se3::to_twist(s.velocity), se3::to_twist(s.acceleration),
                 se3::to_twist(s.jerk)};

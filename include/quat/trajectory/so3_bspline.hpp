@@ -53,7 +53,7 @@ class so3_bspline {
 
 public:
     /// K 3x3 blocks, block m the Jacobian with respect to control point first + m.
-    using jacobian_blocks = std::array<matrix3<T>, K>;
+    using jacobian_blocks = std::array<matrix3<T>, static_cast<std::size_t>(K)>;
 
     /// The view of `count` control rotations at `points`, knots t0 + m dt.
     constexpr so3_bspline(const quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -83,8 +83,8 @@ public:
     [[nodiscard]] constexpr quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return detail::nan_quaternion<T>();
-        return detail::evaluate_lie_bspline<group, T, K>(
-                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+        return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt),
                    0, nullptr, nullptr, nullptr, nullptr)
             .value;
     }
@@ -105,8 +105,8 @@ public:
             return {0, detail::nan_quaternion<T>(), {nan, nan, nan}, {nan, nan, nan},
                     {nan, nan, nan}};
         }
-        const auto s = detail::evaluate_lie_bspline<group, T, K>(
-            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
+        const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
             J_q_points, J_w_points, J_a_points, J_j_points);
         return {at.segment, s.value, s.velocity, s.acceleration, s.jerk};
     }

@@ -106,9 +106,9 @@ namespace detail {
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
 template <int K>
-[[nodiscard]] constexpr std::array<std::array<std::array<long long, K>, K>, 4>
+[[nodiscard]] constexpr std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
 cumulative_basis_table() noexcept {
-    std::array<std::array<std::array<long long, K>, K>, 4> table{};
+    std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4> table{};
     for (int s = 0; s < K; ++s)
         for (int n = 0; n < K; ++n) {
             long long sum = 0;
@@ -122,8 +122,8 @@ cumulative_basis_table() noexcept {
                                               [static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
-        for (std::size_t j = 0; j < K; ++j)
-            for (std::size_t n = 0; n + 1 < K; ++n)
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
+            for (std::size_t n = 0; n + 1 < static_cast<std::size_t>(K); ++n)
                 table[d][j][n] = static_cast<long long>(n + 1) * table[d - 1][j][n + 1];
     return table;
 }
@@ -132,19 +132,19 @@ cumulative_basis_table() noexcept {
 /// d^d/dt^d b~_j (j = 0 .. K - 1; b[0][0] = 1, b[d][0] = 0 for d > 0).
 template <class T, int K>
 struct cumulative_weights {
-    std::array<std::array<T, K>, 4> b;
+    std::array<std::array<T, static_cast<std::size_t>(K)>, 4> b;
 };
 
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
 template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, K> cumulative_weights_at(const T& u,
+[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(const T& u,
                                                                        const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
-    cumulative_weights<T, K> w{};
+    cumulative_weights<T, static_cast<std::size_t>(K)> w{};
     T scale = T(static_cast<double>(factorial_of(K - 1)));
     for (std::size_t d = 0; d < 4; ++d) {
-        for (std::size_t j = 0; j < K; ++j) {
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j) {
             if (d + 1 > K) {
                 w.b[d][j] = T(0);
                 continue;
@@ -352,7 +352,7 @@ class euclidean_bspline {
 public:
     /// K weights: the Jacobian of an output with respect to point first + m is weight m times the
     /// 3x3 identity (the path is linear in its points).
-    using jacobian_weights = std::array<T, K>;
+    using jacobian_weights = std::array<T, static_cast<std::size_t>(K)>;
 
     /// The view of `count` control points at `points`, knots t0 + m dt.
     constexpr euclidean_bspline(const vec3<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -395,18 +395,18 @@ public:
             const vec3<T> v{nan, nan, nan};
             return {0, v, v, v, v};
         }
-        const detail::cumulative_weights<T, K> w =
-            detail::cumulative_weights_at<T, K>(at.u, view_.dt);
+        const detail::cumulative_weights<T, static_cast<std::size_t>(K)> w =
+            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt);
         const vec3<T>* p = view_.points + at.segment;
         vec3<T> out[4] = {p[0], {T(0), T(0), T(0)}, {T(0), T(0), T(0)}, {T(0), T(0), T(0)}};
-        for (std::size_t j = 1; j < K; ++j) {
+        for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
             const vec3<T> step = p[j] - p[j - 1];
             for (std::size_t d = 0; d < 4; ++d) out[d] = out[d] + step * w.b[d][j];
         }
         // d p / d p_m = b~_m - b~_(m+1) (b~_0 = 1 and b~_K = 0; for derivatives b~_0' = 0).
         for (std::size_t d = 0; d < 4; ++d) {
             if (J[d] == nullptr) continue;
-            for (std::size_t m = 0; m < K; ++m)
+            for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
                 (*J[d])[m] = m + 1 < K ? w.b[d][m] - w.b[d][m + 1] : w.b[d][m];
         }
         return {at.segment, out[0], out[1], out[2], out[3]};

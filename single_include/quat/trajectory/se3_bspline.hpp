@@ -169,10 +169,10 @@ struct lie_spline_sample {
 /// d_(K-1) (J_d[0] unused): block m = J_d[m] dd_m/dP_m + J_d[m+1] dd_(m+1)/dP_m, plus `direct`
 /// for P_0.
 template <class M, int K>
-constexpr void to_point_blocks(const std::array<M, K>& J_d, const std::array<M, K>& J_self,
-                               const std::array<M, K>& J_previous, const M& direct,
-                               std::array<M, K>& out) noexcept {
-    for (std::size_t m = 0; m < K; ++m) {
+constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d, const std::array<M, static_cast<std::size_t>(K)>& J_self,
+                               const std::array<M, static_cast<std::size_t>(K)>& J_previous, const M& direct,
+                               std::array<M, static_cast<std::size_t>(K)>& out) noexcept {
+    for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
         M block = m == 0 ? direct : J_d[m] * J_self[m];
         if (m + 1 < K) block = block + J_d[m + 1] * J_previous[m + 1];
         out[m] = block;
@@ -185,11 +185,11 @@ constexpr void to_point_blocks(const std::array<M, K>& J_d, const std::array<M, 
 /// blocks; a velocity Jacobian asks for at least that order. No allocation: fixed-size arrays.
 template <class Group, class T, int K>
 constexpr lie_spline_sample<Group> evaluate_lie_bspline(
-    const typename Group::element* p, const cumulative_weights<T, K>& w, int order,
-    std::array<typename Group::jacobian, K>* J_value,
-    std::array<typename Group::jacobian, K>* J_velocity,
-    std::array<typename Group::jacobian, K>* J_acceleration,
-    std::array<typename Group::jacobian, K>* J_jerk) noexcept {
+    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w, int order,
+    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
+    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_velocity,
+    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_acceleration,
+    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_jerk) noexcept {
     using V = typename Group::tangent;
     using M = typename Group::jacobian;
     if (J_jerk != nullptr && order < 3) order = 3;
@@ -201,12 +201,12 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     const auto& b1 = w.b[1];
     const auto& b2 = w.b[2];
     const auto& b3 = w.b[3];
-    std::array<V, K> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
-    std::array<V, K + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
-    std::array<M, K> J_self{}, J_previous{}, J_exp{}, B{};
+    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
+    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
+    std::array<M, static_cast<std::size_t>(K)> J_self{}, J_previous{}, J_exp{}, B{};
     vel[1] = acc[1] = jerk[1] = Group::zero();
     lie_spline_sample<Group> out{p[0], Group::zero(), Group::zero(), Group::zero()};
-    for (std::size_t j = 1; j < K; ++j) {
+    for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
         d[j] = Group::minus(p[j], p[j - 1], jacobians ? &J_self[j] : nullptr,
                             jacobians ? &J_previous[j] : nullptr);
         const typename Group::element a = Group::exp(d[j] * b0[j], jacobians ? &J_exp[j] : nullptr);
@@ -232,14 +232,14 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     if (!jacobians) return out;
 
     const M I = M::identity(), O = M::zero();
-    std::array<M, K> J_d{};
+    std::array<M, static_cast<std::size_t>(K)> J_d{};
     if (J_value != nullptr) {  // X depends on d_j through Ad(S_j^-1) b~_j Jr(b~_j d_j)
         M L = I;
         for (std::size_t j = K - 1; j >= 1; --j) {
             J_d[j] = L * (J_exp[j] * b0[j]);
             L = L * B[j];
         }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, L, *J_value);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, L, *J_value);
     }
     if (J_velocity != nullptr) {
         M La = I;
@@ -248,7 +248,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             J_d[j] = La * (Group::ad(wB[j]) * through_b + I * b1[j]);
             La = La * B[j];
         }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_velocity);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_velocity);
     }
     if (J_acceleration != nullptr) {
         M La = O, Lb = I;
@@ -262,7 +262,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             La = La_total * B[j];
             Lb = Lb * B[j];
         }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_acceleration);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_acceleration);
     }
     if (J_jerk != nullptr) {
         M La = O, Lb = O, Lc = I;
@@ -284,7 +284,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             Lb = Lb_total * B[j];
             Lc = Lc * B[j];
         }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_jerk);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_jerk);
     }
     return out;
 }
@@ -352,7 +352,7 @@ class se3_bspline {
 
 public:
     /// K 6x6 blocks (twists linear first), block m the Jacobian with respect to point first + m.
-    using jacobian_blocks = std::array<matrix6<T>, K>;
+    using jacobian_blocks = std::array<matrix6<T>, static_cast<std::size_t>(K)>;
 
     /// The view of `count` control motions at `points`, knots t0 + m dt.
     constexpr se3_bspline(const dual_quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -382,8 +382,8 @@ public:
     [[nodiscard]] constexpr dual_quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()};
-        return detail::evaluate_lie_bspline<group, T, K>(
-                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+        return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt),
                    0, nullptr, nullptr, nullptr, nullptr)
             .value;
     }
@@ -405,8 +405,8 @@ public:
             return {0, {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()}, nan_twist,
                     nan_twist, nan_twist};
         }
-        const auto s = detail::evaluate_lie_bspline<group, T, K>(
-            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
+        const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
             J_x_points, J_v_points, J_a_points, J_j_points);
         return {at.segment, s.value, se3::to_twist(s.velocity), se3::to_twist(s.acceleration),
                 se3::to_twist(s.jerk)};

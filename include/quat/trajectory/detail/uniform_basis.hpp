@@ -36,9 +36,9 @@ namespace detail {
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
 template <int K>
-[[nodiscard]] constexpr std::array<std::array<std::array<long long, K>, K>, 4>
+[[nodiscard]] constexpr std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
 cumulative_basis_table() noexcept {
-    std::array<std::array<std::array<long long, K>, K>, 4> table{};
+    std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4> table{};
     for (int s = 0; s < K; ++s)
         for (int n = 0; n < K; ++n) {
             long long sum = 0;
@@ -52,8 +52,8 @@ cumulative_basis_table() noexcept {
                                               [static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
-        for (std::size_t j = 0; j < K; ++j)
-            for (std::size_t n = 0; n + 1 < K; ++n)
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
+            for (std::size_t n = 0; n + 1 < static_cast<std::size_t>(K); ++n)
                 table[d][j][n] = static_cast<long long>(n + 1) * table[d - 1][j][n + 1];
     return table;
 }
@@ -62,19 +62,19 @@ cumulative_basis_table() noexcept {
 /// d^d/dt^d b~_j (j = 0 .. K - 1; b[0][0] = 1, b[d][0] = 0 for d > 0).
 template <class T, int K>
 struct cumulative_weights {
-    std::array<std::array<T, K>, 4> b;
+    std::array<std::array<T, static_cast<std::size_t>(K)>, 4> b;
 };
 
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
 template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, K> cumulative_weights_at(const T& u,
+[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(const T& u,
                                                                        const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
-    cumulative_weights<T, K> w{};
+    cumulative_weights<T, static_cast<std::size_t>(K)> w{};
     T scale = T(static_cast<double>(factorial_of(K - 1)));
     for (std::size_t d = 0; d < 4; ++d) {
-        for (std::size_t j = 0; j < K; ++j) {
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j) {
             if (d + 1 > K) {
                 w.b[d][j] = T(0);
                 continue;
