@@ -28,9 +28,10 @@ MAY_INCLUDE = {
     "paths": {"detail", "core", "lie"},
     "batch": {"detail", "core", "rigid", "paths"},
     "registration": {"detail", "core", "rigid", "fitting", "lie"},
+    "trajectory": {"detail", "core", "rigid", "fitting", "lie", "paths"},
     "io": {"detail", "core"},
     "interop": {"detail", "core", "rigid", "fitting", "lie", "paths", "batch", "registration",
-                "io"},
+                "io", "trajectory"},
 }
 
 
