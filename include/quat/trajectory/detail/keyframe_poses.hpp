@@ -3,6 +3,7 @@
 #define QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "../../detail/math.hpp"
