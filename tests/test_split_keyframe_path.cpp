@@ -170,3 +170,9 @@ TEST_CASE("split_keyframe_path takes times of another precision than its poses",
         CHECK(path(t) == reference(t));
     }
 }
+
+TEMPLATE_TEST_CASE("split_keyframe_path::try_make is empty wherever a value would not be finite",
+                   "[split_keyframe_path][nan]", float, double) {
+    quat::test::random_rotations random;
+    quat::test::check_try_make_bounds<split_keyframe_path, TestType>(random);
+}

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,8 @@
 #include <quat/trajectory/keyframe_path_state.hpp>
 
 #include "catch.hpp"
+#include "keyframe_poses.hpp"
+#include "random.hpp"
 
 namespace quat::test {
 
@@ -133,6 +136,54 @@ void check_batch(const Path& path, std::vector<double> ts) {
         CHECK(same);
         std::reverse(ts.begin(), ts.end());
     }
+}
+
+}  // namespace quat::test
+
+namespace quat::test {
+
+template <class T>
+bool is_finite_state(const keyframe_path_state<T>& s) {
+    const auto finite = [](const vec3<T>& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    return std::isfinite(s.pose.real.w) && std::isfinite(s.pose.dual.x) && finite(s.velocity) &&
+           finite(s.acceleration) && finite(s.body_angular_velocity) &&
+           finite(s.body_angular_acceleration) && finite(s.body_velocity) &&
+           finite(s.body_acceleration);
+}
+
+/// Over times scaled by powers of two across T's whole range, try_make gives a path whose
+/// values between its keyframes are finite, or nothing; and both happen.
+template <template <class> class Path, class T>
+void check_try_make_bounds(random_rotations& random) {
+    std::vector<T> times, scaled;
+    std::vector<dual_quaternion<T>> poses;
+    const int lowest = std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits;
+    int engaged = 0, empty = 0;
+    for (int n = 0; n < 6; ++n) {
+        random_pose_keyframes(random, 3 + std::size_t(n % 8), 2.5, 1.0, 10.0, times, poses);
+        for (int exponent = lowest; exponent <= std::numeric_limits<T>::max_exponent;
+             exponent += 8) {
+            INFO("set " << n << ", times scaled by 2^" << exponent);
+            scaled.clear();
+            for (const T t : times) scaled.push_back(std::ldexp(t, exponent));
+            const std::optional<Path<T>> path = Path<T>::try_make(scaled, poses);
+            if (!path) {
+                ++empty;
+                continue;
+            }
+            ++engaged;
+            bool finite = true;
+            for (int k = 0; k <= 50; ++k) {
+                const T t = scaled.front() + (scaled.back() - scaled.front()) * (T(k) / T(50));
+                finite = finite && is_finite_state(path->state(t));
+            }
+            CHECK(finite);
+        }
+    }
+    CHECK(engaged > 0);
+    CHECK(empty > 0);
 }
 
 }  // namespace quat::test
