@@ -471,7 +471,8 @@ TEMPLATE_TEST_CASE("the keyframe paths of rigid motions take a user-defined scal
     };
     const quatd a = normalize(quatd{0.3, -0.2, 0.9, 0.1}), b{0.5, 0.5, -0.5, 0.5};
     const std::vector<dual_quaterniond> poses_d{
-        to_dual_quaternion(a, vec3<double>{1, -2, 0.5}), to_dual_quaternion(b, vec3<double>{0.3, 0, 2}),
+        to_dual_quaternion(a, vec3<double>{1, -2, 0.5}),
+        to_dual_quaternion(b, vec3<double>{0.3, 0, 2}),
         to_dual_quaternion(slerp(a, b, 0.7), vec3<double>{2, 1, 0}),
         to_dual_quaternion(a, vec3<double>{0, 0, 1})};
     std::vector<dual_quaternion<R>> poses;

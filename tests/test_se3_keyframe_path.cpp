@@ -89,7 +89,8 @@ TEST_CASE("se3_keyframe_path's rates are the derivatives of its poses", "[se3_ke
             std::vector<long double>(times.begin(), times.end()),
             quat::test::converted<long double>(poses));
         std::vector<double> ts;
-        for (int k = 0; k < 50; ++k) ts.push_back(random.uniform<double>(times.front(), times.back()));
+        for (int k = 0; k < 50; ++k)
+            ts.push_back(random.uniform<double>(times.front(), times.back()));
         const quat::test::jumps e = quat::test::derivative_errors(path, reference, ts, 1e-5L);
         worst = {std::max(worst.velocity, e.velocity), std::max(worst.acceleration, e.acceleration),
                  std::max(worst.angular_velocity, e.angular_velocity),
@@ -122,13 +123,19 @@ TEST_CASE("se3_keyframe_path follows a screw exactly; the split path cuts it sho
         const double t = 0.01 * k;
         const dual_quaternion<double> exact = x0 * quat::se3::exp(xi * t);
         const keyframe_path_state<double> c = coupled.state(t), s = split.state(t);
-        coupled_angle = std::max(coupled_angle, double(quat::angle_between(c.pose.real, exact.real)));
+        coupled_angle =
+            std::max(coupled_angle, double(quat::angle_between(c.pose.real, exact.real)));
         split_angle = std::max(split_angle, double(quat::angle_between(s.pose.real, exact.real)));
-        coupled_position = std::max(coupled_position, double(quat::norm(quat::translation_of(c.pose) - quat::translation_of(exact))));
-        split_position = std::max(split_position, double(quat::norm(quat::translation_of(s.pose) - quat::translation_of(exact))));
+        coupled_position = std::max(
+            coupled_position,
+            double(quat::norm(quat::translation_of(c.pose) - quat::translation_of(exact))));
+        split_position = std::max(split_position, double(quat::norm(quat::translation_of(s.pose) -
+                                                                    quat::translation_of(exact))));
         const vec3<double> body_velocity = xi.linear;  // constant body twist
-        coupled_velocity = std::max(coupled_velocity, double(quat::norm(c.body_velocity - body_velocity)));
-        split_velocity = std::max(split_velocity, double(quat::norm(s.body_velocity - body_velocity)));
+        coupled_velocity =
+            std::max(coupled_velocity, double(quat::norm(c.body_velocity - body_velocity)));
+        split_velocity =
+            std::max(split_velocity, double(quat::norm(s.body_velocity - body_velocity)));
     }
     // Measured: coupled within 1.4e-15 rad, 8.1e-15 m and 4.0e-15 m/s; the split path has the
     // same rotations (1.4e-15 rad) but its origin runs up to 0.44 m off the helix, its body
@@ -157,9 +164,11 @@ TEST_CASE("se3_keyframe_path does not depend on the body's origin; the split pat
         const split_keyframe_path<double> c(times, poses), d(times, moved);
         for (int k = 0; k <= 100; ++k) {
             const double t = times.front() + (times.back() - times.front()) * k / 100.0;
-            const auto gap = [](const dual_quaternion<double>& x, const dual_quaternion<double>& y) {
-                return std::max(double(quat::angle_between(x.real, y.real)),
-                                double(quat::norm(quat::translation_of(x) - quat::translation_of(y))));
+            const auto gap = [](const dual_quaternion<double>& x,
+                                const dual_quaternion<double>& y) {
+                return std::max(
+                    double(quat::angle_between(x.real, y.real)),
+                    double(quat::norm(quat::translation_of(x) - quat::translation_of(y))));
             };
             coupled = std::max(coupled, gap(a(t) * h, b(t)));
             split = std::max(split, gap(c(t) * h, d(t)));
@@ -184,7 +193,8 @@ TEST_CASE("a dolly with a pan: the split path keeps the line, se3_keyframe_path 
     for (int k = 0; k <= 350; ++k) {
         const double t = 0.01 * k;
         const vec3<double> line{t, 0, 0};
-        coupled_off = std::max(coupled_off, double(quat::norm(quat::translation_of(coupled(t)) - line)));
+        coupled_off =
+            std::max(coupled_off, double(quat::norm(quat::translation_of(coupled(t)) - line)));
         split_off = std::max(split_off, double(quat::norm(quat::translation_of(split(t)) - line)));
     }
     // Measured: the split path stays on the line within 1.4e-15 m; se3_keyframe_path's origin
@@ -193,8 +203,8 @@ TEST_CASE("a dolly with a pan: the split path keeps the line, se3_keyframe_path 
     CHECK(coupled_off > 0.04);
 }
 
-TEMPLATE_TEST_CASE("an se3_keyframe_path through two keyframes is their sclerp", "[se3_keyframe_path]",
-                   float, double) {
+TEMPLATE_TEST_CASE("an se3_keyframe_path through two keyframes is their sclerp",
+                   "[se3_keyframe_path]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
     double angle = 0, position = 0, velocity = 0, acceleration = 0;
@@ -214,10 +224,15 @@ TEMPLATE_TEST_CASE("an se3_keyframe_path through two keyframes is their sclerp",
                                                        dual_quaternion<double>(b),
                                                        (double(t) - double(start)) / stored));
         angle = std::max(angle, double(quat::angle_between(s.pose.real, expected.real)));
-        position = std::max(position, double(quat::test::relative_difference(quat::translation_of(s.pose), quat::translation_of(expected))));
-        const quat::se3::twist<T> twist = quat::se3::log(quat::se3::between(quat::normalize(a), quat::normalize(b)));
-        velocity = std::max(velocity, double(quat::test::relative_difference(s.body_velocity, twist.linear / T(stored))));
-        velocity = std::max(velocity, double(quat::test::relative_difference(s.body_angular_velocity, twist.angular / T(stored))));
+        position =
+            std::max(position, double(quat::test::relative_difference(
+                                   quat::translation_of(s.pose), quat::translation_of(expected))));
+        const quat::se3::twist<T> twist =
+            quat::se3::log(quat::se3::between(quat::normalize(a), quat::normalize(b)));
+        velocity = std::max(velocity, double(quat::test::relative_difference(
+                                          s.body_velocity, twist.linear / T(stored))));
+        velocity = std::max(velocity, double(quat::test::relative_difference(
+                                          s.body_angular_velocity, twist.angular / T(stored))));
         acceleration = std::max(acceleration, double(quat::norm(s.body_angular_acceleration)));
     }
     // Measured (angle, position, rates): 2.9, 2.5, 3.0 eps in float; 3.9, 5.2, 3.9 eps in double.
@@ -247,8 +262,11 @@ TEMPLATE_TEST_CASE("se3_keyframe_path turns as the rotation spline through its r
             const T t = times.front() + (times.back() - times.front()) * T(k) / T(50);
             const keyframe_path_state<T> s = path.state(t);
             angle = std::max(angle, double(quat::angle_between(s.pose.real, spline(t))));
-            rate = std::max(rate, double(quat::test::relative_difference(s.body_angular_velocity, spline.angular_velocity(t))));
-            second = std::max(second, double(quat::test::relative_difference(s.body_angular_acceleration, spline.angular_acceleration(t))));
+            rate = std::max(rate, double(quat::test::relative_difference(
+                                      s.body_angular_velocity, spline.angular_velocity(t))));
+            second =
+                std::max(second, double(quat::test::relative_difference(
+                                     s.body_angular_acceleration, spline.angular_acceleration(t))));
             split_gap = std::max(split_gap, double(quat::angle_between(split(t).real, spline(t))));
         }
     }
@@ -272,15 +290,21 @@ TEMPLATE_TEST_CASE("without rotation se3_keyframe_path is the split path", "[se3
         quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 20), 0.0, 1.0, 10.0, times,
                                           poses);
         const quaternion<T> q = poses.front().real;
-        for (dual_quaternion<T>& x : poses) x = quat::to_dual_quaternion(q, quat::translation_of(x));
+        for (dual_quaternion<T>& x : poses)
+            x = quat::to_dual_quaternion(q, quat::translation_of(x));
         const se3_keyframe_path<T> a(times, poses);
         const split_keyframe_path<T> b(times, poses);
         for (int k = 0; k <= 50; ++k) {
             const T t = times.front() + (times.back() - times.front()) * T(k) / T(50);
             const keyframe_path_state<T> s = a.state(t), r = b.state(t);
-            position = std::max(position, double(quat::test::relative_difference(quat::translation_of(s.pose), quat::translation_of(r.pose))));
-            velocity = std::max(velocity, double(quat::test::relative_difference(s.velocity, r.velocity)));
-            acceleration = std::max(acceleration, double(quat::test::relative_difference(s.acceleration, r.acceleration)));
+            position = std::max(
+                position, double(quat::test::relative_difference(quat::translation_of(s.pose),
+                                                                 quat::translation_of(r.pose))));
+            velocity =
+                std::max(velocity, double(quat::test::relative_difference(s.velocity, r.velocity)));
+            acceleration =
+                std::max(acceleration,
+                         double(quat::test::relative_difference(s.acceleration, r.acceleration)));
         }
     }
     // Both are then the clamped C2 cubic spline of the positions. Measured: 1.4e-15, 8.2e-15,
@@ -321,8 +345,8 @@ TEST_CASE("se3_keyframe_path is C2 with half-turn steps and durations unequal by
     quat::test::jumps worst;
     int made = 0;
     for (int n = 0; n < 300; ++n) {
-        quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 40), 3.14, 1.0, 1000.0,
-                                          times, poses);
+        quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 40), 3.14, 1.0, 1000.0, times,
+                                          poses);
         const std::optional<se3_keyframe_path<double>> path =
             se3_keyframe_path<double>::try_make(times, poses);
         if (!path) continue;
@@ -364,9 +388,9 @@ TEST_CASE("se3_keyframe_path of uniformly scaled times is the same curve", "[se3
             velocity = std::max(
                 velocity, double(quat::test::relative_difference(a.velocity * scale, b.velocity)));
             if (std::isnormal(scale * scale * 1e4) && std::isnormal(scale * scale / 1e4))
-                acceleration = std::max(acceleration,
-                                        double(quat::test::relative_difference(
-                                            a.acceleration * scale * scale, b.acceleration)));
+                acceleration =
+                    std::max(acceleration, double(quat::test::relative_difference(
+                                               a.acceleration * scale * scale, b.acceleration)));
         }
         CHECK(position <= 1e-13);
         CHECK(velocity <= 1e-13);

@@ -112,22 +112,34 @@ TEMPLATE_TEST_CASE("split_keyframe_path starts and ends as its end segments' sle
                                           poses);
         const split_keyframe_path<T> path(times, poses);
         const std::size_t last = times.size() - 1;
-        const auto position = [&](std::size_t i) { return quat::translation_of(quat::normalize(poses[i])); };
+        const auto position = [&](std::size_t i) {
+            return quat::translation_of(quat::normalize(poses[i]));
+        };
         const auto rotation = [&](std::size_t i) { return quat::normalize(poses[i]).real; };
         const T first_duration = times[1] - times[0], last_duration = times[last] - times[last - 1];
         const keyframe_path_state<T> start = path.state(times[0]), end = path.state(times[last]);
-        ends = std::max({ends,
-                         double(quat::test::relative_difference(start.velocity, (position(1) - position(0)) / first_duration)),
-                         double(quat::test::relative_difference(end.velocity, (position(last) - position(last - 1)) / last_duration)),
-                         double(quat::test::relative_difference(start.body_angular_velocity, quat::body_angular_velocity(rotation(0), rotation(1), first_duration))),
-                         double(quat::test::relative_difference(end.body_angular_velocity, quat::body_angular_velocity(rotation(last - 1), rotation(last), last_duration)))});
+        ends = std::max(
+            {ends,
+             double(quat::test::relative_difference(start.velocity,
+                                                    (position(1) - position(0)) / first_duration)),
+             double(quat::test::relative_difference(
+                 end.velocity, (position(last) - position(last - 1)) / last_duration)),
+             double(quat::test::relative_difference(
+                 start.body_angular_velocity,
+                 quat::body_angular_velocity(rotation(0), rotation(1), first_duration))),
+             double(quat::test::relative_difference(
+                 end.body_angular_velocity,
+                 quat::body_angular_velocity(rotation(last - 1), rotation(last), last_duration)))});
         if (times.size() == 2) {
             for (int k = 0; k <= 10; ++k) {
                 const T u = T(k) / T(10), t = times[0] + u * first_duration;
                 const dual_quaternion<T> x = path(t);
                 const T v = (t - times[0]) / first_duration;
-                two = std::max({two, double(quat::angle_between(x.real, quat::slerp(rotation(0), rotation(1), v))),
-                                double(quat::test::relative_difference(quat::translation_of(x), position(0) + (position(1) - position(0)) * v))});
+                two = std::max(
+                    {two,
+                     double(quat::angle_between(x.real, quat::slerp(rotation(0), rotation(1), v))),
+                     double(quat::test::relative_difference(
+                         quat::translation_of(x), position(0) + (position(1) - position(0)) * v))});
             }
         }
     }

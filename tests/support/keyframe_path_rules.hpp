@@ -99,10 +99,9 @@ void check_edge_rules() {
     check_evaluates_to_nan(Path<double>(std::vector<double>{0.0}, std::vector<DQ>{a}));
     check_evaluates_to_nan(Path<double>(std::vector<double>{0.0, 1.0, 2.0}, std::vector<DQ>{a, b}));
     check_evaluates_to_nan(Path<double>(std::vector<double>{0.0, 1.0}, std::vector<DQ>{a, b, a}));
-    for (const std::vector<double>& bad : {std::vector<double>{0.0, 1.0, 1.0, 3.0},
-                                          std::vector<double>{0.0, 2.0, 1.0, 3.0},
-                                          std::vector<double>{0.0, nan, 1.0, 3.0},
-                                          std::vector<double>{0.0, 1.0, 2.0, infinity}}) {
+    for (const std::vector<double>& bad :
+         {std::vector<double>{0.0, 1.0, 1.0, 3.0}, std::vector<double>{0.0, 2.0, 1.0, 3.0},
+          std::vector<double>{0.0, nan, 1.0, 3.0}, std::vector<double>{0.0, 1.0, 2.0, infinity}}) {
         const Path<double> odd(bad, std::vector<DQ>{a, b, a, b});
         static_cast<void>(odd.state(0.5));
         static_cast<void>(odd(2.5));

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <quat/conversions.hpp>
@@ -72,9 +72,9 @@ keyframe_misses misses_at_keyframes(const Path& path, const std::vector<T>& time
         const keyframe_path_state<T> state = path.state(times[i]);
         for (const dual_quaternion<T>& x : {pose, state.pose}) {
             worst.angle = std::max(worst.angle, double(angle_between(x.real, expected.real)));
-            worst.position = std::max(
-                worst.position,
-                double(relative_difference(translation_of(x), translation_of(expected))));
+            worst.position =
+                std::max(worst.position,
+                         double(relative_difference(translation_of(x), translation_of(expected))));
         }
     }
     return worst;
@@ -123,8 +123,8 @@ jumps derivative_errors(const Path& path, const Reference& reference, const std:
                       pp = translation_of(plus.pose);
         const vec3<L> velocity = (pp - pm) / (2 * h);
         const vec3<L> acceleration = (pp - p0 * L(2) + pm) / (h * h);
-        const vec3<L> angular = to_rotation_vector(conjugate(minus.pose.real) * plus.pose.real) /
-                                (2 * h);
+        const vec3<L> angular =
+            to_rotation_vector(conjugate(minus.pose.real) * plus.pose.real) / (2 * h);
         const vec3<L> angular_rate =
             (plus.body_angular_velocity - minus.body_angular_velocity) / (2 * h);
         const auto grow = [](double& to, const vec3<T>& a, const vec3<L>& b) {

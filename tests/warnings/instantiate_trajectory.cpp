@@ -32,8 +32,9 @@ T trajectory() {
            evaluate_path<quat::split_keyframe_path, T, int>() +
            evaluate_path<quat::se3_keyframe_path, T, T>() +
            evaluate_path<quat::se3_keyframe_path, T, double>() +
-           quat::split_keyframe_path<T>(std::vector<T>{0, 1}, std::vector<quat::dual_quaternion<T>>(
-                                                                    2, quat::dual_quaternion<T>::identity()))
+           quat::split_keyframe_path<T>(
+               std::vector<T>{0, 1},
+               std::vector<quat::dual_quaternion<T>>(2, quat::dual_quaternion<T>::identity()))
                .orientation()(T(0.5))
                .w;
 }

@@ -68,7 +68,8 @@ public:
     /// or NaN poses a meaningless (often non-finite) one, never undefined behaviour. Where the
     /// rotation spline's solve does not converge (try_make is empty) the path is C1.
     template <class Times, class Poses>
-    se3_keyframe_path(const Times& times, const Poses& poses) : se3_keyframe_path(unpacked(times, poses)) {}
+    se3_keyframe_path(const Times& times, const Poses& poses)
+        : se3_keyframe_path(unpacked(times, poses)) {}
 
     /// The path, or std::nullopt when there are fewer than two keyframes, the sizes differ, a
     /// time or a pose component is not finite (also after conversion to T), the times do not
@@ -96,7 +97,9 @@ public:
     /// The pose at time t (body to world): at a keyframe's time exactly its normalized pose. A NaN
     /// t, or a path without keyframes (moved from, or built from bad input in a release build),
     /// gives NaN.
-    [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept { return pose_at(t, segment_of(t)); }
+    [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept {
+        return pose_at(t, segment_of(t));
+    }
 
     /// The pose, velocities and accelerations at time t, linear ones in units of the positions
     /// per unit of time (squared), angular ones in radians; frames as keyframe_path_state says.
@@ -128,8 +131,7 @@ public:
             segment = segment_of(time, segment);
             if constexpr (std::is_same_v<element, dual_quaternion<T>>)
                 result[k] = pose_at(time, segment);
-            else
-                result[k] = state_at(time, segment);
+            else result[k] = state_at(time, segment);
         }
     }
 
@@ -165,7 +167,8 @@ private:
     }
 
     se3_keyframe_path(keyframes&& k, const rotation_spline<T>& rotation)
-        : times_(std::move(k.times)), rotations_(std::move(k.rotations)),
+        : times_(std::move(k.times)),
+          rotations_(std::move(k.rotations)),
           positions_(std::move(k.positions)) {
         detail::se3_cubics(times_, rotations_, positions_, rotation, cubics_);
     }

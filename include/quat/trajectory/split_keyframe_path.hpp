@@ -67,13 +67,13 @@ public:
         keyframes k;
         detail::unpack_keyframe_poses(detail::data_of(times), pose, count, k.times, k.rotations,
                                       k.positions);
-        std::optional<rotation_spline<T>> rotation = rotation_spline<T>::try_make(k.times,
-                                                                                  k.rotations);
+        std::optional<rotation_spline<T>> rotation =
+            rotation_spline<T>::try_make(k.times, k.rotations);
         if (!rotation) return std::nullopt;
         split_keyframe_path path(std::move(k.times), std::move(k.positions), std::move(*rotation));
         for (std::size_t j = 0; j + 1 < path.times_.size(); ++j) {
-            const detail::cubic_bounds<T> b = detail::cubic_bounds_of(
-                path.cubics_[j], path.times_[j + 1] - path.times_[j]);
+            const detail::cubic_bounds<T> b =
+                detail::cubic_bounds_of(path.cubics_[j], path.times_[j + 1] - path.times_[j]);
             if (!detail::is_finite(b.value + detail::largest_magnitude(path.positions_[j])) ||
                 !detail::is_finite(b.rate) || !detail::is_finite(b.second))
                 return std::nullopt;
@@ -119,8 +119,7 @@ public:
             segment = segment_of(time, segment);
             if constexpr (std::is_same_v<element, dual_quaternion<T>>)
                 result[k] = to_dual_quaternion(rotation_(time), position_at(time, segment));
-            else
-                result[k] = state_at(time, segment);
+            else result[k] = state_at(time, segment);
         }
     }
 
@@ -157,7 +156,8 @@ private:
 
     split_keyframe_path(std::vector<T>&& times, std::vector<vec3<T>>&& positions,
                         rotation_spline<T>&& rotation)
-        : times_(std::move(times)), positions_(std::move(positions)),
+        : times_(std::move(times)),
+          positions_(std::move(positions)),
           rotation_(std::move(rotation)) {
         if (times_.size() >= 2)
             detail::clamped_cubic_spline(times_.data(), positions_.data(), times_.size(), cubics_);

@@ -68,15 +68,15 @@ inline namespace isa_generic {
 /// vector in both frames: world_angular_acceleration = R body_angular_acceleration.
 template <class T>
 struct keyframe_path_state {
-    dual_quaternion<T> pose;               ///< body to world, unit
-    vec3<T> velocity;                      ///< world: d/dt of the position t
-    vec3<T> acceleration;                  ///< world: d2/dt2 of the position t
-    vec3<T> angular_velocity;              ///< world axes: dR/dt = [angular_velocity]x R
-    vec3<T> angular_acceleration;          ///< world axes: d/dt of angular_velocity
-    vec3<T> body_velocity;                 ///< body axes: R^T velocity
-    vec3<T> body_acceleration;             ///< body axes: R^T acceleration
-    vec3<T> body_angular_velocity;         ///< body axes: dR/dt = R [body_angular_velocity]x
-    vec3<T> body_angular_acceleration;     ///< body axes: d/dt of body_angular_velocity
+    dual_quaternion<T> pose;            ///< body to world, unit
+    vec3<T> velocity;                   ///< world: d/dt of the position t
+    vec3<T> acceleration;               ///< world: d2/dt2 of the position t
+    vec3<T> angular_velocity;           ///< world axes: dR/dt = [angular_velocity]x R
+    vec3<T> angular_acceleration;       ///< world axes: d/dt of angular_velocity
+    vec3<T> body_velocity;              ///< body axes: R^T velocity
+    vec3<T> body_acceleration;          ///< body axes: R^T acceleration
+    vec3<T> body_angular_velocity;      ///< body axes: dR/dt = R [body_angular_velocity]x
+    vec3<T> body_angular_acceleration;  ///< body axes: d/dt of body_angular_velocity
 };
 
 namespace detail {

@@ -100,8 +100,7 @@ struct cubic_motion {
 template <class T>
 [[nodiscard]] constexpr cubic_motion<T> cubic_motion_at(const hermite_cubic<T>& f, T u,
                                                         T duration) noexcept {
-    return {((f.a * u + f.b) * u + f.c) * u,
-            ((f.a * (T(3) * u) + f.b * T(2)) * u + f.c) / duration,
+    return {((f.a * u + f.b) * u + f.c) * u, ((f.a * (T(3) * u) + f.b * T(2)) * u + f.c) / duration,
             (f.a * (T(6) * u) + f.b * T(2)) / duration / duration};
 }
 
@@ -178,10 +177,9 @@ void clamped_cubic_spline(const T* times, const vec3<T>* positions, std::size_t 
     cubics.resize(segments);
     for (std::size_t j = 0; j < segments; ++j) {
         // Two keyframes: the straight line, whose higher terms would round to tiny values.
-        const hermite_cubic<S> f =
-            count == 2 ? hermite_cubic<S>{vec3<S>{}, vec3<S>{}, rise[j]}
-                       : hermite_cubic_of(rise[j], velocity[j] * duration[j],
-                                          velocity[j + 1] * duration[j]);
+        const hermite_cubic<S> f = count == 2 ? hermite_cubic<S>{vec3<S>{}, vec3<S>{}, rise[j]}
+                                              : hermite_cubic_of(rise[j], velocity[j] * duration[j],
+                                                                 velocity[j + 1] * duration[j]);
         cubics[j] = {narrow<T>(f.a), narrow<T>(f.b), narrow<T>(f.c)};
     }
 }
@@ -198,6 +196,7 @@ void clamped_cubic_spline(const T* times, const vec3<T>* positions, std::size_t 
 #define QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 
@@ -501,8 +500,8 @@ void se3_cubics(const std::vector<T>& times, const std::vector<quaternion<T>>& r
     // right side in `x`) and to keyframe j (the right side in `end_rate`, reused for it).
     for (std::size_t j = 0; j < segments; ++j) {
         record& w = work[j];
-        const hermite_cubic<S> turning = hermite_cubic_of(
-            w.angle, w.omega * w.dt, (w.from_velocity * work[j + 1].omega) * w.dt);
+        const hermite_cubic<S> turning =
+            hermite_cubic_of(w.angle, w.omega * w.dt, (w.from_velocity * work[j + 1].omega) * w.dt);
         cubics[j].angular = {narrow<T>(turning.a), narrow<T>(turning.b), narrow<T>(turning.c)};
         const cubic_motion<S> end = cubic_motion_at(turning, S(1), w.dt);
         const left_jacobian_rates<S> rates = left_jacobian_rates_of(w.angle, end.rate, end.second);
@@ -626,7 +625,8 @@ public:
     /// or NaN poses a meaningless (often non-finite) one, never undefined behaviour. Where the
     /// rotation spline's solve does not converge (try_make is empty) the path is C1.
     template <class Times, class Poses>
-    se3_keyframe_path(const Times& times, const Poses& poses) : se3_keyframe_path(unpacked(times, poses)) {}
+    se3_keyframe_path(const Times& times, const Poses& poses)
+        : se3_keyframe_path(unpacked(times, poses)) {}
 
     /// The path, or std::nullopt when there are fewer than two keyframes, the sizes differ, a
     /// time or a pose component is not finite (also after conversion to T), the times do not
@@ -654,7 +654,9 @@ public:
     /// The pose at time t (body to world): at a keyframe's time exactly its normalized pose. A NaN
     /// t, or a path without keyframes (moved from, or built from bad input in a release build),
     /// gives NaN.
-    [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept { return pose_at(t, segment_of(t)); }
+    [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept {
+        return pose_at(t, segment_of(t));
+    }
 
     /// The pose, velocities and accelerations at time t, linear ones in units of the positions
     /// per unit of time (squared), angular ones in radians; frames as keyframe_path_state says.
@@ -686,8 +688,7 @@ public:
             segment = segment_of(time, segment);
             if constexpr (std::is_same_v<element, dual_quaternion<T>>)
                 result[k] = pose_at(time, segment);
-            else
-                result[k] = state_at(time, segment);
+            else result[k] = state_at(time, segment);
         }
     }
 
@@ -723,7 +724,8 @@ private:
     }
 
     se3_keyframe_path(keyframes&& k, const rotation_spline<T>& rotation)
-        : times_(std::move(k.times)), rotations_(std::move(k.rotations)),
+        : times_(std::move(k.times)),
+          rotations_(std::move(k.rotations)),
           positions_(std::move(k.positions)) {
         detail::se3_cubics(times_, rotations_, positions_, rotation, cubics_);
     }

@@ -40,8 +40,7 @@ struct cubic_motion {
 template <class T>
 [[nodiscard]] constexpr cubic_motion<T> cubic_motion_at(const hermite_cubic<T>& f, T u,
                                                         T duration) noexcept {
-    return {((f.a * u + f.b) * u + f.c) * u,
-            ((f.a * (T(3) * u) + f.b * T(2)) * u + f.c) / duration,
+    return {((f.a * u + f.b) * u + f.c) * u, ((f.a * (T(3) * u) + f.b * T(2)) * u + f.c) / duration,
             (f.a * (T(6) * u) + f.b * T(2)) / duration / duration};
 }
 
@@ -118,10 +117,9 @@ void clamped_cubic_spline(const T* times, const vec3<T>* positions, std::size_t 
     cubics.resize(segments);
     for (std::size_t j = 0; j < segments; ++j) {
         // Two keyframes: the straight line, whose higher terms would round to tiny values.
-        const hermite_cubic<S> f =
-            count == 2 ? hermite_cubic<S>{vec3<S>{}, vec3<S>{}, rise[j]}
-                       : hermite_cubic_of(rise[j], velocity[j] * duration[j],
-                                          velocity[j + 1] * duration[j]);
+        const hermite_cubic<S> f = count == 2 ? hermite_cubic<S>{vec3<S>{}, vec3<S>{}, rise[j]}
+                                              : hermite_cubic_of(rise[j], velocity[j] * duration[j],
+                                                                 velocity[j + 1] * duration[j]);
         cubics[j] = {narrow<T>(f.a), narrow<T>(f.b), narrow<T>(f.c)};
     }
 }

@@ -102,8 +102,8 @@ void se3_cubics(const std::vector<T>& times, const std::vector<quaternion<T>>& r
     // right side in `x`) and to keyframe j (the right side in `end_rate`, reused for it).
     for (std::size_t j = 0; j < segments; ++j) {
         record& w = work[j];
-        const hermite_cubic<S> turning = hermite_cubic_of(
-            w.angle, w.omega * w.dt, (w.from_velocity * work[j + 1].omega) * w.dt);
+        const hermite_cubic<S> turning =
+            hermite_cubic_of(w.angle, w.omega * w.dt, (w.from_velocity * work[j + 1].omega) * w.dt);
         cubics[j].angular = {narrow<T>(turning.a), narrow<T>(turning.b), narrow<T>(turning.c)};
         const cubic_motion<S> end = cubic_motion_at(turning, S(1), w.dt);
         const left_jacobian_rates<S> rates = left_jacobian_rates_of(w.angle, end.rate, end.second);
