@@ -81,9 +81,9 @@ public:
         return path;
     }
 
-    /// The pose at time t (body to world): at a keyframe's time exactly its normalized pose. A NaN
-    /// t, or a path without keyframes (moved from, or built from bad input in a release build),
-    /// gives NaN.
+    /// The pose at time t (body to world): at a keyframe's time its normalized pose, to a few eps.
+    /// A NaN t, or a path without keyframes (moved from, or built from bad input in a release
+    /// build), gives NaN.
     [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept {
         const std::size_t i = segment_of(t);
         return to_dual_quaternion(rotation_(t), position_at(t, i));

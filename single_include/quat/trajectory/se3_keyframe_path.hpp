@@ -651,9 +651,9 @@ public:
         return path.is_bounded() ? std::optional<se3_keyframe_path>(std::move(path)) : std::nullopt;
     }
 
-    /// The pose at time t (body to world): at a keyframe's time exactly its normalized pose. A NaN
-    /// t, or a path without keyframes (moved from, or built from bad input in a release build),
-    /// gives NaN.
+    /// The pose at time t (body to world): at a keyframe's time its normalized pose, to a few eps.
+    /// A NaN t, or a path without keyframes (moved from, or built from bad input in a release
+    /// build), gives NaN.
     [[nodiscard]] dual_quaternion<T> operator()(T t) const noexcept {
         return pose_at(t, segment_of(t));
     }
