@@ -11,6 +11,7 @@
 #include <quat/quat.hpp>
 #include <quat/registration/align_points.hpp>
 #include <quat/registration/hand_eye.hpp>
+#include <quat/trajectory.hpp>
 
 #include "support/allocation_counter.hpp"
 #include "support/catch.hpp"
@@ -183,5 +184,31 @@ TEST_CASE("the estimation families allocate nothing: Lie groups, means, registra
     const long after = allocations.load();
 
     CHECK(after == before);
+    CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("keyframe paths of rigid motions allocate nothing when evaluated", "[allocation]") {
+    std::vector<double> times(20), ts(300);
+    std::vector<quat::dual_quaterniond> keyframes(20), poses(300);
+    std::vector<quat::keyframe_path_state<double>> states(300);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        times[i] = 0.25 * double(i) + 0.01 * double(i % 3);
+        keyframes[i] = quat::to_dual_quaternion(
+            quat::from_rotation_vector(quat::vec3<double>{0.3 * double(i), 0.1, 0.0}),
+            quat::vec3<double>{double(i), 0.5 * double(i % 2), 0.0});
+    }
+    for (std::size_t k = 0; k < ts.size(); ++k) ts[k] = 0.02 * double(k) - 0.5;
+    const quat::split_keyframe_path<double> split(times, keyframes);
+    const quat::se3_keyframe_path<double> coupled(times, keyframes);
+    const long built = allocations.load();
+    double sink = split(2.2).real.w + split.state(2.2).acceleration.x + coupled(2.2).dual.x +
+                  coupled.state(2.2).body_angular_acceleration.y;
+    split.evaluate(ts, poses);
+    split.evaluate(ts, states);
+    sink += poses[100].real.w + states[200].velocity.x;
+    coupled.evaluate(ts, poses);
+    coupled.evaluate(ts, states);
+    sink += poses[100].real.w + states[200].velocity.x;
+    CHECK(allocations.load() == built);
     CHECK(std::isfinite(sink));
 }
