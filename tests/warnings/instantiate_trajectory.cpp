@@ -68,8 +68,10 @@ T keyframe_paths() {
 }  // namespace
 
 int main() {
-    const long double sum = bsplines<float, 4>() + bsplines<double, 6>() +
-                            bsplines<long double, 4>() + keyframe_paths<float>() +
-                            keyframe_paths<double>() + keyframe_paths<long double>();
+    const long double sum =
+        static_cast<long double>(bsplines<float, 4>()) +
+        static_cast<long double>(bsplines<double, 6>()) + bsplines<long double, 4>() +
+        static_cast<long double>(keyframe_paths<float>()) +
+        static_cast<long double>(keyframe_paths<double>()) + keyframe_paths<long double>();
     return sum > 0 ? 0 : 1;
 }

@@ -74,7 +74,8 @@ public:
     /// outside the domain.
     [[nodiscard]] constexpr euclidean_bspline_sample<T> evaluate(
         T t, jacobian_weights* J_p_points = nullptr, jacobian_weights* J_v_points = nullptr,
-        jacobian_weights* J_a_points = nullptr, jacobian_weights* J_j_points = nullptr) const noexcept {
+        jacobian_weights* J_a_points = nullptr,
+        jacobian_weights* J_j_points = nullptr) const noexcept {
         jacobian_weights* J[4] = {J_p_points, J_v_points, J_a_points, J_j_points};
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
@@ -101,14 +102,22 @@ public:
         return {at.segment, out[0], out[1], out[2], out[3]};
     }
 
-    /// evaluate(t, ...), or std::nullopt outside the domain or when one of the segment's K points
-    /// is not finite; never asserts. The weights are written only with a value.
+    /// evaluate(t, ...), or std::nullopt outside the domain, when one of the segment's K points is
+    /// not finite, or when an output or a requested weight overflows; never asserts. The weights
+    /// are written only with a value.
     [[nodiscard]] constexpr std::optional<euclidean_bspline_sample<T>> try_evaluate(
         T t, jacobian_weights* J_p_points = nullptr, jacobian_weights* J_v_points = nullptr,
-        jacobian_weights* J_a_points = nullptr, jacobian_weights* J_j_points = nullptr) const noexcept {
+        jacobian_weights* J_a_points = nullptr,
+        jacobian_weights* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
-        if (!at.valid || !view_.template finite_points<K>(at.segment)) return std::nullopt;
-        return evaluate(t, J_p_points, J_v_points, J_a_points, J_j_points);
+        if (!at.valid || !view_.template usable_points<K>(at.segment)) return std::nullopt;
+        return detail::finite_or_empty<euclidean_bspline_sample<T>>(
+            [&](auto*... J) { return evaluate(t, J...); },
+            [](const euclidean_bspline_sample<T>& s) {
+                return detail::is_finite(s.position) && detail::is_finite(s.velocity) &&
+                       detail::is_finite(s.acceleration) && detail::is_finite(s.jerk);
+            },
+            J_p_points, J_v_points, J_a_points, J_j_points);
     }
 
 private:

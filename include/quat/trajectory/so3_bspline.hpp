@@ -84,8 +84,9 @@ public:
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return detail::nan_quaternion<T>();
         return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-                   view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt),
-                   0, nullptr, nullptr, nullptr, nullptr)
+                   view_.points + at.segment,
+                   detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 0,
+                   nullptr, nullptr, nullptr, nullptr)
             .value;
     }
 
@@ -96,29 +97,41 @@ public:
     /// NaN sample, and NaN in every requested block, outside the domain.
     [[nodiscard]] constexpr so3_bspline_sample<T> evaluate(
         T t, jacobian_blocks* J_q_points = nullptr, jacobian_blocks* J_w_points = nullptr,
-        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        jacobian_blocks* J_a_points = nullptr,
+        jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
             for (jacobian_blocks* J : {J_q_points, J_w_points, J_a_points, J_j_points})
                 if (J != nullptr) detail::fill_nan(*J);
             const T nan = detail::quiet_nan<T>();
-            return {0, detail::nan_quaternion<T>(), {nan, nan, nan}, {nan, nan, nan},
-                    {nan, nan, nan}};
+            return {
+                0, detail::nan_quaternion<T>(), {nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}};
         }
         const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-            view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
+            view_.points + at.segment,
+            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
             J_q_points, J_w_points, J_a_points, J_j_points);
         return {at.segment, s.value, s.velocity, s.acceleration, s.jerk};
     }
 
     /// evaluate(t, ...), or std::nullopt outside the domain or when one of the segment's K control
-    /// points is not finite; never asserts. The Jacobians are written only with a value.
+    /// points is not finite or not a unit quaternion (|q|^2 within 1/4096 of 1, QUAT_ASSERT's
+    /// tolerance), or when an output or a requested Jacobian overflows (a very short knot
+    /// spacing); never asserts. The Jacobians are written only with a value.
     [[nodiscard]] constexpr std::optional<so3_bspline_sample<T>> try_evaluate(
         T t, jacobian_blocks* J_q_points = nullptr, jacobian_blocks* J_w_points = nullptr,
-        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        jacobian_blocks* J_a_points = nullptr,
+        jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
-        if (!at.valid || !view_.template finite_points<K>(at.segment)) return std::nullopt;
-        return evaluate(t, J_q_points, J_w_points, J_a_points, J_j_points);
+        if (!at.valid || !view_.template usable_points<K>(at.segment)) return std::nullopt;
+        return detail::finite_or_empty<so3_bspline_sample<T>>(
+            [&](auto*... J) { return evaluate(t, J...); },
+            [](const so3_bspline_sample<T>& s) {
+                return detail::is_finite(s.rotation) && detail::is_finite(s.angular_velocity) &&
+                       detail::is_finite(s.angular_acceleration) &&
+                       detail::is_finite(s.angular_jerk);
+            },
+            J_q_points, J_w_points, J_a_points, J_j_points);
     }
 
 private:

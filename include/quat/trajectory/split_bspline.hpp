@@ -24,17 +24,17 @@ namespace quat {
 /// and positions first .. first + K - 1.
 template <class T>
 struct split_bspline_sample {
-    std::size_t first;                 ///< the first control point of the segment
-    quaternion<T> rotation;            ///< R(t)
-    vec3<T> position;                  ///< p(t), world frame
-    vec3<T> angular_velocity;          ///< omega, body frame (as so3_bspline)
-    vec3<T> angular_acceleration;      ///< omega', body frame
-    vec3<T> angular_jerk;              ///< omega'', body frame; for K = 4 it jumps at knots
-    vec3<T> linear_velocity;           ///< p', world frame
-    vec3<T> linear_acceleration;       ///< p'', world frame
-    vec3<T> linear_jerk;               ///< p''', world frame; for K = 4 it jumps at knots
-    se3::twist<T> body_velocity;       ///< the pose's body twist (R^T p', omega)
-    se3::twist<T> body_acceleration;   ///< its derivative (R^T p'' - omega x R^T p', omega')
+    std::size_t first;                ///< the first control point of the segment
+    quaternion<T> rotation;           ///< R(t)
+    vec3<T> position;                 ///< p(t), world frame
+    vec3<T> angular_velocity;         ///< omega, body frame (as so3_bspline)
+    vec3<T> angular_acceleration;     ///< omega', body frame
+    vec3<T> angular_jerk;             ///< omega'', body frame; for K = 4 it jumps at knots
+    vec3<T> linear_velocity;          ///< p', world frame
+    vec3<T> linear_acceleration;      ///< p'', world frame
+    vec3<T> linear_jerk;              ///< p''', world frame; for K = 4 it jumps at knots
+    se3::twist<T> body_velocity;      ///< the pose's body twist (R^T p', omega)
+    se3::twist<T> body_acceleration;  ///< its derivative (R^T p'' - omega x R^T p', omega')
 };
 
 /// The pose (R(t), p(t)) of an so3_bspline<T, static_cast<std::size_t>(K)> over `rotations` and a euclidean_bspline<T, static_cast<std::size_t>(K)>
@@ -79,11 +79,13 @@ public:
     /// The number of control points (of the rotations; not valid() when the positions differ).
     [[nodiscard]] constexpr std::size_t size() const noexcept { return rotation_.size(); }
     /// The rotation half, an so3_bspline view.
-    [[nodiscard]] constexpr const so3_bspline<T, static_cast<std::size_t>(K)>& rotation_spline() const noexcept {
+    [[nodiscard]] constexpr const so3_bspline<T, static_cast<std::size_t>(K)>& rotation_spline()
+        const noexcept {
         return rotation_;
     }
     /// The position half, a euclidean_bspline view.
-    [[nodiscard]] constexpr const euclidean_bspline<T, static_cast<std::size_t>(K)>& position_spline() const noexcept {
+    [[nodiscard]] constexpr const euclidean_bspline<T, static_cast<std::size_t>(K)>&
+    position_spline() const noexcept {
         return position_;
     }
 
@@ -107,8 +109,8 @@ public:
         const T time = valid() ? t : detail::quiet_nan<T>();
         const so3_bspline_sample<T> r =
             rotation_.evaluate(time, J_q_rotations, J_w_rotations, J_a_rotations, J_j_rotations);
-        const euclidean_bspline_sample<T> p = position_.evaluate(
-            time, J_p_positions, J_v_positions, J_dv_positions, J_ddv_positions);
+        const euclidean_bspline_sample<T> p =
+            position_.evaluate(time, J_p_positions, J_v_positions, J_dv_positions, J_ddv_positions);
         const quaternion<T> inverse = conjugate(r.rotation);
         const vec3<T> body_linear = rotate(inverse, p.velocity);
         const vec3<T> body_linear_rate =
@@ -127,8 +129,9 @@ public:
     }
 
     /// evaluate(t, ...), or std::nullopt when the view is not valid, t is outside the domain, or one
-    /// of the segment's rotations or positions is not finite; never asserts. The Jacobians are
-    /// written only with a value.
+    /// of the segment's rotations or positions is not finite or a rotation is not a unit quaternion
+    /// (as so3_bspline::try_evaluate), or when an output or a requested Jacobian overflows; never
+    /// asserts. The Jacobians are written only with a value.
     [[nodiscard]] constexpr std::optional<split_bspline_sample<T>> try_evaluate(
         T t, jacobian_blocks* J_q_rotations = nullptr, jacobian_blocks* J_w_rotations = nullptr,
         jacobian_blocks* J_a_rotations = nullptr, jacobian_blocks* J_j_rotations = nullptr,
@@ -138,8 +141,22 @@ public:
         if (!valid() || !rotation_.try_evaluate(t).has_value() ||
             !position_.try_evaluate(t).has_value())
             return std::nullopt;
-        return evaluate(t, J_q_rotations, J_w_rotations, J_a_rotations, J_j_rotations,
-                        J_p_positions, J_v_positions, J_dv_positions, J_ddv_positions);
+        return detail::finite_or_empty<split_bspline_sample<T>>(
+            [&](auto*... J) { return evaluate(t, J...); },
+            [](const split_bspline_sample<T>& s) {
+                const auto finite = [](const se3::twist<T>& x) {
+                    return detail::is_finite(x.linear) && detail::is_finite(x.angular);
+                };
+                return detail::is_finite(s.rotation) && detail::is_finite(s.position) &&
+                       detail::is_finite(s.angular_velocity) &&
+                       detail::is_finite(s.angular_acceleration) &&
+                       detail::is_finite(s.angular_jerk) && detail::is_finite(s.linear_velocity) &&
+                       detail::is_finite(s.linear_acceleration) &&
+                       detail::is_finite(s.linear_jerk) && finite(s.body_velocity) &&
+                       finite(s.body_acceleration);
+            },
+            J_q_rotations, J_w_rotations, J_a_rotations, J_j_rotations, J_p_positions,
+            J_v_positions, J_dv_positions, J_ddv_positions);
     }
 
 private:

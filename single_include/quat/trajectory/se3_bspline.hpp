@@ -376,15 +376,18 @@ public:
     /// The number of control points.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return view_.count; }
     /// The control points viewed.
-    [[nodiscard]] constexpr const dual_quaternion<T>* points() const noexcept { return view_.points; }
+    [[nodiscard]] constexpr const dual_quaternion<T>* points() const noexcept {
+        return view_.points;
+    }
 
     /// X(t) alone (no derivatives): NaN outside the domain (see the class comment).
     [[nodiscard]] constexpr dual_quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()};
         return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-                   view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt),
-                   0, nullptr, nullptr, nullptr, nullptr)
+                   view_.points + at.segment,
+                   detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 0,
+                   nullptr, nullptr, nullptr, nullptr)
             .value;
     }
 
@@ -395,31 +398,48 @@ public:
     /// sample, and NaN in every requested block, outside the domain.
     [[nodiscard]] constexpr se3_bspline_sample<T> evaluate(
         T t, jacobian_blocks* J_x_points = nullptr, jacobian_blocks* J_v_points = nullptr,
-        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        jacobian_blocks* J_a_points = nullptr,
+        jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
             for (jacobian_blocks* J : {J_x_points, J_v_points, J_a_points, J_j_points})
                 if (J != nullptr) detail::fill_nan(*J);
             const T nan = detail::quiet_nan<T>();
             const se3::twist<T> nan_twist{{nan, nan, nan}, {nan, nan, nan}};
-            return {0, {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()}, nan_twist,
-                    nan_twist, nan_twist};
+            return {0,
+                    {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()},
+                    nan_twist,
+                    nan_twist,
+                    nan_twist};
         }
         const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-            view_.points + at.segment, detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
+            view_.points + at.segment,
+            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
             J_x_points, J_v_points, J_a_points, J_j_points);
         return {at.segment, s.value, se3::to_twist(s.velocity), se3::to_twist(s.acceleration),
                 se3::to_twist(s.jerk)};
     }
 
     /// evaluate(t, ...), or std::nullopt outside the domain or when one of the segment's K control
-    /// points is not finite; never asserts. The Jacobians are written only with a value.
+    /// points is not finite or its real part is not a unit quaternion (|q|^2 within 1/4096 of 1,
+    /// QUAT_ASSERT's tolerance), or when an output or a requested Jacobian overflows (a very short
+    /// knot spacing); never asserts. The Jacobians are written only with a value.
     [[nodiscard]] constexpr std::optional<se3_bspline_sample<T>> try_evaluate(
         T t, jacobian_blocks* J_x_points = nullptr, jacobian_blocks* J_v_points = nullptr,
-        jacobian_blocks* J_a_points = nullptr, jacobian_blocks* J_j_points = nullptr) const noexcept {
+        jacobian_blocks* J_a_points = nullptr,
+        jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
-        if (!at.valid || !view_.template finite_points<K>(at.segment)) return std::nullopt;
-        return evaluate(t, J_x_points, J_v_points, J_a_points, J_j_points);
+        if (!at.valid || !view_.template usable_points<K>(at.segment)) return std::nullopt;
+        return detail::finite_or_empty<se3_bspline_sample<T>>(
+            [&](auto*... J) { return evaluate(t, J...); },
+            [](const se3_bspline_sample<T>& s) {
+                const auto finite = [](const se3::twist<T>& x) {
+                    return detail::is_finite(x.linear) && detail::is_finite(x.angular);
+                };
+                return detail::is_finite(s.motion.real) && detail::is_finite(s.motion.dual) &&
+                       finite(s.velocity) && finite(s.acceleration) && finite(s.jerk);
+            },
+            J_x_points, J_v_points, J_a_points, J_j_points);
     }
 
 private:

@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <tuple>
 
 #include "../../detail/math.hpp"
 #include "../../matrix.hpp"
@@ -17,17 +19,19 @@ namespace quat {
 #include "../../detail/isa_namespace.inc"
 namespace detail {
 
-/// True when every component is finite.
+/// True when every component is finite and the rotation (the quaternion, a motion's real part) is
+/// a unit quaternion to is_near_unit's tolerance, the one QUAT_ASSERT checks: the points
+/// try_evaluate accepts.
 template <class T>
-[[nodiscard]] constexpr bool is_finite_point(const quaternion<T>& q) noexcept {
-    return is_finite(q);
+[[nodiscard]] constexpr bool is_usable_point(const quaternion<T>& q) noexcept {
+    return is_finite(q) && is_near_unit(q);
 }
 template <class T>
-[[nodiscard]] constexpr bool is_finite_point(const dual_quaternion<T>& x) noexcept {
-    return is_finite(x.real) && is_finite(x.dual);
+[[nodiscard]] constexpr bool is_usable_point(const dual_quaternion<T>& x) noexcept {
+    return is_finite(x.real) && is_finite(x.dual) && is_near_unit(x.real);
 }
 template <class T>
-[[nodiscard]] constexpr bool is_finite_point(const vec3<T>& v) noexcept {
+[[nodiscard]] constexpr bool is_usable_point(const vec3<T>& v) noexcept {
     return is_finite(v);
 }
 
@@ -41,6 +45,46 @@ constexpr void fill_nan(std::array<matrix<T, R, C>, N>& blocks) noexcept {
 template <class T, std::size_t N>
 constexpr void fill_nan(std::array<T, N>& weights) noexcept {
     for (T& w : weights) w = quiet_nan<T>();
+}
+
+/// True when every entry of every block (or every weight) is finite.
+template <class T, int R, int C, std::size_t N>
+[[nodiscard]] constexpr bool all_finite(const std::array<matrix<T, R, C>, N>& blocks) noexcept {
+    for (const matrix<T, R, C>& m : blocks)
+        for (int r = 0; r < R; ++r)
+            for (int c = 0; c < C; ++c)
+                if (!is_finite(m(r, c))) return false;
+    return true;
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr bool all_finite(const std::array<T, N>& weights) noexcept {
+    for (const T& w : weights)
+        if (!is_finite(w)) return false;
+    return true;
+}
+
+/// try_evaluate's rule for what it returns: evaluate(J...) (a callable taking one pointer per
+/// Jacobian, null where not requested) into local Jacobians; the sample, with the requested
+/// Jacobians copied to the caller's, when finite_sample(sample) holds and each requested Jacobian
+/// is finite, and std::nullopt, the caller's Jacobians untouched, when a value overflowed (a knot
+/// spacing so short that velocities, their derivatives or their Jacobians exceed T's range).
+template <class Sample, class Evaluate, class FiniteSample, class... Blocks>
+[[nodiscard]] constexpr std::optional<Sample> finite_or_empty(const Evaluate& evaluate,
+                                                              const FiniteSample& finite_sample,
+                                                              Blocks*... requested) noexcept {
+    std::tuple<Blocks...> local{};
+    const Sample sample = std::apply(
+        [&](Blocks&... l) { return evaluate((requested != nullptr ? &l : nullptr)...); }, local);
+    const bool finite =
+        finite_sample(sample) &&
+        std::apply(
+            [&](const Blocks&... l) { return ((requested == nullptr || all_finite(l)) && ...); },
+            local);
+    if (!finite) return std::nullopt;
+    std::apply(
+        [&](const Blocks&... l) { ((requested != nullptr ? void(*requested = l) : void()), ...); },
+        local);
+    return sample;
 }
 
 /// Control points, their count, t0 and dt; see spline_position for the domain.
@@ -65,11 +109,11 @@ struct spline_view {
         if (points == nullptr) return {0, quiet_nan<T>(), false};
         return spline_position<K>(t, t0, dt, count);
     }
-    /// True when the K points of the segment are finite.
+    /// True when the K points of the segment are usable (is_usable_point).
     template <int K>
-    [[nodiscard]] constexpr bool finite_points(std::size_t segment) const noexcept {
+    [[nodiscard]] constexpr bool usable_points(std::size_t segment) const noexcept {
         for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
-            if (!is_finite_point(points[segment + m])) return false;
+            if (!is_usable_point(points[segment + m])) return false;
         return true;
     }
 };
