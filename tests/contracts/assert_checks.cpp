@@ -18,6 +18,7 @@
 #include <quat/quat.hpp>
 #include <quat/registration/align_points.hpp>
 #include <quat/registration/hand_eye.hpp>
+#include <quat/trajectory.hpp>
 
 namespace {
 
@@ -106,6 +107,36 @@ int valid() {
     sink = sink + quat::squad(drifted, quat::squad_control(drifted, drifted, turned),
                               quat::squad_control(drifted, turned, unit), turned, 0.4)
                       .w;
+    // Trajectories: drifted control points and keyframes, matching sizes, t before, inside and
+    // after the domain (the B-splines have no debug check of their own: NaN outside).
+    const std::vector<quatd> controls{drifted, turned, unit, drifted, turned};
+    std::vector<vec3<double>> positions(5, v);
+    std::vector<quat::dual_quaterniond> motions_in;
+    for (const quatd& q : controls) motions_in.push_back(quat::to_dual_quaternion(q, v));
+    quat::so3_bspline<double, 4>::jacobian_blocks J3{};
+    quat::se3_bspline<double, 4>::jacobian_blocks J6{};
+    for (const double at : {-1.0, 0.0, 0.7, 2.0, 3.0}) {
+        sink = sink +
+               quat::so3_bspline<double, 4>(controls, 0.0, 1.0)
+                   .evaluate(at, &J3, &J3, &J3, &J3)
+                   .rotation.w +
+               quat::se3_bspline<double, 4>(motions_in, 0.0, 1.0)
+                   .evaluate(at, &J6, &J6, &J6, &J6)
+                   .motion.real.w +
+               quat::split_bspline<double, 4>(controls, positions, 0.0, 1.0)
+                   .evaluate(at)
+                   .body_velocity.linear.x;
+    }
+    const std::vector<double> pose_times{0, 1, 2.5, 4, 4.5};
+    const quat::split_keyframe_path<double> split_path(pose_times, motions_in);
+    const quat::se3_keyframe_path<double> se3_path(pose_times, motions_in);
+    std::vector<quat::keyframe_path_state<double>> states(2);
+    std::vector<quat::dual_quaterniond> poses_out(2);
+    split_path.evaluate(std::vector<double>{0.5, 3.0}, states);
+    se3_path.evaluate(std::vector<int>{1, 4}, poses_out);
+    for (const double at : {-1.0, 0.0, 0.7, 2.5, 5.0})
+        sink = sink + split_path.state(at).velocity.x + se3_path(at).real.w;
+    sink = sink + states[1].pose.real.w + poses_out[1].dual.x;
     std::printf("no assertion fired (%g)\n", static_cast<double>(sink));
     return 0;
 }
@@ -314,6 +345,27 @@ int run(const char* name) {
         std::vector<quat::rotation_matrix<double>> matrices(64);
         quat::to_matrix_each(reinterpret_cast<const quatd*>(matrices.data()), matrices.data(), 8);
     }
+    // Keyframe paths: sizes, times, and the sizes of a batch evaluation.
+    const std::vector<quat::dual_quaterniond> poses(3,
+                                                    quat::to_dual_quaternion(quatd::identity(), v));
+    const std::vector<double> in_order{0, 1, 2}, out_of_order{0, 2, 1};
+    std::vector<quat::dual_quaterniond> short_out(1);
+    if (std::strcmp(name, "split_keyframe_path_size") == 0)
+        sink = quat::split_keyframe_path<double>(std::vector<double>{0, 1}, poses)(0.5).real.w;
+    if (std::strcmp(name, "split_keyframe_path_unsorted") == 0)
+        sink = quat::split_keyframe_path<double>(out_of_order, poses)(0.5).real.w;
+    if (std::strcmp(name, "split_keyframe_path_evaluate_size") == 0)
+        quat::split_keyframe_path<double>(in_order, poses).evaluate(in_order, short_out);
+    if (std::strcmp(name, "se3_keyframe_path_size") == 0)
+        sink = quat::se3_keyframe_path<double>(std::vector<double>{0},
+                                               std::vector<quat::dual_quaterniond>(1))(0.5)
+                   .real.w;
+    if (std::strcmp(name, "se3_keyframe_path_unsorted") == 0)
+        sink = quat::se3_keyframe_path<double>(
+                   std::vector<double>{0, 1, std::numeric_limits<double>::quiet_NaN()}, poses)(0.5)
+                   .real.w;
+    if (std::strcmp(name, "se3_keyframe_path_evaluate_size") == 0)
+        quat::se3_keyframe_path<double>(in_order, poses).evaluate(in_order, short_out);
     std::printf("no assertion fired for '%s' (%g)\n", name, static_cast<double>(sink));
     return 0;
 }

@@ -18,6 +18,7 @@
 #include <quat/quat.hpp>
 #include <quat/registration/align_points.hpp>
 #include <quat/registration/hand_eye.hpp>
+#include <quat/trajectory.hpp>
 
 namespace {
 
@@ -143,6 +144,30 @@ void paths(std::size_t a, std::size_t b) {
     const quat::rotation_spline<double> spline(times, q);
     check(is_nan(spline(0.5)) && is_nan(spline(1.0)), "rotation_spline");
     check(!quat::rotation_spline<double>::try_make(times, q), "rotation_spline::try_make");
+    // Rigid paths through (time, pose) keyframes: NaN poses and states, an empty try_make.
+    const auto poses = motions(b);
+    const quat::split_keyframe_path<double> split(times, poses);
+    const quat::se3_keyframe_path<double> screw(times, poses);
+    for (const double t : {-1.0, 0.0, 0.5, 1.0, 10.0}) {
+        check(is_nan(split(t)) && is_nan(split.state(t).pose), "split_keyframe_path");
+        check(is_nan(screw(t)) && std::isnan(screw.state(t).velocity.x), "se3_keyframe_path");
+    }
+    check(!quat::split_keyframe_path<double>::try_make(times, poses),
+          "split_keyframe_path::try_make");
+    check(!quat::se3_keyframe_path<double>::try_make(times, poses), "se3_keyframe_path::try_make");
+    // The split B-spline over a and b points: not valid, the NaN sample, an empty try_evaluate.
+    const auto r = rotations(a);
+    const auto p = points(b);
+    const quat::split_bspline<double, 2> spline2(r, p, 0.0, 1.0);
+    quat::split_bspline<double, 2>::jacobian_blocks J{};
+    quat::split_bspline<double, 2>::jacobian_weights W{};
+    check(!spline2.valid(), "split_bspline::valid");
+    for (const double t : {0.0, 0.5, 1.0}) {
+        check(is_nan(spline2.evaluate(t, &J, nullptr, nullptr, nullptr, &W).rotation) &&
+                  std::isnan(J[0](0, 0)) && std::isnan(W[1]),
+              "split_bspline::evaluate");
+        check(!spline2.try_evaluate(t), "split_bspline::try_evaluate");
+    }
 }
 
 // Batches: the common length, nothing written past it.
@@ -214,6 +239,32 @@ void batches(std::size_t a, std::size_t b) {
         std::vector<quaternion<double>> values(b, {untouched, untouched, untouched, untouched});
         spline.evaluate(at, values);
         check(untouched_from(values, common), "rotation_spline::evaluate");
+        // The keyframe paths' evaluation over many times, into poses and into states.
+        const quat::split_keyframe_path<double> split(times, motions(a));
+        const quat::se3_keyframe_path<double> screw(times, motions(a));
+        const dual_quaternion<double> marked{{untouched, untouched, untouched, untouched},
+                                             {untouched, untouched, untouched, untouched}};
+        std::vector<dual_quaternion<double>> poses(b, marked);
+        quat::keyframe_path_state<double> marked_state{};
+        marked_state.pose = marked;
+        std::vector<quat::keyframe_path_state<double>> states(b, marked_state);
+        const auto untouched_after = [&](const auto& out, const auto& pose_of) {
+            for (std::size_t i = common; i < out.size(); ++i)
+                if (!(pose_of(out[i]).real.x == untouched)) return false;
+            return true;
+        };
+        const auto pose = [](const dual_quaternion<double>& x) { return x; };
+        const auto state_pose = [](const quat::keyframe_path_state<double>& x) { return x.pose; };
+        split.evaluate(at, poses);
+        check(untouched_after(poses, pose), "split_keyframe_path::evaluate (poses)");
+        split.evaluate(at, states);
+        check(untouched_after(states, state_pose), "split_keyframe_path::evaluate (states)");
+        poses.assign(b, marked);
+        states.assign(b, marked_state);
+        screw.evaluate(at, poses);
+        check(untouched_after(poses, pose), "se3_keyframe_path::evaluate (poses)");
+        screw.evaluate(at, states);
+        check(untouched_after(states, state_pose), "se3_keyframe_path::evaluate (states)");
     }
 }
 
