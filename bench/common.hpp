@@ -320,6 +320,7 @@ void register_keyframes();   // bench_keyframes.cpp
 void register_rigid();       // bench_rigid.cpp
 void register_each();        // bench_each.cpp
 void register_lie();         // bench_lie.cpp
+void register_trajectory();  // bench_trajectory.cpp
 
 /// `quat_bench --counts`: the operation-count tables.
 int print_counts();

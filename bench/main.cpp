@@ -388,6 +388,7 @@ int main(int argc, char** argv) {
     bench::register_rigid();
     bench::register_each();
     bench::register_lie();
+    bench::register_trajectory();
     if (!table) {
         benchmark::RunSpecifiedBenchmarks();
     } else {
