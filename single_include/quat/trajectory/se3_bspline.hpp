@@ -71,7 +71,171 @@
 #include <cstddef>
 
 #include "../lie/so3.hpp"
-#include "../trajectory/euclidean_bspline.hpp"
+// ---- begin quat/trajectory/detail/uniform_basis.hpp ----
+// The cumulative basis of uniform B-splines of order K (degree K - 1) and the segment of a uniform
+// knot sequence that holds a time. With knots t0 + m dt, the spline on [t0 + i dt, t0 + (i + 1) dt]
+// blends control points i .. i + K - 1 with weights b_s(u), u = (t - t0) / dt - i in [0, 1]; the
+// cumulative weights are b~_j(u) = sum over s >= j of b_s(u), so b~_0 = 1 (K. Qin, "General matrix
+// representations for B-splines", 2000; C. Sommer, V. Usenko, D. Schubert, N. Demmel, D. Cremers,
+// "Efficient Derivative Computation for Cumulative B-Splines on Lie Groups", CVPR 2020).
+#ifndef QUAT_TRAJECTORY_DETAIL_UNIFORM_BASIS_HPP_INCLUDED
+#define QUAT_TRAJECTORY_DETAIL_UNIFORM_BASIS_HPP_INCLUDED
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// n!, for the small n of spline orders.
+[[nodiscard]] constexpr long long factorial_of(int n) noexcept {
+    long long f = 1;
+    for (int i = 2; i <= n; ++i) f *= i;
+    return f;
+}
+
+/// The binomial coefficient C(n, r), 0 outside 0 <= r <= n.
+[[nodiscard]] constexpr long long binomial_of(int n, int r) noexcept {
+    if (r < 0 || r > n) return 0;
+    return factorial_of(n) / (factorial_of(r) * factorial_of(n - r));
+}
+
+/// (K - 1)! times the coefficients of the cumulative basis, table[d][j][n]: the coefficient of u^n
+/// in (K - 1)! d^d/du^d b~_j(u). Qin's blending matrix of the uniform B-spline of order K is
+///     (K - 1)! m(s, n) = C(K - 1, n) sum_(l = s .. K - 1) (-1)^(l - s) C(K, l - s) (K - 1 - l)^(K - 1 - n)
+/// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
+/// u^n by n and moves it to u^(n - 1).
+template <int K>
+[[nodiscard]] constexpr std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
+cumulative_basis_table() noexcept {
+    std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4> table{};
+    for (int s = 0; s < K; ++s)
+        for (int n = 0; n < K; ++n) {
+            long long sum = 0;
+            for (int l = s; l < K; ++l) {
+                long long power = 1;
+                for (int e = 0; e < K - 1 - n; ++e) power *= (K - 1 - l);
+                sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(K, l - s) * power;
+            }
+            const long long entry = binomial_of(K - 1, n) * sum;
+            for (int j = 0; j <= s; ++j) table[0][static_cast<std::size_t>(j)]
+                                              [static_cast<std::size_t>(n)] += entry;
+        }
+    for (std::size_t d = 1; d < 4; ++d)
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
+            for (std::size_t n = 0; n + 1 < static_cast<std::size_t>(K); ++n)
+                table[d][j][n] = static_cast<long long>(n + 1) * table[d - 1][j][n + 1];
+    return table;
+}
+
+/// The cumulative weights and their first three time derivatives at one time: b[d][j] is
+/// d^d/dt^d b~_j (j = 0 .. K - 1; b[0][0] = 1, b[d][0] = 0 for d > 0).
+template <class T, int K>
+struct cumulative_weights {
+    std::array<std::array<T, static_cast<std::size_t>(K)>, 4> b;
+};
+
+/// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
+/// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
+template <class T, int K>
+[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(const T& u,
+                                                                       const T& dt) noexcept {
+    constexpr auto table = cumulative_basis_table<K>();
+    cumulative_weights<T, static_cast<std::size_t>(K)> w{};
+    T scale = T(static_cast<double>(factorial_of(K - 1)));
+    for (std::size_t d = 0; d < 4; ++d) {
+        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j) {
+            if (d + 1 > K) {
+                w.b[d][j] = T(0);
+                continue;
+            }
+            const std::size_t top = K - 1 - d;  // the degree after d derivatives
+            T sum = T(static_cast<double>(table[d][j][top]));
+            for (std::size_t n = top; n-- > 0;) sum = sum * u + T(static_cast<double>(table[d][j][n]));
+            w.b[d][j] = sum / scale;
+        }
+        scale = scale * dt;
+    }
+    return w;
+}
+
+/// Where a time falls on a uniform knot sequence: the segment (its first control point) and u in
+/// [0, 1]; valid is false outside the spline's domain (see spline_position).
+template <class T>
+struct knot_position {
+    std::size_t segment;
+    T u;
+    bool valid;
+};
+
+/// The segment of the uniform spline of order K over `count` control points, with knots t0 + m dt,
+/// that holds t: for t0 <= t <= t0 + (count - K + 1) dt (computed so in T), s = (t - t0) / dt
+/// (at most count - K + 1), segment = min(floor(s), count - K), u = s - segment (the last segment
+/// includes its end, u = 1). Invalid (segment 0, u NaN) for count < K, dt not positive or not
+/// finite, t0 not finite, t NaN or outside that range.
+template <int K, class T>
+[[nodiscard]] constexpr knot_position<T> spline_position(const T& t, const T& t0, const T& dt,
+                                                         std::size_t count) noexcept {
+    const knot_position<T> invalid{0, quiet_nan<T>(), false};
+    if (count < static_cast<std::size_t>(K) || !(dt > T(0)) || !is_finite(dt) || !is_finite(t0))
+        return invalid;
+    const std::size_t last = count - static_cast<std::size_t>(K);
+    const T segments = T(static_cast<double>(last + 1));
+    // The range as times, t0 <= t <= t0 + segments dt (the end as end_time() rounds it), then s
+    // clamped to it: (t - t0) / dt may round past the last knot at the end itself.
+    if (!(t >= t0) || !(t <= t0 + segments * dt)) return invalid;
+    T s = (t - t0) / dt;
+    if (s > segments) s = segments;
+    std::size_t segment = last;
+    if constexpr (std::is_floating_point_v<T>) {
+        // s < last fits std::size_t, and its truncation is its floor (s >= 0).
+        if (s < T(static_cast<double>(last))) segment = static_cast<std::size_t>(s);
+        if (segment > last) segment = last;
+    } else {
+        // A user scalar need not convert to an integer: the last i <= last with i <= s.
+        std::size_t low = 0, high = last;
+        while (low < high) {
+            const std::size_t middle = low + (high - low + 1) / 2;
+            if (s < T(static_cast<double>(middle))) high = middle - 1;
+            else low = middle;
+        }
+        segment = low;
+    }
+    return {segment, s - T(static_cast<double>(segment)), true};
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_TRAJECTORY_DETAIL_UNIFORM_BASIS_HPP_INCLUDED
+// ---- end quat/trajectory/detail/uniform_basis.hpp ----
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -295,6 +459,150 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
 
 #endif  // QUAT_TRAJECTORY_DETAIL_LIE_BSPLINE_HPP_INCLUDED
 // ---- end quat/trajectory/detail/lie_bspline.hpp ----
+// ---- begin quat/trajectory/detail/spline_view.hpp ----
+// The non-owning view every uniform spline of trajectory/ holds: its control points, their count,
+// the start time t0 and the knot spacing dt, with the domain checks the splines share.
+#ifndef QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
+#define QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <tuple>
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// True when every component is finite and the rotation (the quaternion, a motion's real part) is
+/// a unit quaternion to is_near_unit's tolerance, the one QUAT_ASSERT checks: the points
+/// try_evaluate accepts.
+template <class T>
+[[nodiscard]] constexpr bool is_usable_point(const quaternion<T>& q) noexcept {
+    return is_finite(q) && is_near_unit(q);
+}
+template <class T>
+[[nodiscard]] constexpr bool is_usable_point(const dual_quaternion<T>& x) noexcept {
+    return is_finite(x.real) && is_finite(x.dual) && is_near_unit(x.real);
+}
+template <class T>
+[[nodiscard]] constexpr bool is_usable_point(const vec3<T>& v) noexcept {
+    return is_finite(v);
+}
+
+/// Every entry of every block NaN.
+template <class T, int R, int C, std::size_t N>
+constexpr void fill_nan(std::array<matrix<T, R, C>, N>& blocks) noexcept {
+    for (matrix<T, R, C>& m : blocks)
+        for (int r = 0; r < R; ++r)
+            for (int c = 0; c < C; ++c) m(r, c) = quiet_nan<T>();
+}
+template <class T, std::size_t N>
+constexpr void fill_nan(std::array<T, N>& weights) noexcept {
+    for (T& w : weights) w = quiet_nan<T>();
+}
+
+/// True when every entry of every block (or every weight) is finite.
+template <class T, int R, int C, std::size_t N>
+[[nodiscard]] constexpr bool all_finite(const std::array<matrix<T, R, C>, N>& blocks) noexcept {
+    for (const matrix<T, R, C>& m : blocks)
+        for (int r = 0; r < R; ++r)
+            for (int c = 0; c < C; ++c)
+                if (!is_finite(m(r, c))) return false;
+    return true;
+}
+template <class T, std::size_t N>
+[[nodiscard]] constexpr bool all_finite(const std::array<T, N>& weights) noexcept {
+    for (const T& w : weights)
+        if (!is_finite(w)) return false;
+    return true;
+}
+
+/// try_evaluate's rule for what it returns: evaluate(J...) (a callable taking one pointer per
+/// Jacobian, null where not requested) into local Jacobians; the sample, with the requested
+/// Jacobians copied to the caller's, when finite_sample(sample) holds and each requested Jacobian
+/// is finite, and std::nullopt, the caller's Jacobians untouched, when a value overflowed (a knot
+/// spacing so short that velocities, their derivatives or their Jacobians exceed T's range).
+template <class Sample, class Evaluate, class FiniteSample, class... Blocks>
+[[nodiscard]] constexpr std::optional<Sample> finite_or_empty(const Evaluate& evaluate,
+                                                              const FiniteSample& finite_sample,
+                                                              Blocks*... requested) noexcept {
+    std::tuple<Blocks...> local{};
+    const Sample sample = std::apply(
+        [&](Blocks&... l) { return evaluate((requested != nullptr ? &l : nullptr)...); }, local);
+    const bool finite =
+        finite_sample(sample) &&
+        std::apply(
+            [&](const Blocks&... l) { return ((requested == nullptr || all_finite(l)) && ...); },
+            local);
+    if (!finite) return std::nullopt;
+    std::apply(
+        [&](const Blocks&... l) { ((requested != nullptr ? void(*requested = l) : void()), ...); },
+        local);
+    return sample;
+}
+
+/// Control points, their count, t0 and dt; see spline_position for the domain.
+template <class T, class Point>
+struct spline_view {
+    const Point* points;
+    std::size_t count;
+    T t0, dt;
+
+    template <int K>
+    [[nodiscard]] constexpr bool valid() const noexcept {
+        return points != nullptr && count >= static_cast<std::size_t>(K) && dt > T(0) &&
+               is_finite(dt) && is_finite(t0);
+    }
+    template <int K>
+    [[nodiscard]] constexpr T end_time() const noexcept {
+        if (!valid<K>()) return quiet_nan<T>();
+        return t0 + T(static_cast<double>(count - static_cast<std::size_t>(K) + 1)) * dt;
+    }
+    template <int K>
+    [[nodiscard]] constexpr knot_position<T> locate(const T& t) const noexcept {
+        if (points == nullptr) return {0, quiet_nan<T>(), false};
+        return spline_position<K>(t, t0, dt, count);
+    }
+    /// True when the K points of the segment are usable (is_usable_point).
+    template <int K>
+    [[nodiscard]] constexpr bool usable_points(std::size_t segment) const noexcept {
+        for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
+            if (!is_usable_point(points[segment + m])) return false;
+        return true;
+    }
+};
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_TRAJECTORY_DETAIL_SPLINE_VIEW_HPP_INCLUDED
+// ---- end quat/trajectory/detail/spline_view.hpp ----
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----

@@ -40,7 +40,6 @@
 
 #include "../quat.hpp"
 #include "../trajectory/se3_bspline.hpp"
-#include "../trajectory/euclidean_bspline.hpp"
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
