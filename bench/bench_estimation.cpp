@@ -1,7 +1,8 @@
+// hand_eye_from_poses (quat alone: OpenCV, the peer, is timed in quat_accuracy --hand-eye);
 // align_vectors (Wahba's problem), align_points (Kabsch, against Eigen's umeyama on the same
 // points) and mean over n inputs, beside the two costs they cannot avoid: reading the input once
 // (read_input: only the sums B = sum w t s^T, or sum q q^T for mean) and one 4x4 symmetric
-// eigen-solve (eigen_solve). The target: align_vectors and mean within 2x of read_input +
+// eigen-solve (eigen_solve). The target: align_vectors and mean within 2x of read_input +
 // eigen_solve.
 #include <cstddef>
 #include <vector>
@@ -15,7 +16,9 @@
 #include <Eigen/Geometry>
 #include <quat/fitting/align_vectors.hpp>
 #include <quat/fitting/mean.hpp>
+#include <quat/lie/se3.hpp>
 #include <quat/registration/align_points.hpp>
+#include <quat/registration/hand_eye.hpp>
 
 #include "common.hpp"
 
@@ -185,6 +188,34 @@ void mean(benchmark::State& state, std::size_t n, bool read_only) {
     state.SetItemsProcessed(state.iterations() * static_cast<long long>(n));
 }
 
+// hand_eye_from_poses on `motions` + 1 poses: a random mount X and target pose W, random hand poses
+// H_j, and sensor poses S_j = X^-1 H_j^-1 W each turned and moved by about 1 mrad and 1 mm (the
+// scene's unit is the metre), cycling through 16 such sets.
+void hand_eye_from_poses(benchmark::State& state, std::size_t motions) {
+    using dq = quat::dual_quaternion<double>;
+    random_source random;
+    std::vector<std::vector<dq>> hands(16), sensors(16);
+    for (std::size_t k = 0; k < hands.size(); ++k) {
+        const dq mount = quat::to_dual_quaternion(random.rotation(), random.vector() * 0.1);
+        const dq target = quat::to_dual_quaternion(random.rotation(), random.vector());
+        for (std::size_t j = 0; j <= motions; ++j) {
+            const dq hand = quat::to_dual_quaternion(random.rotation(), random.vector());
+            const quat::se3::twist<double> noise{random.vector() * 1e-3, random.vector() * 1e-3};
+            hands[k].push_back(hand);
+            sensors[k].push_back(quat::se3::plus(
+                quat::normalize(quat::inverse(mount) * quat::inverse(hand) * target), noise));
+        }
+    }
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const quat::hand_eye_with_target<double> result =
+            quat::hand_eye_from_poses(hands[k], sensors[k]);
+        benchmark::DoNotOptimize(result);
+        k = (k + 1) % hands.size();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
 template <class T>
 void register_estimation_for() {
     const char* type = type_name<T>;
@@ -223,6 +254,11 @@ void register_estimation_for() {
 void register_estimation() {
     register_estimation_for<float>();
     register_estimation_for<double>();
+    for (const std::size_t motions : {std::size_t(3), std::size_t(10), std::size_t(50)})
+        benchmark::RegisterBenchmark(
+            name("hand_eye", "quat", "from_poses", "double", static_cast<long long>(motions))
+                .c_str(),
+            [motions](benchmark::State& state) { hand_eye_from_poses(state, motions); });
 }
 
 }  // namespace bench

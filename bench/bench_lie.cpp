@@ -3,13 +3,15 @@
 // (jacobian/jet/<op>/double: the function evaluated on Jets, its ambient derivatives read into the
 // tangent Jacobian of the right plus and minus, as tests/test_so3.cpp and test_se3.cpp check them),
 // and so3/se3 exp, log, plus and minus without Jacobians (exp and log beside from_rotation_vector
-// and to_rotation_vector).
+// and to_rotation_vector); the pose-graph relative-pose errors of lie/relative_pose.hpp in both
+// forms, with the Jacobians for both poses, against Jet through the same functions.
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include <ceres/jet.h>
 
+#include <quat/lie/relative_pose.hpp>
 #include <quat/lie/se3.hpp>
 #include <quat/lie/so3.hpp>
 
@@ -27,6 +29,8 @@ using dq = quat::dual_quaternion<double>;
 using twist = quat::se3::twist<double>;
 template <int N>
 using jet = ceres::Jet<double, N>;
+template <int N>
+using residual_of = matrix<jet<N>, 6, 1>;
 
 // Inputs: rotation vectors with angles in [0, pi), unit quaternions, twists and rigid motions.
 vec3<double> rotation_vector(random_source& r) {
@@ -227,6 +231,45 @@ void register_lie() {
     add("jacobian/jet/se3_between/double", motions, [](const std::pair<dq, dq>& p) {
         return tangent(
             se3::between(first_order_plus<12>(p.first, 0), first_order_plus<12>(p.second, 6)));
+    });
+
+    // A pose-graph edge: poses a, b and a measurement near between(a, b).
+    const auto edge = [](random_source& r) {
+        const dq a = motion(r), b = motion(r);
+        return std::tuple<dq, dq, dq>{a, b, se3::plus(se3::between(a, b), random_twist(r) * 0.01)};
+    };
+    using edge_type = std::tuple<dq, dq, dq>;
+    using residual = matrix<double, 6, 1>;
+    // The error of either form and both Jacobians by Jet: 12 variables, a's tangent then b's.
+    const auto jet_error = [](auto error, const edge_type& e) {
+        const residual_of<12> r =
+            error(first_order_plus<12>(std::get<0>(e), 0), first_order_plus<12>(std::get<1>(e), 6),
+                  quat::dual_quaternion<jet<12>>(std::get<2>(e)));
+        const jet<12> outputs[6] = {r(0, 0), r(1, 0), r(2, 0), r(3, 0), r(4, 0), r(5, 0)};
+        return partials(outputs);
+    };
+    add("jacobian/quat/relative_pose_so3xr3/double", edge, [](const edge_type& e) {
+        with_jacobians<residual, matrix6<double>, matrix6<double>> r{};
+        r.value =
+            quat::so3xr3::relative_pose_error(std::get<0>(e), std::get<1>(e), std::get<2>(e),
+                                              &std::get<0>(r.jacobians), &std::get<1>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/relative_pose_so3xr3/double", edge, [jet_error](const edge_type& e) {
+        return jet_error([](const auto& a, const auto& b,
+                            const auto& z) { return quat::so3xr3::relative_pose_error(a, b, z); },
+                         e);
+    });
+    add("jacobian/quat/relative_pose_se3/double", edge, [](const edge_type& e) {
+        with_jacobians<residual, matrix6<double>, matrix6<double>> r{};
+        r.value = se3::relative_pose_error(std::get<0>(e), std::get<1>(e), std::get<2>(e),
+                                           &std::get<0>(r.jacobians), &std::get<1>(r.jacobians));
+        return r;
+    });
+    add("jacobian/jet/relative_pose_se3/double", edge, [jet_error](const edge_type& e) {
+        return jet_error([](const auto& a, const auto& b,
+                            const auto& z) { return se3::relative_pose_error(a, b, z); },
+                         e);
     });
 }
 

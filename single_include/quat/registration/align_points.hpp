@@ -289,12 +289,8 @@ template <class T, std::size_t Lanes, std::size_t Size, class Target, class Sour
             s[13][lane] += s1 * w;
             s[14][lane] += s2 * w;
             s[15][lane] += (s0 * s0 + s1 * s1 + s2 * s2) * w;
-            s[16][lane] = detail::max(
-                s[16][lane],
-                detail::max(detail::max(detail::abs(t0), detail::abs(t1)), detail::abs(t2)));
-            s[17][lane] = detail::max(
-                s[17][lane],
-                detail::max(detail::max(detail::abs(s0), detail::abs(s1)), detail::abs(s2)));
+            s[16][lane] = detail::max(s[16][lane], largest_magnitude(vec3<T>{t0, t1, t2}));
+            s[17][lane] = detail::max(s[17][lane], largest_magnitude(vec3<T>{s0, s1, s2}));
         });
     const vec3<T> target_rest{second.sum(9), second.sum(10), second.sum(11)};
     const vec3<T> source_rest{second.sum(12), second.sum(13), second.sum(14)};
