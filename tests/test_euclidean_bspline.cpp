@@ -47,9 +47,12 @@ void check_path(double t0, double dt) {
     const std::string order = "K=" + std::to_string(K) + " ";
     test::random_rotations random(3);
     std::vector<double> times;
-    for (std::size_t i = 0; i <= points.size() - K + 1; ++i) times.push_back(t0 + static_cast<double>(i) * dt);
+    for (std::size_t i = 0; i <= points.size() - K + 1; ++i)
+        times.push_back(t0 + static_cast<double>(i) * dt);
     for (int n = 0; n < 6; ++n)
-        times.push_back(t0 + (std::floor(random.uniform<double>(0, 9.0 - K + 1)) + random.uniform<double>(0.05, 0.95)) * dt);
+        times.push_back(t0 + (std::floor(random.uniform<double>(0, 9.0 - K + 1)) +
+                              random.uniform<double>(0.05, 0.95)) *
+                                 dt);
     for (const double t : times) {
         INFO(order << "t = " << t);
         std::array<double, K> Jp{}, Jv{}, Ja{}, Jj{};
@@ -60,13 +63,20 @@ void check_path(double t0, double dt) {
         const ld tl = t, h = 1e-3L * dt;
         const auto at = [&](ld step) { return wide_spline.evaluate(tl + step); };
         // Measured worst: velocity 2.3e-14, acceleration 1.2e-14, jerk 6.4e-15.
-        worst.check(order + "velocity", relative_error(column(s.velocity),
-                                                       test::time_derivative<3>([&](ld d) { return arr(at(d).position); }, h, side)));
-        worst.check(order + "acceleration", relative_error(column(s.acceleration),
-                                                           test::time_derivative<3>([&](ld d) { return arr(at(d).velocity); }, h, side)));
+        worst.check(order + "velocity",
+                    relative_error(column(s.velocity),
+                                   test::time_derivative<3>(
+                                       [&](ld d) { return arr(at(d).position); }, h, side)));
+        worst.check(order + "acceleration",
+                    relative_error(column(s.acceleration),
+                                   test::time_derivative<3>(
+                                       [&](ld d) { return arr(at(d).velocity); }, h, side)));
         if (K >= 5 || !knot)
-            worst.check(order + "jerk", relative_error(column(s.jerk),
-                                                       test::time_derivative<3>([&](ld d) { return arr(at(d).acceleration); }, h, side)));
+            worst.check(
+                order + "jerk",
+                relative_error(column(s.jerk),
+                               test::time_derivative<3>(
+                                   [&](ld d) { return arr(at(d).acceleration); }, h, side)));
         // The weights: moving point first + m by e moves each output by weight m times e.
         double sum[4] = {0, 0, 0, 0};
         for (std::size_t m = 0; m < K; ++m) {
@@ -74,8 +84,9 @@ void check_path(double t0, double dt) {
             moved[s.first + m] = moved[s.first + m] + vec3<ld>{1, 0, 0};
             const euclidean_bspline<ld, K> sp(moved, static_cast<ld>(t0), static_cast<ld>(dt));
             const euclidean_bspline_sample<ld> a = sp.evaluate(tl), b = wide_spline.evaluate(tl);
-            const std::array<ld, 4> change = {a.position.x - b.position.x, a.velocity.x - b.velocity.x,
-                                              a.acceleration.x - b.acceleration.x, a.jerk.x - b.jerk.x};
+            const std::array<ld, 4> change = {
+                a.position.x - b.position.x, a.velocity.x - b.velocity.x,
+                a.acceleration.x - b.acceleration.x, a.jerk.x - b.jerk.x};
             const std::array<double, 4> weight = {Jp[m], Jv[m], Ja[m], Jj[m]};
             for (std::size_t d = 0; d < 4; ++d) {
                 const ld scale = std::pow(1.0L / dt, static_cast<ld>(d));
@@ -90,7 +101,9 @@ void check_path(double t0, double dt) {
         using jet = ceres::Jet<double, K>;
         std::vector<vec3<jet>> jets;
         for (const vec3<double>& p : points) jets.push_back(vec3<jet>(p));
-        for (int m = 0; m < K; ++m) jets[s.first + static_cast<std::size_t>(m)].x = jet(points[s.first + static_cast<std::size_t>(m)].x, m);
+        for (int m = 0; m < K; ++m)
+            jets[s.first + static_cast<std::size_t>(m)].x =
+                jet(points[s.first + static_cast<std::size_t>(m)].x, m);
         const euclidean_bspline<jet, K> through(jets, jet(t0), jet(dt));
         const euclidean_bspline_sample<jet> d = through.evaluate(jet(t));
         for (int m = 0; m < K; ++m) {
@@ -105,8 +118,9 @@ void check_path(double t0, double dt) {
 
 }  // namespace
 
-TEST_CASE("euclidean_bspline: derivatives against long double differences, weights against moved "
-          "points and Jet derivatives") {
+TEST_CASE(
+    "euclidean_bspline: derivatives against long double differences, weights against moved "
+    "points and Jet derivatives") {
     check_path<4>(0.25, 0.5);
     check_path<5>(-1.0, 0.75);
     check_path<6>(2.0, 0.3125);

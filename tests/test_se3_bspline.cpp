@@ -65,7 +65,8 @@ std::vector<control_points> point_sets(std::size_t count) {
             const vec3<double> axis = random.unit_vector<double>();
             const double angle = random.uniform<double>(low, high);
             const vec3<double> linear = random.vector<double>(reach);
-            points.push_back(normalize(points.back() * se3::exp(twist<double>{linear, axis * angle})));
+            points.push_back(
+                normalize(points.back() * se3::exp(twist<double>{linear, axis * angle})));
         }
         for (dq<double>& x : points)
             if (random.uniform<double>(0, 1) < 0.5) x = -x;
@@ -133,7 +134,8 @@ void check_against_differences(const control_points& set, double t0, double dt) 
         // Measured worst over the orders and point sets: twist 2.0e-13, derivative 4.0e-14, second
         // derivative 9.3e-15.
         worst.check(order + "twist", relative_error(column(s.velocity), velocity));
-        worst.check(order + "twist derivative", relative_error(column(s.acceleration), acceleration));
+        worst.check(order + "twist derivative",
+                    relative_error(column(s.acceleration), acceleration));
         if (K >= 5 || !knot)
             worst.check(order + "twist second derivative", relative_error(column(s.jerk), jerk));
 
@@ -147,27 +149,36 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             };
             const ld step = 1e-3L;
             const int c = 6 * static_cast<int>(m);
-            set_block(rx, 0, c, central_differences<6, 6>(
-                [&](const arr6& d) { return arr(se3::minus(perturbed(d).motion, base.motion)); }, step));
-            set_block(rv, 0, c, central_differences<6, 6>(
-                [&](const arr6& d) { return arr(perturbed(d).velocity); }, step));
-            set_block(ra, 0, c, central_differences<6, 6>(
-                [&](const arr6& d) { return arr(perturbed(d).acceleration); }, step));
-            set_block(rj, 0, c, central_differences<6, 6>(
-                [&](const arr6& d) { return arr(perturbed(d).jerk); }, step));
+            set_block(rx, 0, c,
+                      central_differences<6, 6>(
+                          [&](const arr6& d) {
+                              return arr(se3::minus(perturbed(d).motion, base.motion));
+                          },
+                          step));
+            set_block(rv, 0, c,
+                      central_differences<6, 6>(
+                          [&](const arr6& d) { return arr(perturbed(d).velocity); }, step));
+            set_block(ra, 0, c,
+                      central_differences<6, 6>(
+                          [&](const arr6& d) { return arr(perturbed(d).acceleration); }, step));
+            set_block(rj, 0, c,
+                      central_differences<6, 6>(
+                          [&](const arr6& d) { return arr(perturbed(d).jerk); }, step));
         }
         // Measured worst: motion 1.2e-14, twist 4.2e-15, derivative 3.2e-15, second 4.2e-15.
         worst.check(order + "J motion / points", relative_error(joined<K>(Jx), rx));
         worst.check(order + "J twist / points", relative_error(joined<K>(Jv), rv));
         worst.check(order + "J twist derivative / points", relative_error(joined<K>(Ja), ra));
-        worst.check(order + "J twist second derivative / points", relative_error(joined<K>(Jj), rj));
+        worst.check(order + "J twist second derivative / points",
+                    relative_error(joined<K>(Jj), rj));
     }
 }
 
 }  // namespace
 
-TEST_CASE("se3_bspline: the body twist, its derivatives and every Jacobian against long double "
-          "differences, at random times and knots, near the identity and near half turns") {
+TEST_CASE(
+    "se3_bspline: the body twist, its derivatives and every Jacobian against long double "
+    "differences, at random times and knots, near the identity and near half turns") {
     for (const control_points& set : point_sets(8)) {
         check_against_differences<4>(set, 0.25, 0.5);
         check_against_differences<5>(set, -1.0, 0.75);
@@ -180,19 +191,31 @@ namespace {
 template <int N>
 using jet = ceres::Jet<double, N>;
 template <int N>
-jet<N> variable(int i, jet<N>*) { return jet<N>(0.0, i); }
+jet<N> variable(int i, jet<N>*) {
+    return jet<N>(0.0, i);
+}
 template <int N>
-double value_of(const jet<N>& x) { return x.a; }
+double value_of(const jet<N>& x) {
+    return x.a;
+}
 template <int N>
-double partial(const jet<N>& x, int i) { return x.v[i]; }
+double partial(const jet<N>& x, int i) {
+    return x.v[i];
+}
 template <std::size_t N>
 using dual = test::dual<double, N>;
 template <std::size_t N>
-dual<N> variable(int i, dual<N>*) { return dual<N>::variable(0.0, static_cast<std::size_t>(i)); }
+dual<N> variable(int i, dual<N>*) {
+    return dual<N>::variable(0.0, static_cast<std::size_t>(i));
+}
 template <std::size_t N>
-double value_of(const dual<N>& x) { return x.value; }
+double value_of(const dual<N>& x) {
+    return x.value;
+}
 template <std::size_t N>
-double partial(const dual<N>& x, int i) { return x.d[static_cast<std::size_t>(i)]; }
+double partial(const dual<N>& x, int i) {
+    return x.d[static_cast<std::size_t>(i)];
+}
 
 template <int C>
 double max_relative(const matrix<double, 6, C>& a, const matrix<double, 6, C>& b) {
@@ -249,8 +272,10 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
                                {local.real.x * two, local.real.y * two, local.real.z * two}};
         // Measured worst over both scalars: motion 3.6e-15, twist 3.0e-15, derivative 1.2e-15,
         // second derivative 3.0e-15.
-        worst.check(order + "autodiff J motion", max_relative(joined<K>(Jx), partials<6 * K>(tangent)), 1e-13);
-        worst.check(order + "autodiff J twist", max_relative(joined<K>(Jv), partials<6 * K>(d.velocity)), 1e-13);
+        worst.check(order + "autodiff J motion",
+                    max_relative(joined<K>(Jx), partials<6 * K>(tangent)), 1e-13);
+        worst.check(order + "autodiff J twist",
+                    max_relative(joined<K>(Jv), partials<6 * K>(d.velocity)), 1e-13);
         worst.check(order + "autodiff J twist derivative",
                     max_relative(joined<K>(Ja), partials<6 * K>(d.acceleration)), 1e-13);
         worst.check(order + "autodiff J twist second derivative",
@@ -269,12 +294,14 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
     for (const double t : check_times<K>(points.size(), t0, dt)) {
         INFO(order << "t = " << t);
         const se3_bspline_sample<double> s = spline.evaluate(t);
-        const detail::knot_position<double> at = detail::spline_position<K>(t, t0, dt, points.size());
+        const detail::knot_position<double> at =
+            detail::spline_position<K>(t, t0, dt, points.size());
         const auto r = test::textbook_bspline<test::se3_reference<ld>, ld, K>(
             wide.data() + at.segment,
             detail::cumulative_weights_at<ld, K>(static_cast<ld>(at.u), static_cast<ld>(dt)));
         const auto relative = [](const twist<double>& got, const twist<ld>& want) {
-            const arr6 g = arr(twist<ld>{vec3<ld>(got.linear), vec3<ld>(got.angular)}), w = arr(want);
+            const arr6 g = arr(twist<ld>{vec3<ld>(got.linear), vec3<ld>(got.angular)}),
+                       w = arr(want);
             ld error = 0, scale = 0;
             for (std::size_t i = 0; i < 6; ++i) {
                 error = std::max(error, std::abs(g[i] - w[i]));
@@ -288,18 +315,21 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
         for (const ld c : e) motion_error = std::max(motion_error, std::abs(c));
         // Measured worst, in double epsilons (the motion's translation relative to max(1, |p|)):
         // motion 1.9, twist 5.2, derivative 5.3, second derivative 5.9.
-        worst.check(order + "textbook motion (eps)", static_cast<double>(motion_error / reach) / eps, 8);
+        worst.check(order + "textbook motion (eps)",
+                    static_cast<double>(motion_error / reach) / eps, 8);
         worst.check(order + "textbook twist (eps)", relative(s.velocity, r.velocity) / eps, 8);
         worst.check(order + "textbook twist derivative (eps)",
                     relative(s.acceleration, r.acceleration) / eps, 8);
-        worst.check(order + "textbook twist second derivative (eps)", relative(s.jerk, r.jerk) / eps, 8);
+        worst.check(order + "textbook twist second derivative (eps)",
+                    relative(s.jerk, r.jerk) / eps, 8);
     }
 }
 
 }  // namespace
 
-TEST_CASE("se3_bspline: ceres::Jet and dual-number derivatives through evaluate equal the analytic "
-          "Jacobians") {
+TEST_CASE(
+    "se3_bspline: ceres::Jet and dual-number derivatives through evaluate equal the analytic "
+    "Jacobians") {
     for (const control_points& set : point_sets(8)) {
         check_autodiff<4, jet<24>>(set, 0.25, 0.5, "Jet");
         check_autodiff<5, jet<30>>(set, -1.0, 0.75, "Jet");
@@ -316,8 +346,9 @@ TEST_CASE("se3_bspline: the O(K) recurrences agree with the O(K^2) product rule 
     }
 }
 
-TEST_CASE("se3_bspline domain: NaN from evaluate and an empty optional from try_evaluate outside "
-          "[t0, t0 + (count - K + 1) dt] and for views that cannot be evaluated") {
+TEST_CASE(
+    "se3_bspline domain: NaN from evaluate and an empty optional from try_evaluate outside "
+    "[t0, t0 + (count - K + 1) dt] and for views that cannot be evaluated") {
     const std::vector<dq<double>> points = point_sets(6)[0].points;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
@@ -337,13 +368,14 @@ TEST_CASE("se3_bspline domain: NaN from evaluate and an empty optional from try_
         CHECK(std::isnan(spline(t).real.w));
     }
     for (const se3_bspline<double, 5>& s :
-         {se3_bspline<double, 5>(points.data(), 4, 0.0, 0.25), se3_bspline<double, 5>(points, 0.0, 0.0),
-          se3_bspline<double, 5>(points, 0.0, -1.0), se3_bspline<double, 5>(points, inf, 0.25),
-          se3_bspline<double, 5>(points, 0.0, nan), se3_bspline<double, 5>(nullptr, 6, 0.0, 0.25)}) {
+         {se3_bspline<double, 5>(points.data(), 4, 0.0, 0.25),
+          se3_bspline<double, 5>(points, 0.0, 0.0), se3_bspline<double, 5>(points, 0.0, -1.0),
+          se3_bspline<double, 5>(points, inf, 0.25), se3_bspline<double, 5>(points, 0.0, nan),
+          se3_bspline<double, 5>(nullptr, 6, 0.0, 0.25)}) {
         CHECK(!s.valid());
         CHECK(is_nan_sample(s.evaluate(0.1)));
         CHECK(!s.try_evaluate(0.1).has_value());
     }
-    static_assert(noexcept(spline.evaluate(0.0)) && noexcept(spline.try_evaluate(0.0)));
+    static_assert(noexcept(spline.evaluate(0.0))&& noexcept(spline.try_evaluate(0.0)));
     static_assert(std::is_trivially_copyable_v<se3_bspline<double, 5>>);
 }

@@ -126,7 +126,9 @@ void check_against_differences(const control_points& set, double t0, double dt) 
         const int side = !knot ? 0 : (t == spline.end_time() ? -1 : 1);
         const ld h = 1e-3L * dt;
         const auto velocity = test::time_derivative<3>(
-            [&](ld step) { return arr(so3::minus(at(wide_spline, tl + step).rotation, base.rotation)); },
+            [&](ld step) {
+                return arr(so3::minus(at(wide_spline, tl + step).rotation, base.rotation));
+            },
             h, side);
         const auto acceleration = test::time_derivative<3>(
             [&](ld step) { return arr(at(wide_spline, tl + step).angular_velocity); }, h, side);
@@ -134,7 +136,8 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             [&](ld step) { return arr(at(wide_spline, tl + step).angular_acceleration); }, h, side);
         // Measured worst over the orders and point sets: velocity 1.9e-13, acceleration 4.3e-14,
         // jerk 3.1e-14 (the one-sided differences at knots are the least accurate references).
-        worst.check(order + "angular velocity", relative_error(to_column(s.angular_velocity), velocity));
+        worst.check(order + "angular velocity",
+                    relative_error(to_column(s.angular_velocity), velocity));
         worst.check(order + "angular acceleration",
                     relative_error(to_column(s.angular_acceleration), acceleration));
         if (K >= 5 || !knot)  // K = 4: the jerk jumps at knots
@@ -151,12 +154,16 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             };
             const ld step = 1e-3L;
             const auto jq = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(so3::minus(perturbed(d).rotation, base.rotation)); },
+                [&](const std::array<ld, 3>& d) {
+                    return arr(so3::minus(perturbed(d).rotation, base.rotation));
+                },
                 step);
             const auto jw = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_velocity); }, step);
+                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_velocity); },
+                step);
             const auto ja = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_acceleration); }, step);
+                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_acceleration); },
+                step);
             const auto jj = central_differences<3, 3>(
                 [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_jerk); }, step);
             const int c = 3 * static_cast<int>(m);
@@ -175,7 +182,8 @@ void check_against_differences(const control_points& set, double t0, double dt) 
 
 }  // namespace
 
-TEST_CASE("so3_bspline's cumulative basis: the closed form for K = 4 and Cox-de Boor for K = 4, 5, 6") {
+TEST_CASE(
+    "so3_bspline's cumulative basis: the closed form for K = 4 and Cox-de Boor for K = 4, 5, 6") {
     constexpr auto table = detail::cumulative_basis_table<4>();
     static_assert(table[0][0][0] == 6 && table[0][0][1] == 0 && table[0][0][3] == 0);
     static_assert(table[0][1][0] == 5 && table[0][1][1] == 3 && table[0][1][2] == -3 &&
@@ -185,7 +193,8 @@ TEST_CASE("so3_bspline's cumulative basis: the closed form for K = 4 and Cox-de 
     static_assert(table[0][3][3] == 1 && table[1][3][2] == 3 && table[3][3][0] == 6);
     const auto cox_de_boor = [](int k, int s, ld x) {  // B-spline s of order k, knots 0, 1, 2, ...
         std::vector<ld> b(static_cast<std::size_t>(s + k), 0);
-        for (int i = 0; i < s + k; ++i) b[static_cast<std::size_t>(i)] = (i <= x && x < i + 1) ? 1 : 0;
+        for (int i = 0; i < s + k; ++i)
+            b[static_cast<std::size_t>(i)] = (i <= x && x < i + 1) ? 1 : 0;
         for (int o = 2; o <= k; ++o)
             for (int i = 0; i + o <= s + k; ++i) {
                 const auto u = static_cast<std::size_t>(i);
@@ -210,8 +219,9 @@ TEST_CASE("so3_bspline's cumulative basis: the closed form for K = 4 and Cox-de 
     check(std::integral_constant<int, 6>{});
 }
 
-TEST_CASE("so3_bspline: angular velocity, acceleration, jerk and every Jacobian against long double "
-          "differences, at random times and knots, near the identity and near half turns") {
+TEST_CASE(
+    "so3_bspline: angular velocity, acceleration, jerk and every Jacobian against long double "
+    "differences, at random times and knots, near the identity and near half turns") {
     for (const control_points& set : point_sets(9)) {
         check_against_differences<4>(set, 0.25, 0.5);
         check_against_differences<5>(set, -1.0, 0.75);
@@ -225,23 +235,39 @@ namespace {
 template <int N>
 using jet = ceres::Jet<double, N>;
 template <int N>
-jet<N> constant(double v, jet<N>*) { return jet<N>(v); }
+jet<N> constant(double v, jet<N>*) {
+    return jet<N>(v);
+}
 template <int N>
-jet<N> variable(double v, int i, jet<N>*) { return jet<N>(v, i); }
+jet<N> variable(double v, int i, jet<N>*) {
+    return jet<N>(v, i);
+}
 template <int N>
-double value_of(const jet<N>& x) { return x.a; }
+double value_of(const jet<N>& x) {
+    return x.a;
+}
 template <int N>
-double partial(const jet<N>& x, int i) { return x.v[i]; }
+double partial(const jet<N>& x, int i) {
+    return x.v[i];
+}
 template <std::size_t N>
 using dual = test::dual<double, N>;
 template <std::size_t N>
-dual<N> constant(double v, dual<N>*) { return dual<N>(v); }
+dual<N> constant(double v, dual<N>*) {
+    return dual<N>(v);
+}
 template <std::size_t N>
-dual<N> variable(double v, int i, dual<N>*) { return dual<N>::variable(v, static_cast<std::size_t>(i)); }
+dual<N> variable(double v, int i, dual<N>*) {
+    return dual<N>::variable(v, static_cast<std::size_t>(i));
+}
 template <std::size_t N>
-double value_of(const dual<N>& x) { return x.value; }
+double value_of(const dual<N>& x) {
+    return x.value;
+}
 template <std::size_t N>
-double partial(const dual<N>& x, int i) { return x.d[static_cast<std::size_t>(i)]; }
+double partial(const dual<N>& x, int i) {
+    return x.d[static_cast<std::size_t>(i)];
+}
 
 /// max |a - b| / max |b| over the 3 x C entries.
 template <int C>
@@ -294,11 +320,13 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
         const so3_bspline_sample<S> d = through.evaluate(S(t));
         const quaternion<S> value{S(value_of(d.rotation.w)), S(value_of(d.rotation.x)),
                                   S(value_of(d.rotation.y)), S(value_of(d.rotation.z))};
-        const quaternion<S> local = conjugate(value) * d.rotation;  // (1, tangent / 2) to first order
+        const quaternion<S> local =
+            conjugate(value) * d.rotation;  // (1, tangent / 2) to first order
         const vec3<S> tangent{local.x * S(2), local.y * S(2), local.z * S(2)};
         // Measured worst over both scalars: rotation 1.5e-15, velocity 1.3e-15, acceleration 1.6e-15,
         // jerk 2.3e-15.
-        worst.check(order + "autodiff J rotation", max_relative(joined<K>(Jq), partials<3 * K>(tangent)), 1e-13);
+        worst.check(order + "autodiff J rotation",
+                    max_relative(joined<K>(Jq), partials<3 * K>(tangent)), 1e-13);
         worst.check(order + "autodiff J angular velocity",
                     max_relative(joined<K>(Jw), partials<3 * K>(d.angular_velocity)), 1e-13);
         worst.check(order + "autodiff J angular acceleration",
@@ -310,8 +338,9 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
 
 }  // namespace
 
-TEST_CASE("so3_bspline: ceres::Jet and dual-number derivatives through evaluate equal the analytic "
-          "Jacobians") {
+TEST_CASE(
+    "so3_bspline: ceres::Jet and dual-number derivatives through evaluate equal the analytic "
+    "Jacobians") {
     for (const control_points& set : point_sets(9)) {
         check_autodiff<4, jet<12>>(set, 0.25, 0.5, "Jet");
         check_autodiff<5, jet<15>>(set, -1.0, 0.75, "Jet");
@@ -321,7 +350,8 @@ TEST_CASE("so3_bspline: ceres::Jet and dual-number derivatives through evaluate 
     }
 }
 
-TEST_CASE("so3_bspline: a Jet time gives the angular velocity, acceleration and jerk as derivatives") {
+TEST_CASE(
+    "so3_bspline: a Jet time gives the angular velocity, acceleration and jerk as derivatives") {
     const std::vector<quaternion<double>> points = point_sets(8)[0].points;
     const so3_bspline<double, 5> spline(points, 0.0, 0.5);
     std::vector<quaternion<jet<1>>> wide;
@@ -337,11 +367,15 @@ TEST_CASE("so3_bspline: a Jet time gives the angular velocity, acceleration and 
         const vec3<jet<1>> w{local.x * 2.0, local.y * 2.0, local.z * 2.0};
         const auto column = [](const vec3<double>& v) { return to_column(v); };
         // Measured worst: velocity 6.0e-16, acceleration 3.6e-16, jerk 6.7e-16.
-        worst.check("Jet time: angular velocity", max_relative<1>(partials<1>(w), column(s.angular_velocity)), 1e-14);
-        worst.check("Jet time: angular acceleration",
-                    max_relative<1>(partials<1>(d.angular_velocity), column(s.angular_acceleration)), 1e-14);
+        worst.check("Jet time: angular velocity",
+                    max_relative<1>(partials<1>(w), column(s.angular_velocity)), 1e-14);
+        worst.check(
+            "Jet time: angular acceleration",
+            max_relative<1>(partials<1>(d.angular_velocity), column(s.angular_acceleration)),
+            1e-14);
         worst.check("Jet time: angular jerk",
-                    max_relative<1>(partials<1>(d.angular_acceleration), column(s.angular_jerk)), 1e-14);
+                    max_relative<1>(partials<1>(d.angular_acceleration), column(s.angular_jerk)),
+                    1e-14);
     }
 }
 
@@ -359,7 +393,8 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
     for (const double t : check_times<K>(points.size(), t0, dt)) {
         INFO(order << "t = " << t);
         const so3_bspline_sample<double> s = spline.evaluate(t);
-        const detail::knot_position<double> at = detail::spline_position<K>(t, t0, dt, points.size());
+        const detail::knot_position<double> at =
+            detail::spline_position<K>(t, t0, dt, points.size());
         const auto r = test::textbook_bspline<test::so3_reference<ld>, ld, K>(
             wide.data() + at.segment,
             detail::cumulative_weights_at<ld, K>(static_cast<ld>(at.u), static_cast<ld>(dt)));
@@ -369,13 +404,16 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
             const ld error = std::max({std::abs(e.x), std::abs(e.y), std::abs(e.z)});
             return static_cast<double>(scale > 0 ? error / scale : error);
         };
-        const double angle = static_cast<double>(norm(so3::minus(quaternion<ld>(s.rotation), r.value)));
+        const double angle =
+            static_cast<double>(norm(so3::minus(quaternion<ld>(s.rotation), r.value)));
         // Measured worst, in double epsilons: rotation 5.3, velocity 3.8, acceleration 4.7, jerk 4.3.
         worst.check(order + "textbook rotation (eps)", angle / eps, 8);
-        worst.check(order + "textbook angular velocity (eps)", relative(s.angular_velocity, r.velocity) / eps, 8);
+        worst.check(order + "textbook angular velocity (eps)",
+                    relative(s.angular_velocity, r.velocity) / eps, 8);
         worst.check(order + "textbook angular acceleration (eps)",
                     relative(s.angular_acceleration, r.acceleration) / eps, 8);
-        worst.check(order + "textbook angular jerk (eps)", relative(s.angular_jerk, r.jerk) / eps, 8);
+        worst.check(order + "textbook angular jerk (eps)", relative(s.angular_jerk, r.jerk) / eps,
+                    8);
     }
 }
 
@@ -389,8 +427,9 @@ TEST_CASE("so3_bspline: the O(K) recurrences agree with the O(K^2) product rule 
     }
 }
 
-TEST_CASE("so3_bspline domain: t in [t0, t0 + (count - K + 1) dt], else NaN from evaluate and an "
-          "empty optional from try_evaluate") {
+TEST_CASE(
+    "so3_bspline domain: t in [t0, t0 + (count - K + 1) dt], else NaN from evaluate and an "
+    "empty optional from try_evaluate") {
     const std::vector<quaternion<double>> points = point_sets(7)[0].points;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
@@ -428,8 +467,9 @@ TEST_CASE("so3_bspline domain: t in [t0, t0 + (count - K + 1) dt], else NaN from
     const so3_bspline<double, 4> nan_spacing(points, 1.0, nan);
     const so3_bspline<double, 4> nan_start(points, nan, 0.5);
     const so3_bspline<double, 4> null_points(nullptr, 7, 1.0, 0.5);
-    for (const so3_bspline<double, 4>* s : {&too_few, &zero_spacing, &negative_spacing,
-                                            &infinite_spacing, &nan_spacing, &nan_start, &null_points}) {
+    for (const so3_bspline<double, 4>* s :
+         {&too_few, &zero_spacing, &negative_spacing, &infinite_spacing, &nan_spacing, &nan_start,
+          &null_points}) {
         CHECK(!s->valid());
         CHECK(std::isnan(s->end_time()));
         CHECK(is_nan_sample(s->evaluate(1.0)));
@@ -439,7 +479,7 @@ TEST_CASE("so3_bspline domain: t in [t0, t0 + (count - K + 1) dt], else NaN from
     std::vector<quaternion<double>> bad = points;
     bad[5] = {nan, 0, 0, 0};
     const so3_bspline<double, 4> with_nan(bad, 1.0, 0.5);
-    CHECK(with_nan.try_evaluate(1.2).has_value());  // points 0..3
+    CHECK(with_nan.try_evaluate(1.2).has_value());   // points 0..3
     CHECK(!with_nan.try_evaluate(2.2).has_value());  // points 2..5
 }
 
@@ -449,14 +489,16 @@ TEST_CASE("so3_bspline: noexcept, a trivially copyable view, constexpr evaluatio
     static_assert(noexcept(std::declval<const spline&>().evaluate(0.0)));
     static_assert(noexcept(std::declval<const spline&>().try_evaluate(0.0)));
     static_assert(noexcept(std::declval<const spline&>()(0.0)));
-    static_assert(!std::is_constructible_v<spline, std::vector<quaternion<double>>&&, double, double>);
+    static_assert(
+        !std::is_constructible_v<spline, std::vector<quaternion<double>>&&, double, double>);
     static constexpr quaternion<double> points[5] = {
         {1, 0, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}};
     constexpr spline s(points, 0.0, 1.0);
     // Points 0..3 hold the first segment: d_1 = 0, d_2 = pi z, d_3 = 0, so R(1/2) = exp(b~_2(1/2) pi z)
     // with b~_2(u) = (1 + 3u + 3u^2 - 2u^3) / 6 = 1/2: a quarter turn about z.
     constexpr quaternion<double> q = s(0.5);
-    static_assert(q.x == 0 && q.y == 0 && q.w > 0.7071 && q.w < 0.7072 && q.z > 0.7071 && q.z < 0.7072);
+    static_assert(q.x == 0 && q.y == 0 && q.w > 0.7071 && q.w < 0.7072 && q.z > 0.7071 &&
+                  q.z < 0.7072);
     CHECK(std::abs(q.w - std::sqrt(0.5)) <= 2e-16);
     CHECK(std::abs(q.z - std::sqrt(0.5)) <= 2e-16);
 }

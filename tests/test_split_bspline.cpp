@@ -30,7 +30,9 @@ std::array<ld, 6> arr(const se3::twist<ld>& t) {
     return {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z};
 }
 
-bool same(const vec3<double>& a, const vec3<double>& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+bool same(const vec3<double>& a, const vec3<double>& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 
 template <int K>
 void check_split(double t0, double dt) {
@@ -43,7 +45,8 @@ void check_split(double t0, double dt) {
     for (const quaternion<double>& q : rotations) wide_rotations.push_back(quaternion<ld>(q));
     for (const vec3<double>& p : positions) wide_positions.push_back(vec3<ld>(p));
     const split_bspline<double, K> spline(rotations, positions, t0, dt);
-    const split_bspline<ld, K> wide(wide_rotations, wide_positions, static_cast<ld>(t0), static_cast<ld>(dt));
+    const split_bspline<ld, K> wide(wide_rotations, wide_positions, static_cast<ld>(t0),
+                                    static_cast<ld>(dt));
     const so3_bspline<double, K> rotation(rotations, t0, dt);
     const euclidean_bspline<double, K> position(positions, t0, dt);
     REQUIRE(spline.valid());
@@ -51,7 +54,9 @@ void check_split(double t0, double dt) {
     std::vector<double> times;
     for (std::size_t i = 0; i <= 9 - K + 1; ++i) times.push_back(t0 + static_cast<double>(i) * dt);
     for (int n = 0; n < 4; ++n)
-        times.push_back(t0 + (std::floor(random.uniform<double>(0, 9.0 - K + 1)) + random.uniform<double>(0.05, 0.95)) * dt);
+        times.push_back(t0 + (std::floor(random.uniform<double>(0, 9.0 - K + 1)) +
+                              random.uniform<double>(0.05, 0.95)) *
+                                 dt);
     for (const double t : times) {
         INFO(order << "t = " << t);
         std::array<matrix3<double>, K> Jq{}, Jw{}, Jq2{}, Jw2{};
@@ -87,15 +92,17 @@ void check_split(double t0, double dt) {
 
 }  // namespace
 
-TEST_CASE("split_bspline: the halves are so3_bspline and euclidean_bspline, the body twist and its "
-          "derivative against long double differences of the pose") {
+TEST_CASE(
+    "split_bspline: the halves are so3_bspline and euclidean_bspline, the body twist and its "
+    "derivative against long double differences of the pose") {
     check_split<4>(0.25, 0.5);
     check_split<5>(-1.0, 0.75);
     check_split<6>(2.0, 0.3125);
 }
 
-TEST_CASE("split_bspline domain: NaN from evaluate and an empty optional from try_evaluate outside "
-          "the range, for containers of different sizes and for non-finite control points") {
+TEST_CASE(
+    "split_bspline domain: NaN from evaluate and an empty optional from try_evaluate outside "
+    "the range, for containers of different sizes and for non-finite control points") {
     test::random_rotations random;
     const std::vector<quaternion<double>> rotations = test::random_walk<double>(random, 6, 1.0);
     std::vector<vec3<double>> positions(6, vec3<double>{1, 2, 3});
@@ -107,7 +114,8 @@ TEST_CASE("split_bspline domain: NaN from evaluate and an empty optional from tr
     for (const double t : {-1.0, 3.0000001, nan}) {
         std::array<double, 4> Jp{};
         std::array<matrix3<double>, 4> Jq{};
-        const split_bspline_sample<double> s = spline.evaluate(t, &Jq, nullptr, nullptr, nullptr, &Jp);
+        const split_bspline_sample<double> s =
+            spline.evaluate(t, &Jq, nullptr, nullptr, nullptr, &Jp);
         CHECK(std::isnan(s.rotation.w));
         CHECK(std::isnan(s.position.x));
         CHECK(std::isnan(s.body_velocity.linear.y));

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <ceres/dynamic_autodiff_cost_function.h>
-#include <quat/interop/ceres.hpp>
+#include <quat/interop/ceres_trajectory.hpp>
 
 #include "support/catch.hpp"
 #include "support/random.hpp"

@@ -105,7 +105,8 @@ reference_sample<typename Group::tangent, typename Group::element> textbook_bspl
         f[3] = algebra_add(algebra_add(xi * b3, xi2 * (T(3) * b1 * b2)), xi3 * (b1 * b1 * b1)) * a;
     }
     std::array<E, 4> x{};
-    for (int n = 0; n < 4; ++n) x[static_cast<std::size_t>(n)] = product_derivative<T>(factors, 0, n, p[0]);
+    for (int n = 0; n < 4; ++n)
+        x[static_cast<std::size_t>(n)] = product_derivative<T>(factors, 0, n, p[0]);
     const E inv = Group::inverse(x[0]);
     const E omega = inv * x[1];
     const E omega_dot = algebra_add(inv * x[2], omega * omega * T(-1));

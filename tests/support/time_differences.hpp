@@ -37,7 +37,8 @@ matrix<long double, N, 1> time_derivative(F f, long double h, int side) {
         auto e = table[r];
         // Errors in h^2, h^4, ... (central) or h, h^2, ... (one-sided): eliminate one power a pass.
         for (int pass = 1; pass < used; ++pass) {
-            const ld factor = side == 0 ? static_cast<ld>(1 << (2 * pass)) : static_cast<ld>(1 << pass);
+            const ld factor =
+                side == 0 ? static_cast<ld>(1 << (2 * pass)) : static_cast<ld>(1 << pass);
             for (int k = used - 1; k >= pass; --k) {
                 const auto i = static_cast<std::size_t>(k);
                 e[i] = (factor * e[i] - e[i - 1]) / (factor - 1);

@@ -105,7 +105,8 @@ public:
         jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
-            for (jacobian_blocks* J : {J_x_points, J_v_points, J_a_points, J_j_points})
+            for (jacobian_blocks* J :
+                 std::array<jacobian_blocks*, 4>{J_x_points, J_v_points, J_a_points, J_j_points})
                 if (J != nullptr) detail::fill_nan(*J);
             const T nan = detail::quiet_nan<T>();
             const se3::twist<T> nan_twist{{nan, nan, nan}, {nan, nan, nan}};

@@ -101,7 +101,8 @@ public:
         jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
-            for (jacobian_blocks* J : {J_q_points, J_w_points, J_a_points, J_j_points})
+            for (jacobian_blocks* J :
+                 std::array<jacobian_blocks*, 4>{J_q_points, J_w_points, J_a_points, J_j_points})
                 if (J != nullptr) detail::fill_nan(*J);
             const T nan = detail::quiet_nan<T>();
             return {

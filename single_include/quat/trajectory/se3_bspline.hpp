@@ -132,9 +132,13 @@ namespace detail {
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
 template <int K>
-[[nodiscard]] constexpr std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
+[[nodiscard]] constexpr std::array<
+    std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
 cumulative_basis_table() noexcept {
-    std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4> table{};
+    std::array<
+        std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>,
+        4>
+        table{};
     for (int s = 0; s < K; ++s)
         for (int n = 0; n < K; ++n) {
             long long sum = 0;
@@ -144,8 +148,8 @@ cumulative_basis_table() noexcept {
                 sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(K, l - s) * power;
             }
             const long long entry = binomial_of(K - 1, n) * sum;
-            for (int j = 0; j <= s; ++j) table[0][static_cast<std::size_t>(j)]
-                                              [static_cast<std::size_t>(n)] += entry;
+            for (int j = 0; j <= s; ++j)
+                table[0][static_cast<std::size_t>(j)][static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
         for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
@@ -164,8 +168,8 @@ struct cumulative_weights {
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
 template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(const T& u,
-                                                                       const T& dt) noexcept {
+[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(
+    const T& u, const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
     cumulative_weights<T, static_cast<std::size_t>(K)> w{};
     T scale = T(static_cast<double>(factorial_of(K - 1)));
@@ -177,7 +181,8 @@ template <class T, int K>
             }
             const std::size_t top = K - 1 - d;  // the degree after d derivatives
             T sum = T(static_cast<double>(table[d][j][top]));
-            for (std::size_t n = top; n-- > 0;) sum = sum * u + T(static_cast<double>(table[d][j][n]));
+            for (std::size_t n = top; n-- > 0;)
+                sum = sum * u + T(static_cast<double>(table[d][j][n]));
             w.b[d][j] = sum / scale;
         }
         scale = scale * dt;
@@ -333,8 +338,10 @@ struct lie_spline_sample {
 /// d_(K-1) (J_d[0] unused): block m = J_d[m] dd_m/dP_m + J_d[m+1] dd_(m+1)/dP_m, plus `direct`
 /// for P_0.
 template <class M, int K>
-constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d, const std::array<M, static_cast<std::size_t>(K)>& J_self,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_previous, const M& direct,
+constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d,
+                               const std::array<M, static_cast<std::size_t>(K)>& J_self,
+                               const std::array<M, static_cast<std::size_t>(K)>& J_previous,
+                               const M& direct,
                                std::array<M, static_cast<std::size_t>(K)>& out) noexcept {
     for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
         M block = m == 0 ? direct : J_d[m] * J_self[m];
@@ -349,8 +356,8 @@ constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>&
 /// blocks; a velocity Jacobian asks for at least that order. No allocation: fixed-size arrays.
 template <class Group, class T, int K>
 constexpr lie_spline_sample<Group> evaluate_lie_bspline(
-    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w, int order,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
+    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w,
+    int order, std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_velocity,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_acceleration,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_jerk) noexcept {
@@ -365,8 +372,10 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     const auto& b1 = w.b[1];
     const auto& b2 = w.b[2];
     const auto& b3 = w.b[3];
-    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
-    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
+    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{},
+        yB{};  // d_j; Ad(A_j^-1) times w_j, a_j, y_j
+    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{},
+        jerk{};  // w, a, y by level (1 .. K)
     std::array<M, static_cast<std::size_t>(K)> J_self{}, J_previous{}, J_exp{}, B{};
     vel[1] = acc[1] = jerk[1] = Group::zero();
     lie_spline_sample<Group> out{p[0], Group::zero(), Group::zero(), Group::zero()};
@@ -420,13 +429,14 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             const M through_b = J_exp[j] * b0[j];
             const M ad1 = Group::ad(d[j] * b1[j]);
             const M La_total = La - Lb * ad1;  // a_(j+1) reads w_(j+1) through [w, x_j]
-            J_d[j] = La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
-                     Lb * (Group::ad(aB[j]) * through_b + I * b2[j] +
-                           Group::ad(vel[j + 1]) * b1[j]);
+            J_d[j] =
+                La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
+                Lb * (Group::ad(aB[j]) * through_b + I * b2[j] + Group::ad(vel[j + 1]) * b1[j]);
             La = La_total * B[j];
             Lb = Lb * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_acceleration);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O,
+                                                        *J_acceleration);
     }
     if (J_jerk != nullptr) {
         M La = O, Lb = O, Lc = I;
@@ -437,10 +447,11 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             const M Lb_total = Lb - Lc * ad1 * T(2);
             const M La_total = La - Lb_total * ad1 - Lc * (ad2 + ad1 * ad1);
             // d/d d_j of 2 [a, b' d] + [w, b'' d] + b'^2 [d, [w, d]] + b''' d, w and a held
-            const M source = Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
-                             (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
-                                 (b1[j] * b1[j]) +
-                             I * b3[j];
+            const M source =
+                Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
+                (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
+                    (b1[j] * b1[j]) +
+                I * b3[j];
             J_d[j] = La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
                      Lb_total * (Group::ad(aB[j]) * through_b + I * b2[j] + ad_w * b1[j]) +
                      Lc * (Group::ad(yB[j]) * through_b + source);
@@ -710,7 +721,8 @@ public:
         jacobian_blocks* J_j_points = nullptr) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) {
-            for (jacobian_blocks* J : {J_x_points, J_v_points, J_a_points, J_j_points})
+            for (jacobian_blocks* J :
+                 std::array<jacobian_blocks*, 4>{J_x_points, J_v_points, J_a_points, J_j_points})
                 if (J != nullptr) detail::fill_nan(*J);
             const T nan = detail::quiet_nan<T>();
             const se3::twist<T> nan_twist{{nan, nan, nan}, {nan, nan, nan}};

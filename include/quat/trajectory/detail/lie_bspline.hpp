@@ -107,8 +107,10 @@ struct lie_spline_sample {
 /// d_(K-1) (J_d[0] unused): block m = J_d[m] dd_m/dP_m + J_d[m+1] dd_(m+1)/dP_m, plus `direct`
 /// for P_0.
 template <class M, int K>
-constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d, const std::array<M, static_cast<std::size_t>(K)>& J_self,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_previous, const M& direct,
+constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d,
+                               const std::array<M, static_cast<std::size_t>(K)>& J_self,
+                               const std::array<M, static_cast<std::size_t>(K)>& J_previous,
+                               const M& direct,
                                std::array<M, static_cast<std::size_t>(K)>& out) noexcept {
     for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
         M block = m == 0 ? direct : J_d[m] * J_self[m];
@@ -123,8 +125,8 @@ constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>&
 /// blocks; a velocity Jacobian asks for at least that order. No allocation: fixed-size arrays.
 template <class Group, class T, int K>
 constexpr lie_spline_sample<Group> evaluate_lie_bspline(
-    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w, int order,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
+    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w,
+    int order, std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_velocity,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_acceleration,
     std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_jerk) noexcept {
@@ -139,8 +141,10 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     const auto& b1 = w.b[1];
     const auto& b2 = w.b[2];
     const auto& b3 = w.b[3];
-    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
-    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
+    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{},
+        yB{};  // d_j; Ad(A_j^-1) times w_j, a_j, y_j
+    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{},
+        jerk{};  // w, a, y by level (1 .. K)
     std::array<M, static_cast<std::size_t>(K)> J_self{}, J_previous{}, J_exp{}, B{};
     vel[1] = acc[1] = jerk[1] = Group::zero();
     lie_spline_sample<Group> out{p[0], Group::zero(), Group::zero(), Group::zero()};
@@ -194,13 +198,14 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             const M through_b = J_exp[j] * b0[j];
             const M ad1 = Group::ad(d[j] * b1[j]);
             const M La_total = La - Lb * ad1;  // a_(j+1) reads w_(j+1) through [w, x_j]
-            J_d[j] = La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
-                     Lb * (Group::ad(aB[j]) * through_b + I * b2[j] +
-                           Group::ad(vel[j + 1]) * b1[j]);
+            J_d[j] =
+                La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
+                Lb * (Group::ad(aB[j]) * through_b + I * b2[j] + Group::ad(vel[j + 1]) * b1[j]);
             La = La_total * B[j];
             Lb = Lb * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_acceleration);
+        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O,
+                                                        *J_acceleration);
     }
     if (J_jerk != nullptr) {
         M La = O, Lb = O, Lc = I;
@@ -211,10 +216,11 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             const M Lb_total = Lb - Lc * ad1 * T(2);
             const M La_total = La - Lb_total * ad1 - Lc * (ad2 + ad1 * ad1);
             // d/d d_j of 2 [a, b' d] + [w, b'' d] + b'^2 [d, [w, d]] + b''' d, w and a held
-            const M source = Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
-                             (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
-                                 (b1[j] * b1[j]) +
-                             I * b3[j];
+            const M source =
+                Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
+                (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
+                    (b1[j] * b1[j]) +
+                I * b3[j];
             J_d[j] = La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
                      Lb_total * (Group::ad(aB[j]) * through_b + I * b2[j] + ad_w * b1[j]) +
                      Lc * (Group::ad(yB[j]) * through_b + source);

@@ -36,9 +36,13 @@ namespace detail {
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
 template <int K>
-[[nodiscard]] constexpr std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
+[[nodiscard]] constexpr std::array<
+    std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
 cumulative_basis_table() noexcept {
-    std::array<std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4> table{};
+    std::array<
+        std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>,
+        4>
+        table{};
     for (int s = 0; s < K; ++s)
         for (int n = 0; n < K; ++n) {
             long long sum = 0;
@@ -48,8 +52,8 @@ cumulative_basis_table() noexcept {
                 sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(K, l - s) * power;
             }
             const long long entry = binomial_of(K - 1, n) * sum;
-            for (int j = 0; j <= s; ++j) table[0][static_cast<std::size_t>(j)]
-                                              [static_cast<std::size_t>(n)] += entry;
+            for (int j = 0; j <= s; ++j)
+                table[0][static_cast<std::size_t>(j)][static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
         for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
@@ -68,8 +72,8 @@ struct cumulative_weights {
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
 template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(const T& u,
-                                                                       const T& dt) noexcept {
+[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(
+    const T& u, const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
     cumulative_weights<T, static_cast<std::size_t>(K)> w{};
     T scale = T(static_cast<double>(factorial_of(K - 1)));
@@ -81,7 +85,8 @@ template <class T, int K>
             }
             const std::size_t top = K - 1 - d;  // the degree after d derivatives
             T sum = T(static_cast<double>(table[d][j][top]));
-            for (std::size_t n = top; n-- > 0;) sum = sum * u + T(static_cast<double>(table[d][j][n]));
+            for (std::size_t n = top; n-- > 0;)
+                sum = sum * u + T(static_cast<double>(table[d][j][n]));
             w.b[d][j] = sum / scale;
         }
         scale = scale * dt;
