@@ -4,7 +4,10 @@
 // Jacobians by automatic differentiation with ceres::Jet (jacobian/jet/<spline>_k<K>/double: the
 // spline evaluated on Jets over the 3K (SO(3)) or 6K (SE(3)) right-tangent perturbations of the
 // control points, the value's derivatives read into its tangent as bench_lie.cpp does), for K = 4,
-// 5, 6; and evaluation over 1024 sorted times of a 64-point spline, the value alone and with every
+// 5, 6; the value, velocity, acceleration and jerk without Jacobians, by the O(K) recurrences
+// (derivatives/quat/<spline>_k<K>/double) and by the O(K^2)-and-more product rule that the tests
+// hold them to (derivatives/textbook/<spline>_k<K>/double, tests/support/bspline_reference.hpp,
+// weights included in both); and evaluation over 1024 sorted times of a 64-point spline, the value alone and with every
 // Jacobian (bspline_batch/quat/<spline>_k<K>_{value,jacobians}/double/1024: items are times).
 #include <algorithm>
 #include <array>
@@ -17,6 +20,7 @@
 #include <quat/trajectory/se3_bspline.hpp>
 #include <quat/trajectory/so3_bspline.hpp>
 
+#include "../tests/support/bspline_reference.hpp"
 #include "common.hpp"
 
 namespace bench {
@@ -186,6 +190,30 @@ void register_order() {
     });
 }
 
+/// Value, velocity, acceleration and jerk: the library's recurrences against the textbook product
+/// rule, both from the same segment and time.
+template <std::size_t K>
+void register_textbook() {
+    const std::string k = "_k" + std::to_string(K);
+    add("derivatives/quat/so3_bspline" + k + "/double", rotations<K>,
+        [](const segment<quatd, K>& s) {
+            return quat::so3_bspline<double, K>(s.points.data(), K, 0.0, 1.0).evaluate(s.t);
+        });
+    add("derivatives/textbook/so3_bspline" + k + "/double", rotations<K>,
+        [](const segment<quatd, K>& s) {
+            return quat::test::textbook_bspline<quat::test::so3_reference<double>, double, K>(
+                s.points.data(), quat::detail::cumulative_weights_at<double, K>(s.t, 1.0));
+        });
+    add("derivatives/quat/se3_bspline" + k + "/double", motions<K>, [](const segment<dq, K>& s) {
+        return quat::se3_bspline<double, K>(s.points.data(), K, 0.0, 1.0).evaluate(s.t);
+    });
+    add("derivatives/textbook/se3_bspline" + k + "/double", motions<K>,
+        [](const segment<dq, K>& s) {
+            return quat::test::textbook_bspline<quat::test::se3_reference<double>, double, K>(
+                s.points.data(), quat::detail::cumulative_weights_at<double, K>(s.t, 1.0));
+        });
+}
+
 /// 64 control points in a chain of small steps, and 1024 sorted times over the whole domain.
 template <class Point>
 struct batch_input {
@@ -253,6 +281,9 @@ void register_trajectory() {
     register_order<4>();
     register_order<5>();
     register_order<6>();
+    register_textbook<4>();
+    register_textbook<5>();
+    register_textbook<6>();
     register_batch<quat::so3_bspline, quatd, 4>("so3");
     register_batch<quat::se3_bspline, dq, 4>("se3");
     register_batch<quat::so3_bspline, quatd, 6>("so3");

@@ -183,8 +183,15 @@ template <class T>
     const quaternion<T>& y, const quaternion<T>& x,
     detail::type_identity_t<matrix3<T>>* J_w_y = nullptr,
     detail::type_identity_t<matrix3<T>>* J_w_x = nullptr) noexcept {
-    const vec3<T> w = log(conjugate(x) * y, J_w_y);
-    if (J_w_x != nullptr) *J_w_x = -left_jacobian_inverse(w);
+    const vec3<T> w = to_rotation_vector(conjugate(x) * y);
+    if (J_w_y != nullptr || J_w_x != nullptr) {
+        // Jr^-1 and Jl^-1 share their coefficients (they differ in the sign of [w]x): computed
+        // once, the two are what right_ and left_jacobian_inverse return, bit for bit.
+        const detail::right_jacobian_coefficients<T> k =
+            detail::right_jacobian_coefficients_of(w, true);
+        if (J_w_y != nullptr) *J_w_y = detail::skew_polynomial(w, T(1), T(0.5), k.c);
+        if (J_w_x != nullptr) *J_w_x = -detail::skew_polynomial(w, T(1), T(-0.5), k.c);
+    }
     return w;
 }
 

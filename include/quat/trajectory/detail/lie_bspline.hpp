@@ -169,62 +169,53 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     if (order >= 3) out.jerk = jerk[K];
     if (!jacobians) return out;
 
+    // One backward sweep for every requested output. L = Ad(A_(K-1)^-1) ... Ad(A_(j+1)^-1)
+    // carries a change of level j + 1's value or rates to the output's, the same product for
+    // each; the accelerations and the jerk also carry what the brackets read of the lower rates.
     const M I = M::identity(), O = M::zero();
-    std::array<M, K> J_d{};
-    if (J_value != nullptr) {  // X depends on d_j through Ad(S_j^-1) b~_j Jr(b~_j d_j)
-        M L = I;
-        for (std::size_t j = K - 1; j >= 1; --j) {
-            J_d[j] = L * (J_exp[j] * b0[j]);
-            L = L * B[j];
-        }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, L, *J_value);
-    }
-    if (J_velocity != nullptr) {
-        M La = I;
-        for (std::size_t j = K - 1; j >= 1; --j) {
-            const M through_b = J_exp[j] * b0[j];
-            J_d[j] = La * (Group::ad(wB[j]) * through_b + I * b1[j]);
-            La = La * B[j];
-        }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_velocity);
-    }
-    if (J_acceleration != nullptr) {
-        M La = O, Lb = I;
-        for (std::size_t j = K - 1; j >= 1; --j) {
-            const M through_b = J_exp[j] * b0[j];
+    std::array<M, K> J_d_value{}, J_d_velocity{}, J_d_acceleration{}, J_d_jerk{};
+    M L = I;
+    M acceleration_w = O;      // d a_K / d w_(j+1)
+    M jerk_w = O, jerk_a = O;  // d y_K / d w_(j+1), d y_K / d a_(j+1)
+    for (std::size_t j = K - 1; j >= 1; --j) {
+        const M through_b = J_exp[j] * b0[j];  // X depends on d_j through b~_j Jr(b~_j d_j)
+        // d w_(j+1) / d d_j, and d a_(j+1) / d d_j with w_(j+1) held.
+        const M velocity_source = Group::ad(wB[j]) * through_b + I * b1[j];
+        if (J_value != nullptr) J_d_value[j] = L * through_b;
+        if (J_velocity != nullptr) J_d_velocity[j] = L * velocity_source;
+        if (J_acceleration != nullptr || J_jerk != nullptr) {
             const M ad1 = Group::ad(d[j] * b1[j]);
-            const M La_total = La - Lb * ad1;  // a_(j+1) reads w_(j+1) through [w, x_j]
-            J_d[j] =
-                La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
-                Lb * (Group::ad(aB[j]) * through_b + I * b2[j] + Group::ad(vel[j + 1]) * b1[j]);
-            La = La_total * B[j];
-            Lb = Lb * B[j];
-        }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_acceleration);
-    }
-    if (J_jerk != nullptr) {
-        M La = O, Lb = O, Lc = I;
-        for (std::size_t j = K - 1; j >= 1; --j) {
-            const M through_b = J_exp[j] * b0[j];
-            const M ad1 = Group::ad(d[j] * b1[j]), ad2 = Group::ad(d[j] * b2[j]);
             const M ad_w = Group::ad(vel[j + 1]);
-            const M Lb_total = Lb - Lc * ad1 * T(2);
-            const M La_total = La - Lb_total * ad1 - Lc * (ad2 + ad1 * ad1);
-            // d/d d_j of 2 [a, b' d] + [w, b'' d] + b'^2 [d, [w, d]] + b''' d, w and a held
-            const M source =
-                Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
-                (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
-                    (b1[j] * b1[j]) +
-                I * b3[j];
-            J_d[j] = La_total * (Group::ad(wB[j]) * through_b + I * b1[j]) +
-                     Lb_total * (Group::ad(aB[j]) * through_b + I * b2[j] + ad_w * b1[j]) +
-                     Lc * (Group::ad(yB[j]) * through_b + source);
-            La = La_total * B[j];
-            Lb = Lb_total * B[j];
-            Lc = Lc * B[j];
+            const M acceleration_source = Group::ad(aB[j]) * through_b + I * b2[j] + ad_w * b1[j];
+            if (J_acceleration != nullptr) {
+                const M total_w = acceleration_w - L * ad1;  // a_(j+1) reads w_(j+1) in [w, x_j]
+                J_d_acceleration[j] = total_w * velocity_source + L * acceleration_source;
+                acceleration_w = total_w * B[j];
+            }
+            if (J_jerk != nullptr) {
+                const M ad2 = Group::ad(d[j] * b2[j]);
+                const M total_a = jerk_a - L * ad1 * T(2);
+                const M total_w = jerk_w - total_a * ad1 - L * (ad2 + ad1 * ad1);
+                // d/d d_j of 2 [a, b' d] + [w, b'' d] + b'^2 [d, [w, d]] + b''' d, w and a held
+                const M source =
+                    Group::ad(acc[j + 1]) * (b1[j] * T(2)) + ad_w * b2[j] +
+                    (Group::ad(d[j]) * ad_w - Group::ad(Group::bracket(vel[j + 1], d[j]))) *
+                        (b1[j] * b1[j]) +
+                    I * b3[j];
+                J_d_jerk[j] = total_w * velocity_source + total_a * acceleration_source +
+                              L * (Group::ad(yB[j]) * through_b + source);
+                jerk_w = total_w * B[j];
+                jerk_a = total_a * B[j];
+            }
         }
-        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_jerk);
+        L = L * B[j];
     }
+    if (J_value != nullptr) to_point_blocks<M, K>(J_d_value, J_self, J_previous, L, *J_value);
+    if (J_velocity != nullptr)
+        to_point_blocks<M, K>(J_d_velocity, J_self, J_previous, O, *J_velocity);
+    if (J_acceleration != nullptr)
+        to_point_blocks<M, K>(J_d_acceleration, J_self, J_previous, O, *J_acceleration);
+    if (J_jerk != nullptr) to_point_blocks<M, K>(J_d_jerk, J_self, J_previous, O, *J_jerk);
     return out;
 }
 
