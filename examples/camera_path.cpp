@@ -157,15 +157,15 @@ int main(int argc, char** argv) {
         orbit_keys.push_back(orbit(times.back()));
         dolly_keys.push_back(dolly(times.back()));
     }
-    const split_keyframe_path<double> orbit_split(times, orbit_keys),
-        dolly_split(times, dolly_keys);
-    const se3_keyframe_path<double> orbit_coupled(times, orbit_keys),
-        dolly_coupled(times, dolly_keys);
-    const measured os = measure(orbit_split, times, orbit_keys, orbit, off_arc),
-                   oc = measure(orbit_coupled, times, orbit_keys, orbit, off_arc),
-                   ds = measure(dolly_split, times, dolly_keys, dolly, off_rail),
-                   dc = measure(dolly_coupled, times, dolly_keys, dolly, off_rail);
-    const measured* all[4] = {&os, &oc, &ds, &dc};
+    const split_keyframe_path<double> split_orbit_path(times, orbit_keys),
+        split_dolly_path(times, dolly_keys);
+    const se3_keyframe_path<double> coupled_orbit_path(times, orbit_keys),
+        coupled_dolly_path(times, dolly_keys);
+    const measured split_orbit = measure(split_orbit_path, times, orbit_keys, orbit, off_arc),
+                   coupled_orbit = measure(coupled_orbit_path, times, orbit_keys, orbit, off_arc),
+                   split_dolly = measure(split_dolly_path, times, dolly_keys, dolly, off_rail),
+                   coupled_dolly = measure(coupled_dolly_path, times, dolly_keys, dolly, off_rail);
+    const measured* all[4] = {&split_orbit, &coupled_orbit, &split_dolly, &coupled_dolly};
     const char* names[4] = {"orbit, split", "orbit, coupled", "dolly, split", "dolly, coupled"};
     for (int i = 0; i < 4; ++i) {
         std::printf(
@@ -185,20 +185,20 @@ int main(int argc, char** argv) {
     }
     expect(keyframes, "all four paths pass through their keyframes at the keyframes' times");
     expect(rotations, "split and coupled share the orientation, the intended one in both shots");
-    expect(oc.pose_error < tolerance && oc.aim_miss < tolerance,
+    expect(coupled_orbit.pose_error < tolerance && coupled_orbit.aim_miss < tolerance,
            "orbit: the coupled path is the orbit itself, looking at the subject all the way");
-    expect(std::abs(oc.slowest - orbit_rate * orbit_radius) < tolerance &&
-               std::abs(oc.fastest - orbit_rate * orbit_radius) < tolerance,
+    expect(std::abs(coupled_orbit.slowest - orbit_rate * orbit_radius) < tolerance &&
+               std::abs(coupled_orbit.fastest - orbit_rate * orbit_radius) < tolerance,
            "orbit: ... at a constant 2.09 m/s");
-    expect(os.off_path > 0.45 && os.off_path < 0.5 &&
-               std::abs(orbit_radius - os.closest - os.off_path) < tolerance,
+    expect(split_orbit.off_path > 0.45 && split_orbit.off_path < 0.5 &&
+               std::abs(orbit_radius - split_orbit.closest - split_orbit.off_path) < tolerance,
            "orbit: the split path cuts inside the arc, by 0.45-0.5 m at most");
-    expect(os.aim_miss > 3.3 * degree && os.aim_miss < 3.7 * degree,
+    expect(split_orbit.aim_miss > 3.3 * degree && split_orbit.aim_miss < 3.7 * degree,
            "orbit: ... and its view axis misses the subject by 3.3-3.7 deg");
-    expect(ds.pose_error < tolerance && ds.slowest > rail_speed - tolerance &&
-               ds.fastest < rail_speed + tolerance,
+    expect(split_dolly.pose_error < tolerance && split_dolly.slowest > rail_speed - tolerance &&
+               split_dolly.fastest < rail_speed + tolerance,
            "dolly: the split path is the dolly itself, on the rail at a constant 2 m/s");
-    expect(dc.off_path > 0.35 && dc.off_path < 0.4,
+    expect(coupled_dolly.off_path > 0.35 && coupled_dolly.off_path < 0.4,
            "dolly: the coupled path bows off the rail, by 0.35-0.4 m at most");
 
     // ---- The picture ---------------------------------------------------------------------------
@@ -218,8 +218,8 @@ int main(int argc, char** argv) {
          view3d::camera::looking_from(-90 * degree, 55 * degree, {250, 285}, 46), -4, 4, -4, 4},
         {"Dolly: 2 m/s along a rail, steady 30 deg/s pan",
          view3d::camera::looking_from(-12 * degree, 35 * degree, {770, 270}, 40), -7, 7, -5, 1}};
-    const measured* split_of[2] = {&os, &ds};
-    const measured* coupled_of[2] = {&oc, &dc};
+    const measured* split_of[2] = {&split_orbit, &split_dolly};
+    const measured* coupled_of[2] = {&coupled_orbit, &coupled_dolly};
     const std::vector<pose>* keys_of[2] = {&orbit_keys, &dolly_keys};
     for (int s = 0; s < 2; ++s) {
         const shot_drawing& shot = shots[s];
@@ -244,9 +244,9 @@ int main(int argc, char** argv) {
         for (int k = 1; k < 12; ++k) {
             if (k % 4 == 0) continue;
             const double t = 0.5 * k;
-            draw_frustum(doc, view, s == 0 ? orbit_split(t) : dolly_split(t),
+            draw_frustum(doc, view, s == 0 ? split_orbit_path(t) : split_dolly_path(t),
                          {"#ff7f0e", 1.0, "none", 0.9});
-            draw_frustum(doc, view, s == 0 ? orbit_coupled(t) : dolly_coupled(t),
+            draw_frustum(doc, view, s == 0 ? coupled_orbit_path(t) : coupled_dolly_path(t),
                          {"#1f77b4", 1.0, "none", 0.9});
         }
         for (int i = 0; i < key_count; ++i) {
@@ -290,19 +290,21 @@ int main(int argc, char** argv) {
     std::vector<double> axis;
     for (int k = 0; k <= samples; ++k) axis.push_back(sample_time(k));
     plot::draw(doc, left,
-               {{"split", axis, os.off, split_look}, {"coupled", axis, oc.off, coupled_look}});
+               {{"split", axis, split_orbit.off, split_look},
+                {"coupled", axis, coupled_orbit.off, coupled_look}});
     plot::draw(doc, right,
-               {{"split", axis, ds.off, split_look}, {"coupled", axis, dc.off, coupled_look}});
+               {{"split", axis, split_dolly.off, split_look},
+                {"coupled", axis, coupled_dolly.off, coupled_look}});
     char line[160];
     std::snprintf(line, sizeof line,
                   "split cuts inside by up to %.2f m (view axis %.1f deg off the subject);",
-                  os.off_path, os.aim_miss / degree);
+                  split_orbit.off_path, split_orbit.aim_miss / degree);
     doc.text({260, 760}, line, 12, "middle", "#444");
     std::snprintf(line, sizeof line, "coupled is the orbit, within %s m, at %.2f m/s",
                   tolerance_text, orbit_rate * orbit_radius);
     doc.text({260, 776}, line, 12, "middle", "#444");
     std::snprintf(line, sizeof line, "coupled bows off by up to %.2f m (speed %.2f to %.2f m/s);",
-                  dc.off_path, dc.slowest, dc.fastest);
+                  coupled_dolly.off_path, coupled_dolly.slowest, coupled_dolly.fastest);
     doc.text({760, 760}, line, 12, "middle", "#444");
     std::snprintf(line, sizeof line, "split is the dolly, within %s m, at %.0f m/s", tolerance_text,
                   rail_speed);
