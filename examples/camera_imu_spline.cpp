@@ -11,7 +11,9 @@
 // Each camera pose becomes a body pose (times the extrinsic's inverse) at the IMU time of the
 // exposure (stamp - offset). A cubic (K = 4) spline with knots every 0.1 s, its control points
 // interpolated from those body poses and both biases zero at the start, is fitted to all
-// measurements weighted by the inverse standard deviations: once as split_bspline (SO(3) x R^3,
+// measurements: the IMU's weighted by their inverse standard deviations, the body poses' by the
+// inverse Cholesky factor of their covariance (the camera's turn also moves the body through the
+// lever arm: camera_imu_run.hpp's body_pose_covariance). Once as split_bspline (SO(3) x R^3,
 // drawn) and once as se3_bspline (printed beside it). Ceres: sparse normal Cholesky, one thread,
 // at most 50 iterations; the biases' standard errors from ceres::Covariance.
 // Run: example_camera_imu_spline [output directory]  -> camera_imu_spline.svg
@@ -26,6 +28,7 @@
 #include <ceres/covariance.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
+#include <Eigen/Cholesky>
 #include <quat/interop/ceres_trajectory.hpp>
 #include <quat/quat.hpp>
 
@@ -95,12 +98,18 @@ struct run {
     [[nodiscard]] matrix3<double> weight(double sigma) const {
         return matrix3<double>::identity() * (1 / sigma);
     }
-    [[nodiscard]] matrix6<double> pose_weight() const {
+    /// S with S C S^T = I for the covariance C of a body pose measured with `rotation`
+    /// (body_pose_covariance): L^-1 for C = L L^T.
+    [[nodiscard]] matrix6<double> pose_weight(const quatd& rotation, bool world_position) const {
+        const matrix6<double> c = camera_imu::body_pose_covariance(setup, rotation, world_position);
+        Eigen::Matrix<double, 6, 6> covariance;
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j) covariance(i, j) = c(i, j);
+        const Eigen::Matrix<double, 6, 6> inverse_factor =
+            covariance.llt().matrixL().solve(Eigen::Matrix<double, 6, 6>::Identity());
         matrix6<double> s{};
-        for (int k = 0; k < 3; ++k) {
-            s(k, k) = 1 / setup.camera_position_noise;
-            s(k + 3, k + 3) = 1 / setup.camera_angle_noise;
-        }
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j) s(i, j) = inverse_factor(i, j);
         return s;
     }
 };
@@ -167,7 +176,8 @@ fit_result fit_split(const run& r) {
     for (const pose_measurement& z : r.body_poses) {
         const auto [first, offset] = segment_of(knots, z.time);
         problem.AddResidualBlock(
-            new split_bspline_pose_cost<order>(offset, knot_spacing, z.pose, r.pose_weight()),
+            new split_bspline_pose_cost<order>(offset, knot_spacing, z.pose,
+                                               r.pose_weight(rotation_of(z.pose), true)),
             nullptr, blocks(first, true, nullptr));
     }
     for (const camera_imu::imu_reading& z : r.imu) {
@@ -223,7 +233,8 @@ fit_result fit_se3(const run& r) {
     for (const pose_measurement& z : r.body_poses) {
         const auto [first, offset] = segment_of(knots, z.time);
         problem.AddResidualBlock(
-            new se3_bspline_pose_cost<order>(offset, knot_spacing, z.pose, r.pose_weight()),
+            new se3_bspline_pose_cost<order>(offset, knot_spacing, z.pose,
+                                             r.pose_weight(rotation_of(z.pose), false)),
             nullptr, blocks(first, nullptr));
     }
     for (const camera_imu::imu_reading& z : r.imu) {
