@@ -31,29 +31,28 @@ using jet = ceres::Jet<double, N>;
 
 /// K control points of one segment (t0 = 0, dt = 1, the domain [0, 1]) and a time in it. Each
 /// point is a small random step from the previous one, as a fitted trajectory's are.
-template <class Point, int K>
+template <class Point, std::size_t K>
 struct segment {
-    std::array<Point, static_cast<std::size_t>(K)> points;
+    std::array<Point, K> points;
     double t;
 };
 quatd step_rotation(random_source& r, const quatd& from) {
     return from * quat::from_rotation_vector(quat::normalize(r.vector()) * r.uniform(0.05, 0.8));
 }
-template <int K>
+template <std::size_t K>
 segment<quatd, K> rotations(random_source& r) {
     segment<quatd, K> s{};
     s.points[0] = r.rotation();
-    for (std::size_t m = 1; m < static_cast<std::size_t>(K); ++m)
-        s.points[m] = step_rotation(r, s.points[m - 1]);
+    for (std::size_t m = 1; m < K; ++m) s.points[m] = step_rotation(r, s.points[m - 1]);
     s.t = r.uniform(0, 1);
     return s;
 }
-template <int K>
+template <std::size_t K>
 segment<dq, K> motions(random_source& r) {
     const segment<quatd, K> q = rotations<K>(r);
     segment<dq, K> s{};
     vec3<double> p = r.vector();
-    for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
+    for (std::size_t m = 0; m < K; ++m) {
         s.points[m] = quat::to_dual_quaternion(q.points[m], p);
         p += r.vector() * 0.3;
     }
@@ -146,7 +145,7 @@ void add(const std::string& name, Make make, F f) {
                                  [make, f](benchmark::State& state) { cycle(state, make, f); });
 }
 
-template <int K>
+template <std::size_t K>
 void register_order() {
     const std::string k = "_k" + std::to_string(K);
     constexpr int N3 = 3 * K, N6 = 6 * K;
@@ -159,8 +158,8 @@ void register_order() {
         return r;
     });
     add("jacobian/jet/so3_bspline" + k + "/double", rotations<K>, [](const segment<quatd, K>& s) {
-        std::array<quat::quaternion<jet<N3>>, static_cast<std::size_t>(K)> points;
-        for (int m = 0; m < K; ++m)
+        std::array<quat::quaternion<jet<N3>>, K> points;
+        for (int m = 0; m < static_cast<int>(K); ++m)
             points[static_cast<std::size_t>(m)] =
                 first_order_plus<N3>(s.points[static_cast<std::size_t>(m)], 3 * m);
         const auto sample = quat::so3_bspline<jet<N3>, K>(points.data(), K, jet<N3>(0), jet<N3>(1))
@@ -176,8 +175,8 @@ void register_order() {
         return r;
     });
     add("jacobian/jet/se3_bspline" + k + "/double", motions<K>, [](const segment<dq, K>& s) {
-        std::array<quat::dual_quaternion<jet<N6>>, static_cast<std::size_t>(K)> points;
-        for (int m = 0; m < K; ++m)
+        std::array<quat::dual_quaternion<jet<N6>>, K> points;
+        for (int m = 0; m < static_cast<int>(K); ++m)
             points[static_cast<std::size_t>(m)] =
                 first_order_plus<N6>(s.points[static_cast<std::size_t>(m)], 6 * m);
         const auto sample = quat::se3_bspline<jet<N6>, K>(points.data(), K, jet<N6>(0), jet<N6>(1))
@@ -193,7 +192,7 @@ struct batch_input {
     std::vector<Point> points;
     std::vector<double> times;
 };
-template <class Point, int K>
+template <class Point, std::size_t K>
 batch_input<Point> make_batch(random_source& r) {
     constexpr std::size_t count = 64, times = 1024;
     batch_input<Point> b;
@@ -205,13 +204,13 @@ batch_input<Point> make_batch(random_source& r) {
         q = step_rotation(r, q);
         p += r.vector() * 0.3;
     }
-    const double end = double(count - static_cast<std::size_t>(K) + 1);
+    const double end = double(count - K + 1);
     for (std::size_t i = 0; i < times; ++i) b.times.push_back(r.uniform(0, end));
     std::sort(b.times.begin(), b.times.end());
     return b;
 }
 
-template <template <class, int> class Spline, class Point, int K>
+template <template <class, std::size_t> class Spline, class Point, std::size_t K>
 void register_batch(const std::string& spline_name) {
     const std::string prefix = "bspline_batch/quat/" + spline_name + "_k" + std::to_string(K);
     benchmark::RegisterBenchmark(

@@ -37,7 +37,7 @@ std::vector<vec3<double>> random_points(std::size_t count) {
     return points;
 }
 
-template <int K>
+template <std::size_t K>
 void check_path(double t0, double dt) {
     const std::vector<vec3<double>> points = random_points(9);
     std::vector<vec3<ld>> wide;
@@ -101,12 +101,12 @@ void check_path(double t0, double dt) {
         using jet = ceres::Jet<double, K>;
         std::vector<vec3<jet>> jets;
         for (const vec3<double>& p : points) jets.push_back(vec3<jet>(p));
-        for (int m = 0; m < K; ++m)
+        for (int m = 0; m < static_cast<int>(K); ++m)
             jets[s.first + static_cast<std::size_t>(m)].x =
                 jet(points[s.first + static_cast<std::size_t>(m)].x, m);
         const euclidean_bspline<jet, K> through(jets, jet(t0), jet(dt));
         const euclidean_bspline_sample<jet> d = through.evaluate(jet(t));
-        for (int m = 0; m < K; ++m) {
+        for (int m = 0; m < static_cast<int>(K); ++m) {
             const auto i = static_cast<std::size_t>(m);
             CHECK(d.position.x.v[m] == Approx(Jp[i]).margin(1e-15));
             CHECK(d.velocity.x.v[m] == Approx(Jv[i]).margin(1e-15));

@@ -78,7 +78,7 @@ std::vector<control_points> point_sets(std::size_t count) {
     return sets;
 }
 
-template <int K>
+template <std::size_t K>
 std::vector<double> check_times(std::size_t count, double t0, double dt) {
     test::random_rotations random(7);
     std::vector<double> times;
@@ -96,17 +96,18 @@ bool is_knot(double t, double t0, double dt) {
     return s == std::floor(s);
 }
 
-template <int K>
+template <std::size_t K>
 using blocks = std::array<matrix6<double>, K>;
 
-template <int K>
+template <std::size_t K>
 matrix<double, 6, 6 * K> joined(const blocks<K>& b) {
     matrix<double, 6, 6 * K> m{};
-    for (int k = 0; k < K; ++k) set_block(m, 0, 6 * k, b[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < static_cast<int>(K); ++k)
+        set_block(m, 0, 6 * k, b[static_cast<std::size_t>(k)]);
     return m;
 }
 
-template <int K>
+template <std::size_t K>
 void check_against_differences(const control_points& set, double t0, double dt) {
     const std::vector<dq<double>>& points = set.points;
     std::vector<dq<ld>> wide;
@@ -245,7 +246,7 @@ quaternion<S> value_part(const quaternion<S>& q) {
 
 /// Forward-mode derivatives (6K partials) through evaluate, point first + m moved by the first-order
 /// right plus X ((1, omega / 2) + eps (0, rho / 2)), against the analytic Jacobians.
-template <int K, class S>
+template <std::size_t K, class S>
 void check_autodiff(const control_points& set, double t0, double dt, const std::string& scalar) {
     const std::vector<dq<double>>& points = set.points;
     const se3_bspline<double, K> spline(points, t0, dt);
@@ -256,7 +257,7 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
         const se3_bspline_sample<double> s = spline.evaluate(t, &Jx, &Jv, &Ja, &Jj);
         std::vector<dq<S>> moved;
         for (const dq<double>& x : points) moved.push_back(dq<S>(x));
-        for (int m = 0; m < K; ++m) {
+        for (int m = 0; m < static_cast<int>(K); ++m) {
             dq<S>& x = moved[s.first + static_cast<std::size_t>(m)];
             const S half(0.5), zero(0), one(1);
             S v[6];
@@ -283,7 +284,7 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
     }
 }
 
-template <int K>
+template <std::size_t K>
 void check_against_textbook(const control_points& set, double t0, double dt) {
     const std::vector<dq<double>>& points = set.points;
     std::vector<dq<ld>> wide;

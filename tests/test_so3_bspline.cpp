@@ -74,7 +74,7 @@ std::vector<control_points> point_sets(std::size_t count) {
 
 /// Times to check: every knot from t0 to the end, and random times inside segments (at least dt/20
 /// from a knot, so that central differences stay inside one segment).
-template <int K>
+template <std::size_t K>
 std::vector<double> check_times(std::size_t count, double t0, double dt) {
     test::random_rotations random(7);
     std::vector<double> times;
@@ -93,18 +93,19 @@ bool is_knot(double t, double t0, double dt) {
     return s == std::floor(s);
 }
 
-template <int K>
+template <std::size_t K>
 using blocks = std::array<matrix3<double>, K>;
 
 /// The 3 x 3K matrix of K blocks.
-template <int K>
+template <std::size_t K>
 matrix<double, 3, 3 * K> joined(const blocks<K>& b) {
     matrix<double, 3, 3 * K> m{};
-    for (int k = 0; k < K; ++k) set_block(m, 0, 3 * k, b[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < static_cast<int>(K); ++k)
+        set_block(m, 0, 3 * k, b[static_cast<std::size_t>(k)]);
     return m;
 }
 
-template <int K>
+template <std::size_t K>
 void check_against_differences(const control_points& set, double t0, double dt) {
     const std::vector<quaternion<double>>& points = set.points;
     std::vector<quaternion<ld>> wide;
@@ -203,13 +204,14 @@ TEST_CASE(
         return b[static_cast<std::size_t>(s)];
     };
     const auto check = [&](auto order) {
-        constexpr int K = decltype(order)::value;
+        constexpr std::size_t K = decltype(order)::value;
         for (const ld u : {0.0L, 0.125L, 0.5L, 0.75L, 0.999L}) {
             const auto w = detail::cumulative_weights_at<ld, K>(u, 1.0L);
-            for (int j = 0; j < K; ++j) {
+            for (int j = 0; j < static_cast<int>(K); ++j) {
                 // b~_j(u) = sum of the B-splines s >= j over the segment [K-1, K) of control points 0..K-1.
                 ld expected = 0;
-                for (int s = j; s < K; ++s) expected += cox_de_boor(K, s, K - 1 + u);
+                for (int s = j; s < static_cast<int>(K); ++s)
+                    expected += cox_de_boor(K, s, K - 1 + u);
                 CHECK(std::abs(w.b[0][static_cast<std::size_t>(j)] - expected) <= 1e-18L);
             }
         }
@@ -296,7 +298,7 @@ matrix<double, 3, C> partials(const vec3<S>& v) {
 
 /// Forward-mode derivatives (S with 3K partials) through evaluate, each point first + m moved by
 /// q (1, delta_m / 2), the first-order right plus, against the analytic Jacobians.
-template <int K, class S>
+template <std::size_t K, class S>
 void check_autodiff(const control_points& set, double t0, double dt, const std::string& scalar) {
     const std::vector<quaternion<double>>& points = set.points;
     const so3_bspline<double, K> spline(points, t0, dt);
@@ -309,7 +311,7 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
         for (const quaternion<double>& q : points)
             moved.push_back({constant(q.w, (S*)nullptr), constant(q.x, (S*)nullptr),
                              constant(q.y, (S*)nullptr), constant(q.z, (S*)nullptr)});
-        for (int m = 0; m < K; ++m) {
+        for (int m = 0; m < static_cast<int>(K); ++m) {
             quaternion<S>& q = moved[s.first + static_cast<std::size_t>(m)];
             const S half(0.5), one(1);
             q = q * quaternion<S>{one, variable(0, 3 * m, (S*)nullptr) * half,
@@ -382,7 +384,7 @@ TEST_CASE(
 namespace {
 
 /// The O(K) evaluation in double against the O(K^2) product rule in long double at the same u.
-template <int K>
+template <std::size_t K>
 void check_against_textbook(const control_points& set, double t0, double dt) {
     const std::vector<quaternion<double>>& points = set.points;
     std::vector<quaternion<ld>> wide;

@@ -34,7 +34,7 @@ bool same(const vec3<double>& a, const vec3<double>& b) {
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-template <int K>
+template <std::size_t K>
 void check_split(double t0, double dt) {
     test::random_rotations random;
     const std::vector<quaternion<double>> rotations = test::random_walk<double>(random, 9, 1.0);

@@ -6,6 +6,7 @@
 #ifndef QUAT_TRAJECTORY_HPP_INCLUDED
 #define QUAT_TRAJECTORY_HPP_INCLUDED
 
+#include "trajectory/bspline_segment.hpp"
 #include "trajectory/euclidean_bspline.hpp"
 #include "trajectory/keyframe_path_state.hpp"
 #include "trajectory/se3_bspline.hpp"

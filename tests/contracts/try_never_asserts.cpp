@@ -691,7 +691,7 @@ void bspline_times(const Spline& spline, const std::string& what, Blocks&... blo
 /// Six control points (K = 4: three segments over [0, 3]), one replaced by each hostile value.
 template <class T>
 void bspline_cases() {
-    constexpr int K = 4;
+    constexpr std::size_t K = 4;
     const quaternion<T> a = quat::normalize(quaternion<T>{T(0.9), T(0.1), T(-0.3), T(0.2)});
     const quaternion<T> b = quat::normalize(quaternion<T>{T(0.2), T(-0.5), T(0.7), T(0.4)});
     const std::vector<quaternion<T>> rotations{a, b, a, -b, b, a};

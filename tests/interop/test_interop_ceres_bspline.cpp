@@ -48,7 +48,7 @@ void write(const matrix<T, 3, 3>& S, const vec3<T>& e, T* residuals) {
 }
 
 /// The reference residuals, on Jets: `kind` picks which; blocks as the cost functions take them.
-template <int K>
+template <std::size_t K>
 struct reference {
     enum kind_t { rotation, pose, split_pose, gyro, se3_gyro, accel, se3_accel } kind;
     double offset, dt;
@@ -62,7 +62,7 @@ struct reference {
         std::array<quaternion<T>, K> q{};
         std::array<vec3<T>, K> x{};
         std::array<dual_quaternion<T>, K> X{};
-        for (int m = 0; m < K; ++m) {
+        for (int m = 0; m < static_cast<int>(K); ++m) {
             q[m] = quat::quaternion_from_parameters(p[m]);
             X[m] = quat::pose_from_parameters(p[m]);
             if (kind == split_pose || kind == accel) x[m] = quat::vec3_from_parameters(p[K + m]);
@@ -113,7 +113,7 @@ struct reference {
 
 /// Evaluates `cost` and the Jet reference at `blocks`; compares the residuals and, block by
 /// block, both Jacobians times the block's manifold PlusJacobian (identity for plain numbers).
-template <int K>
+template <std::size_t K>
 void compare(const ceres::CostFunction& cost, const reference<K>& functor,
              std::vector<std::vector<double>>& blocks) {
     ceres::DynamicAutoDiffCostFunction<reference<K>, 4> jet(new reference<K>(functor),
@@ -171,7 +171,7 @@ void compare(const ceres::CostFunction& cost, const reference<K>& functor,
     worst_relative = std::max(worst_relative, difference / largest);
 }
 
-template <int K>
+template <std::size_t K>
 void check_all(quat::test::random_rotations& random) {
     using ref = reference<K>;
     for (int trial = 0; trial < 20; ++trial) {
@@ -179,7 +179,7 @@ void check_all(quat::test::random_rotations& random) {
         // segment with dt = 0.5; random measurements and weights.
         std::vector<quaternion<double>> q{random.unit_quaternion<double>()};
         std::vector<vec3<double>> x{random.vector<double>()};
-        for (int m = 1; m < K; ++m) {
+        for (int m = 1; m < static_cast<int>(K); ++m) {
             q.push_back(q.back() * quat::from_rotation_vector(random.vector<double>() * 0.5));
             x.push_back(x.back() + random.vector<double>());
         }
@@ -196,7 +196,7 @@ void check_all(quat::test::random_rotations& random) {
             for (int c = r; c < 3; ++c)
                 f.S3(r, c) = (r == c ? 1.0 : 0.0) + 0.1 * random.uniform<double>(-1, 1);
         std::vector<std::vector<double>> rotations, poses, positions;
-        for (int m = 0; m < K; ++m) {
+        for (int m = 0; m < static_cast<int>(K); ++m) {
             rotations.push_back({q[m].w, q[m].x, q[m].y, q[m].z});
             poses.push_back({q[m].w, q[m].x, q[m].y, q[m].z, x[m].x, x[m].y, x[m].z});
             positions.push_back({x[m].x, x[m].y, x[m].z});

@@ -87,7 +87,7 @@ E product_derivative(const std::array<std::array<E, 4>, N>& factors, std::size_t
 }
 
 /// The sample of the spline over the K points p at the cumulative weights w, the textbook way.
-template <class Group, class T, int K>
+template <class Group, class T, std::size_t K>
 reference_sample<typename Group::tangent, typename Group::element> textbook_bspline(
     const typename Group::element* p, const detail::cumulative_weights<T, K>& w) {
     using E = typename Group::element;

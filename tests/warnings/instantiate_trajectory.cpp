@@ -9,7 +9,7 @@
 
 namespace {
 
-template <class T, int K>
+template <class T, std::size_t K>
 T bsplines() {
     using namespace quat;
     const std::vector<quaternion<T>> q(8, quaternion<T>::identity());

@@ -4,16 +4,16 @@
 // continuous-time trajectory to camera and IMU measurements. The parameter blocks are those of
 // interop/ceres.hpp's manifolds.
 //
-// Each cost function is one measurement at
-// one time t. Its parameter blocks are the K control points of the segment that holds t, points
-// first .. first + K - 1 with first = so3_bspline(...).evaluate(t).first (or se3_bspline's), in
-// that order, passed to AddResidualBlock one pointer each: rotations as quaternion blocks (w, x,
-// y, z: quaternion_manifold), SE(3) points as pose blocks (w, x, y, z, tx, ty, tz: pose_manifold),
-// positions as 3 numbers, then a bias block of 3 where the sensor has one. The cost holds
-// `offset` = t - t0 - first dt, in [0, dt], and the knot spacing dt. Jacobians are analytic (the
-// spline's, trajectory/detail/lie_bspline.hpp) times the manifolds' MinusJacobian, exact along
-// every change that keeps the quaternions unit, as relative_pose_cost's. Precondition: unit
-// quaternions; a NaN or infinite number gives a non-finite residual.
+// Each cost function is one measurement at one time t. Its parameter blocks are the K control
+// points of the segment that holds t, points first .. first + K - 1, in that order, passed to
+// AddResidualBlock one pointer each: rotations as quaternion blocks (w, x, y, z:
+// quaternion_manifold), SE(3) points as pose blocks (w, x, y, z, tx, ty, tz: pose_manifold),
+// positions as 3 numbers, then a bias block of 3 where the sensor has one. The cost holds the
+// offset t - t0 - first dt, in [0, dt], and the knot spacing dt; the spline's segment_at(t) gives
+// first and offset. Jacobians are analytic (the spline's, trajectory/detail/lie_bspline.hpp) times
+// the manifolds' MinusJacobian, exact along every change that keeps the quaternions unit, as
+// relative_pose_cost's. Precondition: unit quaternions; a NaN or infinite number gives a
+// non-finite residual.
 #ifndef QUAT_INTEROP_CERES_TRAJECTORY_HPP_INCLUDED
 #define QUAT_INTEROP_CERES_TRAJECTORY_HPP_INCLUDED
 
@@ -37,33 +37,27 @@ namespace detail {
 
 /// The base of the B-spline costs: `residuals` outputs, K blocks of `point_size` numbers, then
 /// `extra` blocks of the given sizes.
-template <int K>
+template <std::size_t K>
 class bspline_cost_base : public ::ceres::CostFunction {
 protected:
-    /// K as a size, for arrays and indices.
-    static constexpr std::size_t order = static_cast<std::size_t>(K);
-
     bspline_cost_base(int residuals, int point_size, std::initializer_list<int> extra) {
         set_num_residuals(residuals);
-        for (std::size_t m = 0; m < this->order; ++m)
-            mutable_parameter_block_sizes()->push_back(point_size);
+        for (std::size_t m = 0; m < K; ++m) mutable_parameter_block_sizes()->push_back(point_size);
         for (const int size : extra) mutable_parameter_block_sizes()->push_back(size);
     }
-    static std::array<quaternion<double>, order> rotations(
-        double const* const* parameters) noexcept {
-        std::array<quaternion<double>, order> q{};
-        for (std::size_t m = 0; m < order; ++m) q[m] = quaternion_from_parameters(parameters[m]);
+    static std::array<quaternion<double>, K> rotations(double const* const* parameters) noexcept {
+        std::array<quaternion<double>, K> q{};
+        for (std::size_t m = 0; m < K; ++m) q[m] = quaternion_from_parameters(parameters[m]);
         return q;
     }
-    static std::array<vec3<double>, order> positions(double const* const* parameters) noexcept {
-        std::array<vec3<double>, order> p{};
-        for (std::size_t m = 0; m < order; ++m) p[m] = vec3_from_parameters(parameters[m]);
+    static std::array<vec3<double>, K> positions(double const* const* parameters) noexcept {
+        std::array<vec3<double>, K> p{};
+        for (std::size_t m = 0; m < K; ++m) p[m] = vec3_from_parameters(parameters[m]);
         return p;
     }
-    static std::array<dual_quaternion<double>, order> poses(
-        double const* const* parameters) noexcept {
-        std::array<dual_quaternion<double>, order> x{};
-        for (std::size_t m = 0; m < order; ++m) x[m] = pose_from_parameters(parameters[m]);
+    static std::array<dual_quaternion<double>, K> poses(double const* const* parameters) noexcept {
+        std::array<dual_quaternion<double>, K> x{};
+        for (std::size_t m = 0; m < K; ++m) x[m] = pose_from_parameters(parameters[m]);
         return x;
     }
     static bool wants(double** jacobians, std::size_t block) noexcept {
@@ -81,7 +75,7 @@ protected:
 /// A rotation measurement Z at one time on an so3_bspline<double, K>: the residual
 /// S log(Z^-1 R(t)) (3), S a 3x3 weight such as the square root of the information; K quaternion
 /// blocks (see above).
-template <int K>
+template <std::size_t K>
 class so3_bspline_rotation_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -102,12 +96,12 @@ public:
         const auto q = this->rotations(parameters);
         typename so3_bspline<double, K>::jacobian_blocks J_q{};
         const bool any = jacobians != nullptr;
-        const so3_bspline_sample<double> s = so3_bspline<double, K>(q.data(), this->order, 0.0, dt_)
-                                                 .evaluate(offset_, any ? &J_q : nullptr);
+        const so3_bspline_sample<double> s =
+            so3_bspline<double, K>(q.data(), K, 0.0, dt_).evaluate(offset_, any ? &J_q : nullptr);
         matrix3<double> J_e_r{};
         const vec3<double> e = so3::minus(s.rotation, measured_, &J_e_r);
         write_parameters(sqrt_information_ * e, residuals);
-        for (std::size_t m = 0; m < this->order; ++m)
+        for (std::size_t m = 0; m < K; ++m)
             if (this->wants(jacobians, m))
                 detail::write_rotation_jacobian<3>(sqrt_information_ * J_e_r * J_q[m],
                                                    parameters[m], jacobians[m]);
@@ -122,7 +116,7 @@ private:
 
 /// A pose measurement Z at one time on an se3_bspline<double, K>: the residual S log(Z^-1 X(t))
 /// (6, linear first), S a 6x6 weight; K pose blocks.
-template <int K>
+template <std::size_t K>
 class se3_bspline_pose_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -143,13 +137,13 @@ public:
         const auto x = this->poses(parameters);
         typename se3_bspline<double, K>::jacobian_blocks J_x{};
         const bool any = jacobians != nullptr;
-        const se3_bspline_sample<double> s = se3_bspline<double, K>(x.data(), this->order, 0.0, dt_)
-                                                 .evaluate(offset_, any ? &J_x : nullptr);
+        const se3_bspline_sample<double> s =
+            se3_bspline<double, K>(x.data(), K, 0.0, dt_).evaluate(offset_, any ? &J_x : nullptr);
         matrix6<double> J_e_x{};
         const matrix<double, 6, 1> e =
             sqrt_information_ * se3::to_vector(se3::minus(s.motion, measured_, &J_e_x));
         for (int k = 0; k < 6; ++k) residuals[k] = e(k, 0);
-        for (std::size_t m = 0; m < this->order; ++m)
+        for (std::size_t m = 0; m < K; ++m)
             if (this->wants(jacobians, m))
                 detail::write_pose_jacobian<6>(sqrt_information_ * J_e_x * J_x[m], parameters[m],
                                                jacobians[m]);
@@ -165,7 +159,7 @@ private:
 /// A pose measurement Z at one time on a split_bspline<double, K>: the residual
 /// S (p(t) - t_Z, log(R_Z^-1 R(t))) (6, position first), S a 6x6 weight; K quaternion blocks, then
 /// K position blocks.
-template <int K>
+template <std::size_t K>
 class split_bspline_pose_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -178,8 +172,7 @@ public:
           measured_rotation_(rotation_of(measured)),
           measured_position_(translation_of(measured)),
           sqrt_information_(sqrt_information) {
-        for (std::size_t m = 0; m < this->order; ++m)
-            this->mutable_parameter_block_sizes()->push_back(3);
+        for (std::size_t m = 0; m < K; ++m) this->mutable_parameter_block_sizes()->push_back(3);
     }
 
     /// The weighted residual from the blocks in parameters (the layout above); each jacobians[k]
@@ -188,7 +181,7 @@ public:
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
         const auto q = this->rotations(parameters);
-        const auto p = this->positions(parameters + this->order);
+        const auto p = this->positions(parameters + K);
         typename split_bspline<double, K>::jacobian_blocks J_q{};
         typename split_bspline<double, K>::jacobian_weights W_p{};
         const bool any = jacobians != nullptr;
@@ -206,12 +199,12 @@ public:
         for (int k = 0; k < 6; ++k) residuals[k] = e(k, 0);
         const matrix<double, 6, 3> S_angle = block<6, 3>(sqrt_information_, 0, 3);
         const matrix<double, 6, 3> S_shift = block<6, 3>(sqrt_information_, 0, 0);
-        for (std::size_t m = 0; m < this->order; ++m) {
+        for (std::size_t m = 0; m < K; ++m) {
             if (this->wants(jacobians, m))
                 detail::write_rotation_jacobian<6>(S_angle * J_e_r * J_q[m], parameters[m],
                                                    jacobians[m]);
-            if (this->wants(jacobians, this->order + m))
-                detail::write_plain_jacobian<6, 3>(S_shift * W_p[m], jacobians[this->order + m]);
+            if (this->wants(jacobians, K + m))
+                detail::write_plain_jacobian<6, 3>(S_shift * W_p[m], jacobians[K + m]);
         }
         return true;
     }
@@ -226,7 +219,7 @@ private:
 /// A gyroscope reading at one time on an so3_bspline<double, K> (or a split_bspline's rotations):
 /// the residual S (omega(t) + b - measured) (3), omega the body angular velocity and b the bias;
 /// K quaternion blocks, then the bias block (3).
-template <int K>
+template <std::size_t K>
 class so3_bspline_gyroscope_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -247,18 +240,17 @@ public:
         const auto q = this->rotations(parameters);
         typename so3_bspline<double, K>::jacobian_blocks J_w{};
         const bool any = jacobians != nullptr;
-        const so3_bspline_sample<double> s = so3_bspline<double, K>(q.data(), this->order, 0.0, dt_)
+        const so3_bspline_sample<double> s = so3_bspline<double, K>(q.data(), K, 0.0, dt_)
                                                  .evaluate(offset_, nullptr, any ? &J_w : nullptr);
-        write_parameters(
-            sqrt_information_ *
-                (s.angular_velocity + vec3_from_parameters(parameters[this->order]) - measured_),
-            residuals);
-        for (std::size_t m = 0; m < this->order; ++m)
+        write_parameters(sqrt_information_ *
+                             (s.angular_velocity + vec3_from_parameters(parameters[K]) - measured_),
+                         residuals);
+        for (std::size_t m = 0; m < K; ++m)
             if (this->wants(jacobians, m))
                 detail::write_rotation_jacobian<3>(sqrt_information_ * J_w[m], parameters[m],
                                                    jacobians[m]);
-        if (this->wants(jacobians, this->order))
-            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[this->order]);
+        if (this->wants(jacobians, K))
+            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[K]);
         return true;
     }
 
@@ -270,7 +262,7 @@ private:
 
 /// A gyroscope reading at one time on an se3_bspline<double, K>: S (omega(t) + b - measured), omega
 /// the angular part of the body twist; K pose blocks, then the bias block (3).
-template <int K>
+template <std::size_t K>
 class se3_bspline_gyroscope_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -291,18 +283,17 @@ public:
         const auto x = this->poses(parameters);
         typename se3_bspline<double, K>::jacobian_blocks J_v{};
         const bool any = jacobians != nullptr;
-        const se3_bspline_sample<double> s = se3_bspline<double, K>(x.data(), this->order, 0.0, dt_)
+        const se3_bspline_sample<double> s = se3_bspline<double, K>(x.data(), K, 0.0, dt_)
                                                  .evaluate(offset_, nullptr, any ? &J_v : nullptr);
-        write_parameters(
-            sqrt_information_ *
-                (s.velocity.angular + vec3_from_parameters(parameters[this->order]) - measured_),
-            residuals);
-        for (std::size_t m = 0; m < this->order; ++m)
+        write_parameters(sqrt_information_ *
+                             (s.velocity.angular + vec3_from_parameters(parameters[K]) - measured_),
+                         residuals);
+        for (std::size_t m = 0; m < K; ++m)
             if (this->wants(jacobians, m))
                 detail::write_pose_jacobian<3>(sqrt_information_ * block<3, 6>(J_v[m], 3, 0),
                                                parameters[m], jacobians[m]);
-        if (this->wants(jacobians, this->order))
-            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[this->order]);
+        if (this->wants(jacobians, K))
+            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[K]);
         return true;
     }
 
@@ -316,7 +307,7 @@ private:
 /// S (R(t)^T (p''(t) - g) + b - measured) (3), p'' the world-frame acceleration, g gravity in the
 /// world frame (such as (0, 0, -9.81)) and b the bias; K quaternion blocks, K position blocks, then
 /// the bias block (3).
-template <int K>
+template <std::size_t K>
 class split_bspline_accelerometer_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -330,8 +321,7 @@ public:
           measured_(measured),
           gravity_(gravity),
           sqrt_information_(sqrt_information) {
-        for (std::size_t m = 0; m < this->order; ++m)
-            this->mutable_parameter_block_sizes()->push_back(3);
+        for (std::size_t m = 0; m < K; ++m) this->mutable_parameter_block_sizes()->push_back(3);
         this->mutable_parameter_block_sizes()->push_back(3);
     }
 
@@ -341,7 +331,7 @@ public:
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
         const auto q = this->rotations(parameters);
-        const auto p = this->positions(parameters + this->order);
+        const auto p = this->positions(parameters + K);
         typename split_bspline<double, K>::jacobian_blocks J_q{};
         typename split_bspline<double, K>::jacobian_weights W_a{};
         const bool any = jacobians != nullptr;
@@ -351,20 +341,20 @@ public:
                           nullptr, any ? &W_a : nullptr);
         const quaternion<double> inverse = conjugate(s.rotation);
         const vec3<double> body = rotate(inverse, s.linear_acceleration - gravity_);
-        write_parameters(sqrt_information_ *
-                             (body + vec3_from_parameters(parameters[2 * this->order]) - measured_),
-                         residuals);
+        write_parameters(
+            sqrt_information_ * (body + vec3_from_parameters(parameters[2 * K]) - measured_),
+            residuals);
         // (R exp(theta))^T y = R^T y + [R^T y]x theta to first order.
         const matrix3<double> S_turn = sqrt_information_ * so3::hat(body);
         const matrix3<double> S_back = sqrt_information_ * to_matrix3(to_matrix(inverse));
-        for (std::size_t m = 0; m < this->order; ++m) {
+        for (std::size_t m = 0; m < K; ++m) {
             if (this->wants(jacobians, m))
                 detail::write_rotation_jacobian<3>(S_turn * J_q[m], parameters[m], jacobians[m]);
-            if (this->wants(jacobians, this->order + m))
-                detail::write_plain_jacobian<3, 3>(S_back * W_a[m], jacobians[this->order + m]);
+            if (this->wants(jacobians, K + m))
+                detail::write_plain_jacobian<3, 3>(S_back * W_a[m], jacobians[K + m]);
         }
-        if (this->wants(jacobians, 2 * this->order))
-            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[2 * this->order]);
+        if (this->wants(jacobians, 2 * K))
+            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[2 * K]);
         return true;
     }
 
@@ -377,7 +367,7 @@ private:
 /// An accelerometer reading at one time on an se3_bspline<double, K>: the residual
 /// S (a - R(t)^T g + b - measured) (3), a = v' + omega x v the body-frame acceleration R^T p''
 /// from the body twist (v, omega) and its derivative; K pose blocks, then the bias block (3).
-template <int K>
+template <std::size_t K>
 class se3_bspline_accelerometer_cost final : public detail::bspline_cost_base<K> {
 public:
     /// The measurement at `offset` into its segment, in [0, dt], on a spline of knot spacing dt,
@@ -401,17 +391,16 @@ public:
         typename se3_bspline<double, K>::jacobian_blocks J_x{}, J_v{}, J_a{};
         const bool any = jacobians != nullptr;
         const se3_bspline_sample<double> s =
-            se3_bspline<double, K>(x.data(), this->order, 0.0, dt_)
+            se3_bspline<double, K>(x.data(), K, 0.0, dt_)
                 .evaluate(offset_, any ? &J_x : nullptr, any ? &J_v : nullptr,
                           any ? &J_a : nullptr);
         const vec3<double> v = s.velocity.linear, w = s.velocity.angular;
         const vec3<double> gravity_body = rotate(conjugate(rotation_of(s.motion)), gravity_);
-        write_parameters(
-            sqrt_information_ * (s.acceleration.linear + cross(w, v) - gravity_body +
-                                 vec3_from_parameters(parameters[this->order]) - measured_),
-            residuals);
+        write_parameters(sqrt_information_ * (s.acceleration.linear + cross(w, v) - gravity_body +
+                                              vec3_from_parameters(parameters[K]) - measured_),
+                         residuals);
         // d(omega x v) = [omega]x dv - [v]x domega; d(-R^T g) = -[R^T g]x dtheta.
-        for (std::size_t m = 0; m < this->order; ++m)
+        for (std::size_t m = 0; m < K; ++m)
             if (this->wants(jacobians, m)) {
                 const matrix<double, 3, 6> J = block<3, 6>(J_a[m], 0, 0) +
                                                so3::hat(w) * block<3, 6>(J_v[m], 0, 0) -
@@ -419,8 +408,8 @@ public:
                                                so3::hat(gravity_body) * block<3, 6>(J_x[m], 3, 0);
                 detail::write_pose_jacobian<3>(sqrt_information_ * J, parameters[m], jacobians[m]);
             }
-        if (this->wants(jacobians, this->order))
-            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[this->order]);
+        if (this->wants(jacobians, K))
+            detail::write_plain_jacobian<3, 3>(sqrt_information_, jacobians[K]);
         return true;
     }
 

@@ -34,14 +34,14 @@ struct euclidean_bspline_sample {
 /// Uniform knots only; the domain, the NaN sample (first = 0) and the view are those of
 /// so3_bspline: `count` points that the caller keeps alive, t in [t0, t0 + (count - K + 1) dt].
 /// Evaluation allocates nothing.
-template <class T, int K>
+template <class T, std::size_t K>
 class euclidean_bspline {
     static_assert(K >= 2 && K <= 8, "quat::euclidean_bspline: order K in [2, 8]");
 
 public:
     /// K weights: the Jacobian of an output with respect to point first + m is weight m times the
     /// 3x3 identity (the path is linear in its points).
-    using jacobian_weights = std::array<T, static_cast<std::size_t>(K)>;
+    using jacobian_weights = std::array<T, K>;
 
     /// The view of `count` control points at `points`, knots t0 + m dt.
     constexpr euclidean_bspline(const vec3<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -59,6 +59,12 @@ public:
     [[nodiscard]] constexpr T start_time() const noexcept { return view_.t0; }
     /// t0 + (count - K + 1) dt, the end of the range; NaN when not valid().
     [[nodiscard]] constexpr T end_time() const noexcept { return view_.template end_time<K>(); }
+    /// The segment that holds t (its first control point, and t's offset into it), the numbers
+    /// the residuals of interop/ceres_trajectory.hpp take; std::nullopt outside the domain (see
+    /// the class comment). The control points are not read.
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(T t) const noexcept {
+        return view_.template segment_at<K>(t);
+    }
     /// dt, the knot spacing.
     [[nodiscard]] constexpr T knot_spacing() const noexcept { return view_.dt; }
     /// The number of control points.
@@ -85,18 +91,18 @@ public:
             const vec3<T> v{nan, nan, nan};
             return {0, v, v, v, v};
         }
-        const detail::cumulative_weights<T, static_cast<std::size_t>(K)> w =
-            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt);
+        const detail::cumulative_weights<T, K> w =
+            detail::cumulative_weights_at<T, K>(at.u, view_.dt);
         const vec3<T>* p = view_.points + at.segment;
         vec3<T> out[4] = {p[0], {T(0), T(0), T(0)}, {T(0), T(0), T(0)}, {T(0), T(0), T(0)}};
-        for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
+        for (std::size_t j = 1; j < K; ++j) {
             const vec3<T> step = p[j] - p[j - 1];
             for (std::size_t d = 0; d < 4; ++d) out[d] = out[d] + step * w.b[d][j];
         }
         // d p / d p_m = b~_m - b~_(m+1) (b~_0 = 1 and b~_K = 0; for derivatives b~_0' = 0).
         for (std::size_t d = 0; d < 4; ++d) {
             if (J[d] == nullptr) continue;
-            for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
+            for (std::size_t m = 0; m < K; ++m)
                 (*J[d])[m] = m + 1 < K ? w.b[d][m] - w.b[d][m + 1] : w.b[d][m];
         }
         return {at.segment, out[0], out[1], out[2], out[3]};

@@ -47,13 +47,13 @@ struct so3_bspline_sample {
 /// fewer than K points, dt not positive or not finite, t0 not finite, a null pointer, or t NaN or
 /// outside the range give the NaN sample (first = 0, every component and Jacobian entry NaN) from
 /// evaluate and operator(), and an empty optional from try_evaluate. Evaluation allocates nothing.
-template <class T, int K>
+template <class T, std::size_t K>
 class so3_bspline {
     static_assert(K >= 2 && K <= 8, "quat::so3_bspline: order K in [2, 8]");
 
 public:
     /// K 3x3 blocks, block m the Jacobian with respect to control point first + m.
-    using jacobian_blocks = std::array<matrix3<T>, static_cast<std::size_t>(K)>;
+    using jacobian_blocks = std::array<matrix3<T>, K>;
 
     /// The view of `count` control rotations at `points`, knots t0 + m dt.
     constexpr so3_bspline(const quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -72,6 +72,12 @@ public:
     [[nodiscard]] constexpr T start_time() const noexcept { return view_.t0; }
     /// t0 + (count - K + 1) dt, the end of the range; NaN when not valid().
     [[nodiscard]] constexpr T end_time() const noexcept { return view_.template end_time<K>(); }
+    /// The segment that holds t (its first control point, and t's offset into it), the numbers
+    /// the residuals of interop/ceres_trajectory.hpp take; std::nullopt outside the domain (see
+    /// the class comment). The control points are not read.
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(T t) const noexcept {
+        return view_.template segment_at<K>(t);
+    }
     /// dt, the knot spacing.
     [[nodiscard]] constexpr T knot_spacing() const noexcept { return view_.dt; }
     /// The number of control points.
@@ -83,10 +89,9 @@ public:
     [[nodiscard]] constexpr quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return detail::nan_quaternion<T>();
-        return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-                   view_.points + at.segment,
-                   detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 0,
-                   nullptr, nullptr, nullptr, nullptr)
+        return detail::evaluate_lie_bspline<group, T, K>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+                   0, nullptr, nullptr, nullptr, nullptr)
             .value;
     }
 
@@ -108,9 +113,8 @@ public:
             return {
                 0, detail::nan_quaternion<T>(), {nan, nan, nan}, {nan, nan, nan}, {nan, nan, nan}};
         }
-        const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-            view_.points + at.segment,
-            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
+        const auto s = detail::evaluate_lie_bspline<group, T, K>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
             J_q_points, J_w_points, J_a_points, J_j_points);
         return {at.segment, s.value, s.velocity, s.acceleration, s.jerk};
     }

@@ -131,50 +131,47 @@ namespace detail {
 ///     (K - 1)! m(s, n) = C(K - 1, n) sum_(l = s .. K - 1) (-1)^(l - s) C(K, l - s) (K - 1 - l)^(K - 1 - n)
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
-template <int K>
-[[nodiscard]] constexpr std::array<
-    std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
+template <std::size_t K>
+[[nodiscard]] constexpr std::array<std::array<std::array<long long, K>, K>, 4>
 cumulative_basis_table() noexcept {
-    std::array<
-        std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>,
-        4>
-        table{};
-    for (int s = 0; s < K; ++s)
-        for (int n = 0; n < K; ++n) {
+    std::array<std::array<std::array<long long, K>, K>, 4> table{};
+    const int k = static_cast<int>(K);  // signed: the sums below alternate in sign
+    for (int s = 0; s < k; ++s)
+        for (int n = 0; n < k; ++n) {
             long long sum = 0;
-            for (int l = s; l < K; ++l) {
+            for (int l = s; l < k; ++l) {
                 long long power = 1;
-                for (int e = 0; e < K - 1 - n; ++e) power *= (K - 1 - l);
-                sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(K, l - s) * power;
+                for (int e = 0; e < k - 1 - n; ++e) power *= (k - 1 - l);
+                sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(k, l - s) * power;
             }
-            const long long entry = binomial_of(K - 1, n) * sum;
+            const long long entry = binomial_of(k - 1, n) * sum;
             for (int j = 0; j <= s; ++j)
                 table[0][static_cast<std::size_t>(j)][static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
-        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
-            for (std::size_t n = 0; n + 1 < static_cast<std::size_t>(K); ++n)
+        for (std::size_t j = 0; j < K; ++j)
+            for (std::size_t n = 0; n + 1 < K; ++n)
                 table[d][j][n] = static_cast<long long>(n + 1) * table[d - 1][j][n + 1];
     return table;
 }
 
 /// The cumulative weights and their first three time derivatives at one time: b[d][j] is
 /// d^d/dt^d b~_j (j = 0 .. K - 1; b[0][0] = 1, b[d][0] = 0 for d > 0).
-template <class T, int K>
+template <class T, std::size_t K>
 struct cumulative_weights {
-    std::array<std::array<T, static_cast<std::size_t>(K)>, 4> b;
+    std::array<std::array<T, K>, 4> b;
 };
 
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
-template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(
-    const T& u, const T& dt) noexcept {
+template <class T, std::size_t K>
+[[nodiscard]] constexpr cumulative_weights<T, K> cumulative_weights_at(const T& u,
+                                                                       const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
-    cumulative_weights<T, static_cast<std::size_t>(K)> w{};
-    T scale = T(static_cast<double>(factorial_of(K - 1)));
+    cumulative_weights<T, K> w{};
+    T scale = T(static_cast<double>(factorial_of(static_cast<int>(K) - 1)));
     for (std::size_t d = 0; d < 4; ++d) {
-        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j) {
+        for (std::size_t j = 0; j < K; ++j) {
             if (d + 1 > K) {
                 w.b[d][j] = T(0);
                 continue;
@@ -204,13 +201,12 @@ struct knot_position {
 /// (at most count - K + 1), segment = min(floor(s), count - K), u = s - segment (the last segment
 /// includes its end, u = 1). Invalid (segment 0, u NaN) for count < K, dt not positive or not
 /// finite, t0 not finite, t NaN or outside that range.
-template <int K, class T>
+template <std::size_t K, class T>
 [[nodiscard]] constexpr knot_position<T> spline_position(const T& t, const T& t0, const T& dt,
                                                          std::size_t count) noexcept {
     const knot_position<T> invalid{0, quiet_nan<T>(), false};
-    if (count < static_cast<std::size_t>(K) || !(dt > T(0)) || !is_finite(dt) || !is_finite(t0))
-        return invalid;
-    const std::size_t last = count - static_cast<std::size_t>(K);
+    if (count < K || !(dt > T(0)) || !is_finite(dt) || !is_finite(t0)) return invalid;
+    const std::size_t last = count - K;
     const T segments = T(static_cast<double>(last + 1));
     // The range as times, t0 <= t <= t0 + segments dt (the end as end_time() rounds it), then s
     // clamped to it: (t - t0) / dt may round past the last knot at the end itself.
@@ -337,13 +333,11 @@ struct lie_spline_sample {
 /// The per-point blocks of one output's Jacobian from its derivatives with respect to d_1 ..
 /// d_(K-1) (J_d[0] unused): block m = J_d[m] dd_m/dP_m + J_d[m+1] dd_(m+1)/dP_m, plus `direct`
 /// for P_0.
-template <class M, int K>
-constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_self,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_previous,
-                               const M& direct,
-                               std::array<M, static_cast<std::size_t>(K)>& out) noexcept {
-    for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
+template <class M, std::size_t K>
+constexpr void to_point_blocks(const std::array<M, K>& J_d, const std::array<M, K>& J_self,
+                               const std::array<M, K>& J_previous, const M& direct,
+                               std::array<M, K>& out) noexcept {
+    for (std::size_t m = 0; m < K; ++m) {
         M block = m == 0 ? direct : J_d[m] * J_self[m];
         if (m + 1 < K) block = block + J_d[m + 1] * J_previous[m + 1];
         out[m] = block;
@@ -354,13 +348,13 @@ constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>&
 /// derivatives of the velocity up to `order` (0: the value only, 1 velocity, 2 acceleration, 3
 /// jerk; those not computed are left zero). Each Jacobian pointer that is not null receives K
 /// blocks; a velocity Jacobian asks for at least that order. No allocation: fixed-size arrays.
-template <class Group, class T, int K>
+template <class Group, class T, std::size_t K>
 constexpr lie_spline_sample<Group> evaluate_lie_bspline(
-    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w,
-    int order, std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_velocity,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_acceleration,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_jerk) noexcept {
+    const typename Group::element* p, const cumulative_weights<T, K>& w, int order,
+    std::array<typename Group::jacobian, K>* J_value,
+    std::array<typename Group::jacobian, K>* J_velocity,
+    std::array<typename Group::jacobian, K>* J_acceleration,
+    std::array<typename Group::jacobian, K>* J_jerk) noexcept {
     using V = typename Group::tangent;
     using M = typename Group::jacobian;
     if (J_jerk != nullptr && order < 3) order = 3;
@@ -372,14 +366,12 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     const auto& b1 = w.b[1];
     const auto& b2 = w.b[2];
     const auto& b3 = w.b[3];
-    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{},
-        yB{};  // d_j; Ad(A_j^-1) times w_j, a_j, y_j
-    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{},
-        jerk{};  // w, a, y by level (1 .. K)
-    std::array<M, static_cast<std::size_t>(K)> J_self{}, J_previous{}, J_exp{}, B{};
+    std::array<V, K> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
+    std::array<V, K + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
+    std::array<M, K> J_self{}, J_previous{}, J_exp{}, B{};
     vel[1] = acc[1] = jerk[1] = Group::zero();
     lie_spline_sample<Group> out{p[0], Group::zero(), Group::zero(), Group::zero()};
-    for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
+    for (std::size_t j = 1; j < K; ++j) {
         d[j] = Group::minus(p[j], p[j - 1], jacobians ? &J_self[j] : nullptr,
                             jacobians ? &J_previous[j] : nullptr);
         const typename Group::element a = Group::exp(d[j] * b0[j], jacobians ? &J_exp[j] : nullptr);
@@ -405,14 +397,14 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     if (!jacobians) return out;
 
     const M I = M::identity(), O = M::zero();
-    std::array<M, static_cast<std::size_t>(K)> J_d{};
+    std::array<M, K> J_d{};
     if (J_value != nullptr) {  // X depends on d_j through Ad(S_j^-1) b~_j Jr(b~_j d_j)
         M L = I;
         for (std::size_t j = K - 1; j >= 1; --j) {
             J_d[j] = L * (J_exp[j] * b0[j]);
             L = L * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, L, *J_value);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, L, *J_value);
     }
     if (J_velocity != nullptr) {
         M La = I;
@@ -421,7 +413,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             J_d[j] = La * (Group::ad(wB[j]) * through_b + I * b1[j]);
             La = La * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_velocity);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_velocity);
     }
     if (J_acceleration != nullptr) {
         M La = O, Lb = I;
@@ -435,8 +427,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             La = La_total * B[j];
             Lb = Lb * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O,
-                                                        *J_acceleration);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_acceleration);
     }
     if (J_jerk != nullptr) {
         M La = O, Lb = O, Lc = I;
@@ -459,7 +450,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             Lb = Lb_total * B[j];
             Lc = Lc * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_jerk);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_jerk);
     }
     return out;
 }
@@ -481,6 +472,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
 #include <optional>
 #include <tuple>
 
+#include "../trajectory/bspline_segment.hpp"
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -584,25 +576,31 @@ struct spline_view {
     std::size_t count;
     T t0, dt;
 
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr bool valid() const noexcept {
-        return points != nullptr && count >= static_cast<std::size_t>(K) && dt > T(0) &&
-               is_finite(dt) && is_finite(t0);
+        return points != nullptr && count >= K && dt > T(0) && is_finite(dt) && is_finite(t0);
     }
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr T end_time() const noexcept {
         if (!valid<K>()) return quiet_nan<T>();
-        return t0 + T(static_cast<double>(count - static_cast<std::size_t>(K) + 1)) * dt;
+        return t0 + T(static_cast<double>(count - K + 1)) * dt;
     }
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr knot_position<T> locate(const T& t) const noexcept {
         if (points == nullptr) return {0, quiet_nan<T>(), false};
         return spline_position<K>(t, t0, dt, count);
     }
+    template <std::size_t K>
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(
+        const T& t) const noexcept {
+        const knot_position<T> at = locate<K>(t);
+        if (!at.valid) return std::nullopt;
+        return bspline_segment<T>{at.segment, at.u * dt};
+    }
     /// True when the K points of the segment are usable (is_usable_point).
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr bool usable_points(std::size_t segment) const noexcept {
-        for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
+        for (std::size_t m = 0; m < K; ++m)
             if (!is_usable_point(points[segment + m])) return false;
         return true;
     }
@@ -665,13 +663,13 @@ struct se3_bspline_sample {
 /// fewer than K points, dt not positive or not finite, t0 not finite, a null pointer, or t NaN or
 /// outside the range give the NaN sample (first = 0, every component and Jacobian entry NaN) from
 /// evaluate and operator(), and an empty optional from try_evaluate. Evaluation allocates nothing.
-template <class T, int K>
+template <class T, std::size_t K>
 class se3_bspline {
     static_assert(K >= 2 && K <= 8, "quat::se3_bspline: order K in [2, 8]");
 
 public:
     /// K 6x6 blocks (twists linear first), block m the Jacobian with respect to point first + m.
-    using jacobian_blocks = std::array<matrix6<T>, static_cast<std::size_t>(K)>;
+    using jacobian_blocks = std::array<matrix6<T>, K>;
 
     /// The view of `count` control motions at `points`, knots t0 + m dt.
     constexpr se3_bspline(const dual_quaternion<T>* points, std::size_t count, T t0, T dt) noexcept
@@ -690,6 +688,12 @@ public:
     [[nodiscard]] constexpr T start_time() const noexcept { return view_.t0; }
     /// t0 + (count - K + 1) dt, the end of the range; NaN when not valid().
     [[nodiscard]] constexpr T end_time() const noexcept { return view_.template end_time<K>(); }
+    /// The segment that holds t (its first control point, and t's offset into it), the numbers
+    /// the residuals of interop/ceres_trajectory.hpp take; std::nullopt outside the domain (see
+    /// the class comment). The control points are not read.
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(T t) const noexcept {
+        return view_.template segment_at<K>(t);
+    }
     /// dt, the knot spacing.
     [[nodiscard]] constexpr T knot_spacing() const noexcept { return view_.dt; }
     /// The number of control points.
@@ -703,10 +707,9 @@ public:
     [[nodiscard]] constexpr dual_quaternion<T> operator()(T t) const noexcept {
         const detail::knot_position<T> at = view_.template locate<K>(t);
         if (!at.valid) return {detail::nan_quaternion<T>(), detail::nan_quaternion<T>()};
-        return detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-                   view_.points + at.segment,
-                   detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 0,
-                   nullptr, nullptr, nullptr, nullptr)
+        return detail::evaluate_lie_bspline<group, T, K>(
+                   view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt),
+                   0, nullptr, nullptr, nullptr, nullptr)
             .value;
     }
 
@@ -732,9 +735,8 @@ public:
                     nan_twist,
                     nan_twist};
         }
-        const auto s = detail::evaluate_lie_bspline<group, T, static_cast<std::size_t>(K)>(
-            view_.points + at.segment,
-            detail::cumulative_weights_at<T, static_cast<std::size_t>(K)>(at.u, view_.dt), 3,
+        const auto s = detail::evaluate_lie_bspline<group, T, K>(
+            view_.points + at.segment, detail::cumulative_weights_at<T, K>(at.u, view_.dt), 3,
             J_x_points, J_v_points, J_a_points, J_j_points);
         return {at.segment, s.value, se3::to_twist(s.velocity), se3::to_twist(s.acceleration),
                 se3::to_twist(s.jerk)};

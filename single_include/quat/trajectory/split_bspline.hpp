@@ -83,17 +83,17 @@ struct split_bspline_sample {
     se3::twist<T> body_acceleration;  ///< its derivative (R^T p'' - omega x R^T p', omega')
 };
 
-/// The pose (R(t), p(t)) of an so3_bspline<T, static_cast<std::size_t>(K)> over `rotations` and a euclidean_bspline<T, static_cast<std::size_t>(K)>
+/// The pose (R(t), p(t)) of an so3_bspline<T, K> over `rotations` and a euclidean_bspline<T, K>
 /// over `positions`, with the same t0 and dt: a non-owning view of two arrays of `count` elements.
 /// Domain and NaN rules as so3_bspline's; containers of different sizes make a view that is not
 /// valid (the NaN sample everywhere). Evaluation allocates nothing.
-template <class T, int K>
+template <class T, std::size_t K>
 class split_bspline {
 public:
     /// K 3x3 blocks of a rotation output's Jacobian, block m for rotation first + m (so3_bspline).
-    using jacobian_blocks = std::array<matrix3<T>, static_cast<std::size_t>(K)>;
+    using jacobian_blocks = std::array<matrix3<T>, K>;
     /// K weights of a position output's Jacobian, weight m times I for position first + m.
-    using jacobian_weights = std::array<T, static_cast<std::size_t>(K)>;
+    using jacobian_weights = std::array<T, K>;
 
     /// The view of `count` rotations and `count` positions, knots t0 + m dt.
     constexpr split_bspline(const quaternion<T>* rotations, const vec3<T>* positions,
@@ -120,18 +120,23 @@ public:
     [[nodiscard]] constexpr T end_time() const noexcept {
         return valid() ? rotation_.end_time() : detail::quiet_nan<T>();
     }
+    /// The segment that holds t (its first control point, and t's offset into it), the numbers
+    /// the residuals of interop/ceres_trajectory.hpp take; std::nullopt outside the domain or when
+    /// not valid(). The control points are not read.
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(T t) const noexcept {
+        if (!valid()) return std::nullopt;
+        return rotation_.segment_at(t);
+    }
     /// dt, the knot spacing.
     [[nodiscard]] constexpr T knot_spacing() const noexcept { return rotation_.knot_spacing(); }
     /// The number of control points (of the rotations; not valid() when the positions differ).
     [[nodiscard]] constexpr std::size_t size() const noexcept { return rotation_.size(); }
     /// The rotation half, an so3_bspline view.
-    [[nodiscard]] constexpr const so3_bspline<T, static_cast<std::size_t>(K)>& rotation_spline()
-        const noexcept {
+    [[nodiscard]] constexpr const so3_bspline<T, K>& rotation_spline() const noexcept {
         return rotation_;
     }
     /// The position half, a euclidean_bspline view.
-    [[nodiscard]] constexpr const euclidean_bspline<T, static_cast<std::size_t>(K)>&
-    position_spline() const noexcept {
+    [[nodiscard]] constexpr const euclidean_bspline<T, K>& position_spline() const noexcept {
         return position_;
     }
 
@@ -206,8 +211,8 @@ public:
     }
 
 private:
-    so3_bspline<T, static_cast<std::size_t>(K)> rotation_;
-    euclidean_bspline<T, static_cast<std::size_t>(K)> position_;
+    so3_bspline<T, K> rotation_;
+    euclidean_bspline<T, K> position_;
 };
 
 }  // inline namespace isa_...

@@ -106,13 +106,11 @@ struct lie_spline_sample {
 /// The per-point blocks of one output's Jacobian from its derivatives with respect to d_1 ..
 /// d_(K-1) (J_d[0] unused): block m = J_d[m] dd_m/dP_m + J_d[m+1] dd_(m+1)/dP_m, plus `direct`
 /// for P_0.
-template <class M, int K>
-constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>& J_d,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_self,
-                               const std::array<M, static_cast<std::size_t>(K)>& J_previous,
-                               const M& direct,
-                               std::array<M, static_cast<std::size_t>(K)>& out) noexcept {
-    for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m) {
+template <class M, std::size_t K>
+constexpr void to_point_blocks(const std::array<M, K>& J_d, const std::array<M, K>& J_self,
+                               const std::array<M, K>& J_previous, const M& direct,
+                               std::array<M, K>& out) noexcept {
+    for (std::size_t m = 0; m < K; ++m) {
         M block = m == 0 ? direct : J_d[m] * J_self[m];
         if (m + 1 < K) block = block + J_d[m + 1] * J_previous[m + 1];
         out[m] = block;
@@ -123,13 +121,13 @@ constexpr void to_point_blocks(const std::array<M, static_cast<std::size_t>(K)>&
 /// derivatives of the velocity up to `order` (0: the value only, 1 velocity, 2 acceleration, 3
 /// jerk; those not computed are left zero). Each Jacobian pointer that is not null receives K
 /// blocks; a velocity Jacobian asks for at least that order. No allocation: fixed-size arrays.
-template <class Group, class T, int K>
+template <class Group, class T, std::size_t K>
 constexpr lie_spline_sample<Group> evaluate_lie_bspline(
-    const typename Group::element* p, const cumulative_weights<T, static_cast<std::size_t>(K)>& w,
-    int order, std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_value,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_velocity,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_acceleration,
-    std::array<typename Group::jacobian, static_cast<std::size_t>(K)>* J_jerk) noexcept {
+    const typename Group::element* p, const cumulative_weights<T, K>& w, int order,
+    std::array<typename Group::jacobian, K>* J_value,
+    std::array<typename Group::jacobian, K>* J_velocity,
+    std::array<typename Group::jacobian, K>* J_acceleration,
+    std::array<typename Group::jacobian, K>* J_jerk) noexcept {
     using V = typename Group::tangent;
     using M = typename Group::jacobian;
     if (J_jerk != nullptr && order < 3) order = 3;
@@ -141,14 +139,12 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     const auto& b1 = w.b[1];
     const auto& b2 = w.b[2];
     const auto& b3 = w.b[3];
-    std::array<V, static_cast<std::size_t>(K)> d{}, wB{}, aB{},
-        yB{};  // d_j; Ad(A_j^-1) times w_j, a_j, y_j
-    std::array<V, static_cast<std::size_t>(K) + 1> vel{}, acc{},
-        jerk{};  // w, a, y by level (1 .. K)
-    std::array<M, static_cast<std::size_t>(K)> J_self{}, J_previous{}, J_exp{}, B{};
+    std::array<V, K> d{}, wB{}, aB{}, yB{};     // d_j; Ad(A_j^-1) times w_j, a_j, y_j
+    std::array<V, K + 1> vel{}, acc{}, jerk{};  // w, a, y by level (1 .. K)
+    std::array<M, K> J_self{}, J_previous{}, J_exp{}, B{};
     vel[1] = acc[1] = jerk[1] = Group::zero();
     lie_spline_sample<Group> out{p[0], Group::zero(), Group::zero(), Group::zero()};
-    for (std::size_t j = 1; j < static_cast<std::size_t>(K); ++j) {
+    for (std::size_t j = 1; j < K; ++j) {
         d[j] = Group::minus(p[j], p[j - 1], jacobians ? &J_self[j] : nullptr,
                             jacobians ? &J_previous[j] : nullptr);
         const typename Group::element a = Group::exp(d[j] * b0[j], jacobians ? &J_exp[j] : nullptr);
@@ -174,14 +170,14 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
     if (!jacobians) return out;
 
     const M I = M::identity(), O = M::zero();
-    std::array<M, static_cast<std::size_t>(K)> J_d{};
+    std::array<M, K> J_d{};
     if (J_value != nullptr) {  // X depends on d_j through Ad(S_j^-1) b~_j Jr(b~_j d_j)
         M L = I;
         for (std::size_t j = K - 1; j >= 1; --j) {
             J_d[j] = L * (J_exp[j] * b0[j]);
             L = L * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, L, *J_value);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, L, *J_value);
     }
     if (J_velocity != nullptr) {
         M La = I;
@@ -190,7 +186,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             J_d[j] = La * (Group::ad(wB[j]) * through_b + I * b1[j]);
             La = La * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_velocity);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_velocity);
     }
     if (J_acceleration != nullptr) {
         M La = O, Lb = I;
@@ -204,8 +200,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             La = La_total * B[j];
             Lb = Lb * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O,
-                                                        *J_acceleration);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_acceleration);
     }
     if (J_jerk != nullptr) {
         M La = O, Lb = O, Lc = I;
@@ -228,7 +223,7 @@ constexpr lie_spline_sample<Group> evaluate_lie_bspline(
             Lb = Lb_total * B[j];
             Lc = Lc * B[j];
         }
-        to_point_blocks<M, static_cast<std::size_t>(K)>(J_d, J_self, J_previous, O, *J_jerk);
+        to_point_blocks<M, K>(J_d, J_self, J_previous, O, *J_jerk);
     }
     return out;
 }

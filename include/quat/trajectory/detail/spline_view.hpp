@@ -13,6 +13,7 @@
 #include "../../quaternion.hpp"
 #include "../../rigid/dual_quaternion.hpp"
 #include "../../vec3.hpp"
+#include "../bspline_segment.hpp"
 #include "uniform_basis.hpp"
 
 namespace quat {
@@ -94,25 +95,31 @@ struct spline_view {
     std::size_t count;
     T t0, dt;
 
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr bool valid() const noexcept {
-        return points != nullptr && count >= static_cast<std::size_t>(K) && dt > T(0) &&
-               is_finite(dt) && is_finite(t0);
+        return points != nullptr && count >= K && dt > T(0) && is_finite(dt) && is_finite(t0);
     }
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr T end_time() const noexcept {
         if (!valid<K>()) return quiet_nan<T>();
-        return t0 + T(static_cast<double>(count - static_cast<std::size_t>(K) + 1)) * dt;
+        return t0 + T(static_cast<double>(count - K + 1)) * dt;
     }
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr knot_position<T> locate(const T& t) const noexcept {
         if (points == nullptr) return {0, quiet_nan<T>(), false};
         return spline_position<K>(t, t0, dt, count);
     }
+    template <std::size_t K>
+    [[nodiscard]] constexpr std::optional<bspline_segment<T>> segment_at(
+        const T& t) const noexcept {
+        const knot_position<T> at = locate<K>(t);
+        if (!at.valid) return std::nullopt;
+        return bspline_segment<T>{at.segment, at.u * dt};
+    }
     /// True when the K points of the segment are usable (is_usable_point).
-    template <int K>
+    template <std::size_t K>
     [[nodiscard]] constexpr bool usable_points(std::size_t segment) const noexcept {
-        for (std::size_t m = 0; m < static_cast<std::size_t>(K); ++m)
+        for (std::size_t m = 0; m < K; ++m)
             if (!is_usable_point(points[segment + m])) return false;
         return true;
     }

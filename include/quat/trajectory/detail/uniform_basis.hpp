@@ -35,50 +35,47 @@ namespace detail {
 ///     (K - 1)! m(s, n) = C(K - 1, n) sum_(l = s .. K - 1) (-1)^(l - s) C(K, l - s) (K - 1 - l)^(K - 1 - n)
 /// (all integers); b~_j sums its rows s >= j, and each derivative multiplies the coefficient of
 /// u^n by n and moves it to u^(n - 1).
-template <int K>
-[[nodiscard]] constexpr std::array<
-    std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>, 4>
+template <std::size_t K>
+[[nodiscard]] constexpr std::array<std::array<std::array<long long, K>, K>, 4>
 cumulative_basis_table() noexcept {
-    std::array<
-        std::array<std::array<long long, static_cast<std::size_t>(K)>, static_cast<std::size_t>(K)>,
-        4>
-        table{};
-    for (int s = 0; s < K; ++s)
-        for (int n = 0; n < K; ++n) {
+    std::array<std::array<std::array<long long, K>, K>, 4> table{};
+    const int k = static_cast<int>(K);  // signed: the sums below alternate in sign
+    for (int s = 0; s < k; ++s)
+        for (int n = 0; n < k; ++n) {
             long long sum = 0;
-            for (int l = s; l < K; ++l) {
+            for (int l = s; l < k; ++l) {
                 long long power = 1;
-                for (int e = 0; e < K - 1 - n; ++e) power *= (K - 1 - l);
-                sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(K, l - s) * power;
+                for (int e = 0; e < k - 1 - n; ++e) power *= (k - 1 - l);
+                sum += ((l - s) % 2 == 0 ? 1 : -1) * binomial_of(k, l - s) * power;
             }
-            const long long entry = binomial_of(K - 1, n) * sum;
+            const long long entry = binomial_of(k - 1, n) * sum;
             for (int j = 0; j <= s; ++j)
                 table[0][static_cast<std::size_t>(j)][static_cast<std::size_t>(n)] += entry;
         }
     for (std::size_t d = 1; d < 4; ++d)
-        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j)
-            for (std::size_t n = 0; n + 1 < static_cast<std::size_t>(K); ++n)
+        for (std::size_t j = 0; j < K; ++j)
+            for (std::size_t n = 0; n + 1 < K; ++n)
                 table[d][j][n] = static_cast<long long>(n + 1) * table[d - 1][j][n + 1];
     return table;
 }
 
 /// The cumulative weights and their first three time derivatives at one time: b[d][j] is
 /// d^d/dt^d b~_j (j = 0 .. K - 1; b[0][0] = 1, b[d][0] = 0 for d > 0).
-template <class T, int K>
+template <class T, std::size_t K>
 struct cumulative_weights {
-    std::array<std::array<T, static_cast<std::size_t>(K)>, 4> b;
+    std::array<std::array<T, K>, 4> b;
 };
 
 /// The cumulative weights at u in [0, 1] of a segment of duration dt: Horner's scheme on the
 /// integer coefficients, one division by (K - 1)! dt^d each (exact coefficients in any T).
-template <class T, int K>
-[[nodiscard]] constexpr cumulative_weights<T, static_cast<std::size_t>(K)> cumulative_weights_at(
-    const T& u, const T& dt) noexcept {
+template <class T, std::size_t K>
+[[nodiscard]] constexpr cumulative_weights<T, K> cumulative_weights_at(const T& u,
+                                                                       const T& dt) noexcept {
     constexpr auto table = cumulative_basis_table<K>();
-    cumulative_weights<T, static_cast<std::size_t>(K)> w{};
-    T scale = T(static_cast<double>(factorial_of(K - 1)));
+    cumulative_weights<T, K> w{};
+    T scale = T(static_cast<double>(factorial_of(static_cast<int>(K) - 1)));
     for (std::size_t d = 0; d < 4; ++d) {
-        for (std::size_t j = 0; j < static_cast<std::size_t>(K); ++j) {
+        for (std::size_t j = 0; j < K; ++j) {
             if (d + 1 > K) {
                 w.b[d][j] = T(0);
                 continue;
@@ -108,13 +105,12 @@ struct knot_position {
 /// (at most count - K + 1), segment = min(floor(s), count - K), u = s - segment (the last segment
 /// includes its end, u = 1). Invalid (segment 0, u NaN) for count < K, dt not positive or not
 /// finite, t0 not finite, t NaN or outside that range.
-template <int K, class T>
+template <std::size_t K, class T>
 [[nodiscard]] constexpr knot_position<T> spline_position(const T& t, const T& t0, const T& dt,
                                                          std::size_t count) noexcept {
     const knot_position<T> invalid{0, quiet_nan<T>(), false};
-    if (count < static_cast<std::size_t>(K) || !(dt > T(0)) || !is_finite(dt) || !is_finite(t0))
-        return invalid;
-    const std::size_t last = count - static_cast<std::size_t>(K);
+    if (count < K || !(dt > T(0)) || !is_finite(dt) || !is_finite(t0)) return invalid;
+    const std::size_t last = count - K;
     const T segments = T(static_cast<double>(last + 1));
     // The range as times, t0 <= t <= t0 + segments dt (the end as end_time() rounds it), then s
     // clamped to it: (t - t0) / dt may round past the last knot at the end itself.
