@@ -20,7 +20,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,7 +44,7 @@ using camera_imu::v3;
 
 namespace {
 
-constexpr int order = 4;
+constexpr std::size_t order = 4;
 constexpr double degree = numbers::pi / 180;
 constexpr double knot_spacing = 0.1;
 
@@ -50,17 +52,6 @@ struct pose_measurement {
     double time;  ///< IMU clock
     dual_quaternion<double> pose;
 };
-
-/// Where t falls on a spline of the given knots: the first control point of its segment and the
-/// time since that segment's start, as the residuals take them. The spline finds the segment from
-/// (t - t0) / dt, so t - t0 - first dt can round to just below 0 (or above dt), where the
-/// residual's one-segment spline is undefined (NaN): clamped, it moves by an ulp at most.
-template <class Spline>
-std::pair<std::size_t, double> segment_of(const Spline& spline, double t) {
-    const std::size_t first = spline.evaluate(t).first;
-    const double dt = spline.knot_spacing();
-    return {first, std::clamp(t - spline.start_time() - static_cast<double>(first) * dt, 0.0, dt)};
-}
 
 /// The body pose at `time` from the measurements on either side: slerp and lerp between them, the
 /// end measurement beyond the ends.
@@ -77,7 +68,7 @@ dual_quaternion<double> interpolate(const std::vector<pose_measurement>& poses, 
 struct fit_result {
     std::vector<state> fitted;  ///< at the IMU's times
     v3 gyroscope_bias, accelerometer_bias, gyroscope_sigma, accelerometer_sigma;
-    int iterations = 0;
+    int iterations = 0, residual_blocks = 0;
     double seconds = 0, initial_cost = 0, final_cost = 0;
     /// 2 cost / (residuals - parameters): near 1 when the residuals are at the noise level.
     double cost_per_freedom = 0;
@@ -122,6 +113,7 @@ void solve(ceres::Problem& problem, double* gyroscope_bias, double* acceleromete
     options.max_num_iterations = 50;
     options.num_threads = 1;
     ceres::Solver::Summary summary;
+    result.residual_blocks = problem.NumResidualBlocks();
     const auto start = std::chrono::steady_clock::now();
     ceres::Solve(options, &problem, &summary);
     result.seconds =
@@ -157,7 +149,7 @@ fit_result fit_split(const run& r) {
         write_parameters(rotation_of(x), &rotations[4 * j]);
         write_parameters(translation_of(x), &positions[3 * j]);
     }
-    // The segment of a time depends only on the knots, so a view of the initial points finds it.
+    // segment_at reads only the knots, so a view of the initial points finds every segment.
     std::vector<quatd> start(n);
     for (std::size_t j = 0; j < n; ++j) start[j] = quaternion_from_parameters(&rotations[4 * j]);
     const so3_bspline<double, order> knots(start, 0.0, knot_spacing);
@@ -174,14 +166,18 @@ fit_result fit_split(const run& r) {
     ceres::Problem problem(problem_options);
     const camera_imu::sensor_setup& s = r.setup;
     for (const pose_measurement& z : r.body_poses) {
-        const auto [first, offset] = segment_of(knots, z.time);
+        const std::optional<bspline_segment<double>> at = knots.segment_at(z.time);
+        if (!at) continue;  // outside the spline's [0, 10 s]: no reading is
+        const auto [first, offset] = *at;
         problem.AddResidualBlock(
             new split_bspline_pose_cost<order>(offset, knot_spacing, z.pose,
                                                r.pose_weight(rotation_of(z.pose), true)),
             nullptr, blocks(first, true, nullptr));
     }
     for (const camera_imu::imu_reading& z : r.imu) {
-        const auto [first, offset] = segment_of(knots, z.time);
+        const std::optional<bspline_segment<double>> at = knots.segment_at(z.time);
+        if (!at) continue;  // outside the spline's [0, 10 s]: no reading is
+        const auto [first, offset] = *at;
         problem.AddResidualBlock(
             new so3_bspline_gyroscope_cost<order>(offset, knot_spacing, z.gyroscope,
                                                   r.weight(s.gyroscope_noise)),
@@ -231,14 +227,18 @@ fit_result fit_se3(const run& r) {
     ceres::Problem problem(problem_options);
     const camera_imu::sensor_setup& s = r.setup;
     for (const pose_measurement& z : r.body_poses) {
-        const auto [first, offset] = segment_of(knots, z.time);
+        const std::optional<bspline_segment<double>> at = knots.segment_at(z.time);
+        if (!at) continue;  // outside the spline's [0, 10 s]: no reading is
+        const auto [first, offset] = *at;
         problem.AddResidualBlock(
             new se3_bspline_pose_cost<order>(offset, knot_spacing, z.pose,
                                              r.pose_weight(rotation_of(z.pose), false)),
             nullptr, blocks(first, nullptr));
     }
     for (const camera_imu::imu_reading& z : r.imu) {
-        const auto [first, offset] = segment_of(knots, z.time);
+        const std::optional<bspline_segment<double>> at = knots.segment_at(z.time);
+        if (!at) continue;  // outside the spline's [0, 10 s]: no reading is
+        const auto [first, offset] = *at;
         problem.AddResidualBlock(
             new se3_bspline_gyroscope_cost<order>(offset, knot_spacing, z.gyroscope,
                                                   r.weight(s.gyroscope_noise)),
@@ -299,7 +299,7 @@ int main(int argc, char** argv) {
         "camera_imu_spline: %d IMU readings, %d camera poses, %d control points (K = %d, "
         "knots every %.2f s)\n",
         static_cast<int>(r.imu.size()), static_cast<int>(r.body_poses.size()),
-        static_cast<int>(r.control_points), order, knot_spacing);
+        static_cast<int>(r.control_points), static_cast<int>(order), knot_spacing);
     std::printf(
         "  the camera's body poses against truth: position RMS %.2f mm, orientation RMS "
         "%.3f deg\n",
@@ -333,6 +333,9 @@ int main(int argc, char** argv) {
             return sigma.x > 0 && std::abs(error.x) < 4 * sigma.x &&
                    std::abs(error.y) < 4 * sigma.y && std::abs(error.z) < 4 * sigma.z;
         };
+        expect(
+            static_cast<std::size_t>(f.residual_blocks) == 2 * r.imu.size() + r.body_poses.size(),
+            "every reading lies in the spline's domain and has its residual");
         expect(f.converged, "Ceres converges");
         // Least squares at the true noise: 2 cost / (m - n) is chi-square over its degrees of
         // freedom, about 1 +- sqrt(2 / (m - n)) = 1 +- 0.013 here.
