@@ -67,7 +67,8 @@ dual_quaternion<double> interpolate(const std::vector<pose_measurement>& poses, 
 
 struct fit_result {
     std::vector<state> fitted;  ///< at the IMU's times
-    v3 gyroscope_bias, accelerometer_bias, gyroscope_sigma, accelerometer_sigma;
+    v3 gyroscope_bias{}, accelerometer_bias{};
+    v3 gyroscope_sigma{}, accelerometer_sigma{};  ///< standard errors; zero if not computed
     int iterations = 0, residual_blocks = 0;
     double seconds = 0, initial_cost = 0, final_cost = 0;
     /// 2 cost / (residuals - parameters): near 1 when the residuals are at the noise level.
@@ -86,6 +87,7 @@ struct run {
     [[nodiscard]] double centre_of(std::size_t j) const {
         return (static_cast<double>(j) - (order - 2) / 2.0) * knot_spacing;
     }
+    /// The weight of a reading whose axes each have standard deviation sigma, uncorrelated.
     [[nodiscard]] matrix3<double> weight(double sigma) const {
         return matrix3<double>::identity() * (1 / sigma);
     }
