@@ -1,7 +1,8 @@
-# Ceres::ceres for the opt-in quat/interop/ceres.hpp's test and the pose_graph example (Debian's
-# libceres-dev), or no target when Ceres is missing. Debian 12's CeresConfig.cmake gives up when
-# glog's config cannot find libunwind-dev, which conflicts with LLVM's libunwind-19-dev (installed
-# with libc++-19-dev): then the target is made from the shared library, glog and Eigen directly.
+# Ceres::ceres for the opt-in quat/interop/ceres.hpp's test and the Ceres examples (pose_graph,
+# camera_imu_spline) (Debian's libceres-dev), or no target when Ceres is missing. Debian 12's
+# CeresConfig.cmake gives up when glog's config cannot find libunwind-dev, which conflicts with
+# LLVM's libunwind-19-dev (installed with libc++-19-dev): then the target is made from the shared
+# library, glog and Eigen directly.
 if(TARGET Ceres::ceres)
     return()
 endif()
