@@ -2,7 +2,7 @@
 // and Jacobians in double (measure_trajectory_bspline.hpp, measure_trajectory_paths.hpp say what
 // each row compares), as two markdown tables: the B-splines by order K, the keyframe paths by
 // path; each cell the worst over the sample classes, with the class it occurred in. Exit status 1
-// when a row exceeds its bound (the issue's: 1e-12 relative to the largest entry of the
+// when a row exceeds its bound (1e-12 relative to the largest entry of the
 // reference, 1e-13 between forward-mode and analytic Jacobians, 8 eps between the recurrences and
 // the product rule; 4 eps for the keyframes, the tests' bound).
 #pragma once
