@@ -13,6 +13,10 @@
 //                                           methods beside OpenCV's five where built with it;
 //                                           exit 1 when hand_eye_from_poses misses a criterion,
 //                                           measure_hand_eye.hpp)
+//   quat_accuracy --trajectory [--quick]   (B-spline rates and Jacobians against long double
+//                                           differences, dual numbers and the O(K^2) product
+//                                           rule; keyframe paths' rates; exit 1 when a row
+//                                           exceeds its bound, measure_trajectory.hpp)
 
 // g++ 12 at -O3 reports a false -Warray-bounds (and, with AVX-512, -Wmaybe-uninitialized) inside
 // Eigen::umeyama's packet loads of its 3-vector means (measure_registration.hpp calls it); the code
@@ -34,6 +38,7 @@
 #include "measure_registration.hpp"
 #include "measure_rigid.hpp"
 #include "measure_scipy.hpp"
+#include "measure_trajectory.hpp"
 
 namespace accuracy {
 namespace {
@@ -46,6 +51,7 @@ struct options {
     bool slerp_fast = false;   // the fast-slerp family's table instead
     bool rigid = false;        // the rigid-motion tables of measure_rigid.hpp instead
     bool hand_eye = false;     // hand-eye calibration under noise, against OpenCV
+    bool trajectory = false;   // the trajectory family's derivatives and Jacobians instead
 };
 
 // quat's targets, in eps (double; float in the same ratio to its epsilon).
@@ -267,6 +273,7 @@ int run(const options& opt) {
     if (opt.scipy) return run_scipy();
     if (opt.rigid) return rigid::run_rigid(opt.quick, seed) > 0 ? 1 : 0;
     if (opt.hand_eye) return hand_eye_noise::run_hand_eye_noise(opt.quick, seed) > 0 ? 1 : 0;
+    if (opt.trajectory) return trajectory::run_trajectory(opt.quick, seed) > 0 ? 1 : 0;
     std::vector<row> rows;
     runner<float> f{opt, rows, seed};
     runner<double> d{opt, rows, seed};
@@ -337,11 +344,14 @@ int main(int argc, char** argv) {
             opt.rigid = true;
         } else if (std::strcmp(argv[i], "--hand-eye") == 0) {
             opt.hand_eye = true;
+        } else if (std::strcmp(argv[i], "--trajectory") == 0) {
+            opt.trajectory = true;
         } else {
-            std::fprintf(stderr,
-                         "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick] | "
-                         "--scipy | --rigid [--quick] | --hand-eye [--quick]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--quick] [--worst] [--conventions] | --slerp-fast [--quick] | "
+                "--scipy | --rigid [--quick] | --hand-eye [--quick] | --trajectory [--quick]\n",
+                argv[0]);
             return 2;
         }
     }

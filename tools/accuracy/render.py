@@ -3,10 +3,11 @@
 
 Usage:
   render.py --tool <build>/tools/accuracy/quat_accuracy [--build-dir <build>] [-o docs/accuracy.md]
-      runs quat_accuracy three times (the main table, --scipy, --rigid; about 5 minutes) and writes
-      the document;
-  render.py --main main.txt --scipy scipy.txt --rigid rigid.txt [--build-dir <build>] [-o ...]
-      uses saved outputs of those three runs instead.
+      runs quat_accuracy four times (the main table, --scipy, --rigid, --trajectory; about 5
+      minutes) and writes the document;
+  render.py --main main.txt --scipy scipy.txt --rigid rigid.txt --trajectory trajectory.txt
+            [--build-dir <build>] [-o ...]
+      uses saved outputs of those four runs instead.
 The machine line names the CPU (/proc/cpuinfo's model name, or --cpu), the compiler (--version of
 the build directory's compiler, or --compiler) and the flags quat_accuracy was compiled with (from
 the build directory's compile_commands.json, or --flags).
@@ -17,6 +18,7 @@ Template placeholders (the prose around the tables lives in accuracy.md.in):
   {{table GROUP}}              the main table's rows of one group (see GROUPS)
   {{missed}}                   a list of the rows that missed their target, with MISSED_REASONS
   {{scipy}} / {{rigid}}        the output of quat_accuracy --scipy / --rigid
+  {{trajectory}}               the output of quat_accuracy --trajectory
   {{max LIB TYPE "OPERATION" ["INPUTS"]}}  the largest maximum of LIB (quat, GLM, Eigen) over the
                                rows of that operation and type whose inputs contain INPUTS
   {{rms ...}}                  the largest RMS of those rows
@@ -216,6 +218,7 @@ def main():
     p.add_argument("--main", help="saved output of quat_accuracy")
     p.add_argument("--scipy", help="saved output of quat_accuracy --scipy")
     p.add_argument("--rigid", help="saved output of quat_accuracy --rigid")
+    p.add_argument("--trajectory", help="saved output of quat_accuracy --trajectory")
     p.add_argument("--build-dir", help="the build directory quat_accuracy was built in")
     p.add_argument("--cpu"), p.add_argument("--compiler"), p.add_argument("--flags")
     p.add_argument("--template", default=os.path.join(HERE, "accuracy.md.in"))
@@ -227,12 +230,13 @@ def main():
             with open(saved, encoding="utf-8") as f:
                 return f.read()
         if not a.tool:
-            p.error("give --tool, or --main, --scipy and --rigid")
+            p.error("give --tool, or --main, --scipy, --rigid and --trajectory")
         return run_tool(a.tool, *args)
 
     header, rows, footer = parse_main(output(a.main))
     scipy = output(a.scipy, "--scipy").strip()
     rigid = output(a.rigid, "--rigid").strip()
+    trajectory = output(a.trajectory, "--trajectory").strip()
     build_dir = a.build_dir or (os.path.dirname(os.path.dirname(os.path.dirname(
         os.path.abspath(a.tool)))) if a.tool else None)
     cpu = a.cpu or cpu_name() or "an unnamed CPU"
@@ -259,6 +263,8 @@ def main():
             return scipy
         if kind == "rigid":
             return rigid
+        if kind == "trajectory":
+            return trajectory
         if kind in ("max", "rms"):
             return render_lookup(words, header, rows)
         sys.exit(f"unknown placeholder {m.group(0)}")
