@@ -75,7 +75,8 @@ inline int run_trajectory(bool quick, std::uint64_t seed) {
         "Worst error in double over the sample classes (the class in brackets): random t (random "
         "control points, times inside segments), knots (the same points at every knot), near "
         "identity (points within 1e-7 of the identity), near π (increments of π − 1e-2 rad); "
-        "\"relative\" rows: max \\|error\\| / max \\|entry\\| of the reference.\n\n");
+        "\"relative\" rows: max \\|error\\| / max \\|entry\\| of the reference, for the "
+        "rates (and the eps rows of the rates) the rate's largest entry over the set's times.\n\n");
     std::printf("| spline | quantity | bound | K = 4 | K = 5 | K = 6 |\n");
     std::printf("|---|---|---|---|---|---|\n");
     print_rows(splines);

@@ -116,6 +116,13 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
     const typename Kind::template spline<ld, K> unit_spline(unit, ld(t0), ld(dt));
     const typename Kind::template spline<double, K> spline(points, t0, dt);
     const typename Kind::template spline<ld, K> wide_spline(wide, ld(t0), ld(dt));
+    // Each rate's largest entry over the set's times, the scale its errors are measured in.
+    std::array<ld, 3> rate_scale{};
+    for (const sample_time& st : times) {
+        const auto r = Kind::rates(unit_spline.evaluate(ld(st.t)));
+        for (std::size_t k = 0; k < 3; ++k)
+            rate_scale[k] = std::max(rate_scale[k], largest_entry(r[k]));
+    }
     for (const sample_time& st : times) {
         const int cls = point_class == 0 ? (st.knot ? 1 : 0) : point_class + 1;
         const auto record = [&](std::size_t r, double e) {
@@ -142,7 +149,8 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
             reference[k] =
                 time_rate<D>([&](ld step) { return Kind::rates(at(step))[k - 1]; }, h, side);
         for (std::size_t k = 0; k < 3; ++k)
-            if (k < 2 || K >= 5 || !st.knot) record(k, relative_error(rates[k], reference[k]));
+            if (k < 2 || K >= 5 || !st.knot)
+                record(k, scaled_error(rates[k], reference[k], rate_scale[k]));
 
         // (b) Jacobians: point first + m moved to x_m exp(delta); value's change as log(X^-1 X').
         std::array<std::vector<ld>, 4> wanted;
@@ -214,7 +222,7 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
             std::array{Kind::flat(textbook.velocity), Kind::flat(textbook.acceleration),
                        Kind::flat(textbook.jerk)};
         for (std::size_t k = 0; k < 3; ++k)
-            record(12 + k, relative_error(rates[k], textbook_rates[k]) / eps);
+            record(12 + k, scaled_error(rates[k], textbook_rates[k], rate_scale[k]) / eps);
         const quat::detail::knot_position<ld> wide_pos =
             quat::detail::spline_position<K>(tl, ld(t0), ld(dt), points.size());
         const auto wide_textbook = quat::test::textbook_bspline<typename Kind::reference, ld, K>(
@@ -228,7 +236,7 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
             std::array{Kind::flat(wide_textbook.velocity), Kind::flat(wide_textbook.acceleration),
                        Kind::flat(wide_textbook.jerk)};
         for (std::size_t k = 0; k < 3; ++k)
-            record(16 + k, relative_error(base_rates[k], wide_textbook_rates[k]) / wide_eps);
+            record(16 + k, scaled_error(base_rates[k], wide_textbook_rates[k], rate_scale[k]) / wide_eps);
     }
 }
 

@@ -69,6 +69,13 @@ void measure_split_set(const std::vector<quat::quaternion<double>>& rotations,
         const quat::split_bspline_sample<ld> s = wide.evaluate(t);
         return to_dual_quaternion(s.rotation, s.position);
     };
+    // The twist's and its rate's largest entries over the set's times (scaled_error's scale).
+    ld twist_scale = 0, rate_scale = 0;
+    for (const sample_time& st : times) {
+        const quat::split_bspline_sample<ld> s = wide.evaluate(ld(st.t));
+        twist_scale = std::max(twist_scale, largest_entry(se3_kind::flat(s.body_velocity)));
+        rate_scale = std::max(rate_scale, largest_entry(se3_kind::flat(s.body_acceleration)));
+    }
     for (const sample_time& st : times) {
         const int cls = point_class == 0 ? (st.knot ? 1 : 0) : point_class + 1;
         char at[96];
@@ -84,9 +91,9 @@ void measure_split_set(const std::vector<quat::quaternion<double>>& rotations,
             [&](ld step) { return se3_kind::flat(wide.evaluate(t + step).body_velocity); }, h,
             side);
         rows[0].columns[column][static_cast<std::size_t>(cls)].add(
-            relative_error(se3_kind::flat(s.body_velocity), twist), at);
+            scaled_error(se3_kind::flat(s.body_velocity), twist, twist_scale), at);
         rows[1].columns[column][static_cast<std::size_t>(cls)].add(
-            relative_error(se3_kind::flat(s.body_acceleration), rate), at);
+            scaled_error(se3_kind::flat(s.body_acceleration), rate, rate_scale), at);
     }
 }
 
@@ -162,6 +169,15 @@ void measure_path_set(const std::vector<double>& times,
         const int cls = point_class == 0 ? (knot ? 1 : 0) : point_class + 1;
         return rows[r].columns[column][static_cast<std::size_t>(cls)];
     };
+    // Each rate's largest entry over the set's times (scaled_error's scale).
+    std::array<ld, 4> scale{};
+    for (const sample_time& st : samples) {
+        const quat::keyframe_path_state<ld> w = wide.state(ld(st.t));
+        const std::array<std::array<ld, 3>, 4> rates{flat3(w.velocity), flat3(w.acceleration),
+                                                     flat3(w.body_angular_velocity),
+                                                     flat3(w.body_angular_acceleration)};
+        for (std::size_t k = 0; k < 4; ++k) scale[k] = std::max(scale[k], largest_entry(rates[k]));
+    }
     for (const sample_time& st : samples) {
         char at[96];
         std::snprintf(at, sizeof at, "%s, t = %.17g", set.c_str(), st.t);
@@ -185,10 +201,11 @@ void measure_path_set(const std::vector<double>& times,
             time_rate<3>([&](ld step) { return flat3(state(step).velocity); }, h, side);
         const auto angular_rate = time_rate<3>(
             [&](ld step) { return flat3(state(step).body_angular_velocity); }, h, side);
-        cell(0, st.knot).add(relative_error(flat3(s.velocity), velocity), at);
-        cell(1, st.knot).add(relative_error(flat3(s.acceleration), acceleration), at);
-        cell(2, st.knot).add(relative_error(flat3(s.body_angular_velocity), angular), at);
-        cell(3, st.knot).add(relative_error(flat3(s.body_angular_acceleration), angular_rate), at);
+        cell(0, st.knot).add(scaled_error(flat3(s.velocity), velocity, scale[0]), at);
+        cell(1, st.knot).add(scaled_error(flat3(s.acceleration), acceleration, scale[1]), at);
+        cell(2, st.knot).add(scaled_error(flat3(s.body_angular_velocity), angular, scale[2]), at);
+        cell(3, st.knot).add(
+            scaled_error(flat3(s.body_angular_acceleration), angular_rate, scale[3]), at);
     }
     const quat::test::keyframe_misses m = quat::test::misses_at_keyframes(path, times, poses);
     constexpr double eps = std::numeric_limits<double>::epsilon();

@@ -75,6 +75,29 @@ double relative_error(const std::array<T, N>& got, const std::array<ld, N>& refe
     return relative_error(got, std::vector<ld>(reference.begin(), reference.end()));
 }
 
+/// The largest |entry| of a rate.
+template <std::size_t N>
+ld largest_entry(const std::array<ld, N>& v) {
+    ld largest = 0;
+    for (const ld x : v) largest = std::max(largest, std::abs(x));
+    return largest;
+}
+
+/// max |got - reference| / scale, scale the largest entry of the same rate over all the set's
+/// sample times: a rate's error relative to its size along the path. At one time a rate can pass
+/// near zero (an acceleration between a speed-up and a slow-down) while its terms do not, and
+/// relative to its own entries there any rounding of theirs looks large.
+template <class T, std::size_t N>
+double scaled_error(const std::array<T, N>& got, const std::array<ld, N>& reference, ld scale) {
+    ld error = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+        const auto value = static_cast<ld>(got[i]);
+        if (!std::isfinite(value)) return std::numeric_limits<double>::infinity();
+        error = std::max(error, std::abs(value - reference[i]));
+    }
+    return static_cast<double>(scale > 0 ? error / scale : error);
+}
+
 /// The largest error seen, and where.
 struct worst_error {
     double max = 0;
