@@ -118,6 +118,7 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
     const typename Kind::template spline<ld, K> wide_spline(wide, ld(t0), ld(dt));
     // Each rate's largest entry over the set's times, the scale its errors are measured in.
     std::array<ld, 3> rate_scale{};
+    const ld reach = Kind::reach(unit);
     for (const sample_time& st : times) {
         const auto r = Kind::rates(unit_spline.evaluate(ld(st.t)));
         for (std::size_t k = 0; k < 3; ++k)
@@ -217,7 +218,7 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
             unit.data() + pos.segment,
             quat::detail::cumulative_weights_at<ld, K>(ld(pos.u), ld(dt)));
         constexpr double eps = std::numeric_limits<double>::epsilon();
-        record(11, Kind::value_error(Kind::value(s), textbook.value) / eps);
+        record(11, Kind::value_error(Kind::value(s), textbook.value, reach) / eps);
         const auto textbook_rates =
             std::array{Kind::flat(textbook.velocity), Kind::flat(textbook.acceleration),
                        Kind::flat(textbook.jerk)};
@@ -230,13 +231,15 @@ void measure_set(const std::vector<typename Kind::template point<double>>& point
             quat::detail::cumulative_weights_at<ld, K>(wide_pos.u, ld(dt)));
         constexpr double wide_eps = static_cast<double>(std::numeric_limits<ld>::epsilon());
         const auto unit_sample = unit_spline.evaluate(tl);
-        record(15, Kind::value_error(Kind::value(unit_sample), wide_textbook.value) / wide_eps);
+        record(15,
+               Kind::value_error(Kind::value(unit_sample), wide_textbook.value, reach) / wide_eps);
         const auto base_rates = Kind::rates(unit_sample);
         const auto wide_textbook_rates =
             std::array{Kind::flat(wide_textbook.velocity), Kind::flat(wide_textbook.acceleration),
                        Kind::flat(wide_textbook.jerk)};
         for (std::size_t k = 0; k < 3; ++k)
-            record(16 + k, scaled_error(base_rates[k], wide_textbook_rates[k], rate_scale[k]) / wide_eps);
+            record(16 + k,
+                   scaled_error(base_rates[k], wide_textbook_rates[k], rate_scale[k]) / wide_eps);
     }
 }
 

@@ -204,8 +204,8 @@ void measure_path_set(const std::vector<double>& times,
         cell(0, st.knot).add(scaled_error(flat3(s.velocity), velocity, scale[0]), at);
         cell(1, st.knot).add(scaled_error(flat3(s.acceleration), acceleration, scale[1]), at);
         cell(2, st.knot).add(scaled_error(flat3(s.body_angular_velocity), angular, scale[2]), at);
-        cell(3, st.knot).add(
-            scaled_error(flat3(s.body_angular_acceleration), angular_rate, scale[3]), at);
+        cell(3, st.knot)
+            .add(scaled_error(flat3(s.body_angular_acceleration), angular_rate, scale[3]), at);
     }
     const quat::test::keyframe_misses m = quat::test::misses_at_keyframes(path, times, poses);
     constexpr double eps = std::numeric_limits<double>::epsilon();

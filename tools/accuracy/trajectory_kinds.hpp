@@ -75,11 +75,13 @@ struct so3_kind {
         const point<S> local = conjugate(point<S>{v(y.w), v(y.x), v(y.y), v(y.z)}) * y;
         return {local.x * S(2), local.y * S(2), local.z * S(2)};
     }
-    /// The angle between the value and the product rule's.
+    /// The angle between the value and the product rule's (reach, a length, is not read).
     template <class S>
-    static double value_error(const point<S>& got, const point<ld>& want) {
+    static double value_error(const point<S>& got, const point<ld>& want, ld /*reach*/) {
         return static_cast<double>(norm(quat::so3::minus(point<ld>(got), want)));
     }
+    /// 1: rotations have no length.
+    static ld reach(const std::vector<point<ld>>&) { return 1; }
 
     /// Random steps up to 1 rad with random signs; points within 1e-7 rad of the identity; steps
     /// of pi - 1e-2 rad.
@@ -153,14 +155,21 @@ struct se3_kind {
         return {local.dual.x * two, local.dual.y * two, local.dual.z * two,
                 local.real.x * two, local.real.y * two, local.real.z * two};
     }
-    /// The largest component of log(want^-1 got), relative to max(1, |translation|).
+    /// The largest component of log(want^-1 got), relative to max(reach, |translation|): reach
+    /// the largest translation among the set's control points, which the value's translation
+    /// sums and whose own rounding is relative to them, not to the (possibly shorter) sum.
     template <class S>
-    static double value_error(const point<S>& got, const point<ld>& want) {
+    static double value_error(const point<S>& got, const point<ld>& want, ld reach) {
         ld error = 0;
         for (const ld c : flat(quat::se3::minus(point<ld>(got), want)))
             error = std::max(error, std::abs(c));
-        const ld reach = std::max<ld>(1, norm(translation_of(want)));
-        return static_cast<double>(error / reach);
+        return static_cast<double>(error / std::max(reach, norm(translation_of(want))));
+    }
+    /// max(1, the largest |translation| among the points).
+    static ld reach(const std::vector<point<ld>>& points) {
+        ld r = 1;
+        for (const point<ld>& x : points) r = std::max(r, norm(translation_of(x)));
+        return r;
     }
 
     /// X_(i+1) = X_i exp(step): rotation steps up to 1 rad and translation steps of about 1;
