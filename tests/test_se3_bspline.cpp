@@ -1,11 +1,12 @@
 // Cumulative B-splines on SE(3) (quat/trajectory/se3_bspline.hpp), for the orders K = 4, 5, 6, as
-// tests/test_so3_bspline.cpp checks SO(3): the body twist and its two derivatives against long
-// double Richardson differences in time of the library's own long double evaluation (one-sided at
-// knots), every Jacobian with respect to the K control motions against long double central
-// differences through se3's right plus and minus, at random times and every knot, for random motions,
-// motions near the identity and rotation increments near a half turn; ceres::Jet and dual-number
-// derivatives through the evaluation; the O(K) recurrences against the O(K^2) product rule in dual
-// quaternions; the domain rules. QUAT_LIE_REPORT=1 prints the worst error of every check.
+// tests/test_so3_bspline.cpp and tests/test_so3_bspline_derivatives.cpp check SO(3): the body
+// twist and its two derivatives against long double Richardson differences in time of the
+// library's own long double evaluation (one-sided at knots), every Jacobian with respect to the K
+// control motions against long double central differences through se3's right plus and minus, at
+// random times and every knot, for random motions, motions near the identity and rotation
+// increments near a half turn; ceres::Jet and dual-number derivatives through the evaluation; the
+// O(K) recurrences against the O(K^2) product rule in dual quaternions; the domain rules.
+// QUAT_LIE_REPORT=1 prints the worst error of every check.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -1,5 +1,6 @@
-// The textbook evaluation of a cumulative B-spline on SO(3) or SE(3) that tests/test_so3_bspline.cpp
-// and tests/test_se3_bspline.cpp hold the O(K) recurrences to: the value as the direct product
+// The textbook evaluation of a cumulative B-spline on SO(3) or SE(3) that
+// tests/test_so3_bspline_derivatives.cpp and tests/test_se3_bspline.cpp hold the O(K) recurrences
+// to: the value as the direct product
 //     X = P_0 exp(b~_1 d_1) ... exp(b~_(K-1) d_(K-1)),
 // its time derivatives by the product rule over every factor (O(K^n) products for the n-th
 // derivative, against the library's O(K)), and the body velocity and its derivatives from

@@ -1,6 +1,6 @@
 // The B-spline rows of `quat_accuracy --trajectory`: so3_bspline and se3_bspline of orders K = 4, 5,
-// 6 in double, as tests/test_so3_bspline.cpp and tests/test_se3_bspline.cpp check them, with the
-// worst error recorded instead of checked:
+// 6 in double, as tests/test_so3_bspline_derivatives.cpp and tests/test_se3_bspline.cpp check them,
+// with the worst error recorded instead of checked:
 // - the body velocity and its two derivatives against long double Richardson differences in time
 //   of the library's own long double evaluation (one-sided at knots, where the spline is only
 //   C^(K-2); the jerk of K = 4 jumps there and is not compared);

@@ -2,7 +2,7 @@
 // of measure_trajectory_bspline.hpp reads them: the point and tangent types, right plus and minus
 // in long double, the sample's value and rates as flat arrays, the first-order plus and the local
 // tangent that forward-mode derivatives go through, the value's error against the product rule,
-// and the control points of each sample class (as tests/test_so3_bspline.cpp and
+// and the control points of each sample class (as tests/test_so3_bspline_derivatives.cpp and
 // tests/test_se3_bspline.cpp make them).
 #pragma once
 
