@@ -81,7 +81,8 @@ E product_derivative(const std::array<std::array<E, 4>, N>& factors, std::size_t
     if (from == N) return n == 0 ? left : algebra_zero(left);
     E sum = algebra_zero(left);
     for (int o = 0; o <= n; ++o) {
-        const E term = product_derivative<T>(factors, from + 1, n - o, left * factors[from][o]);
+        const E term = product_derivative<T>(factors, from + 1, n - o,
+                                             left * factors[from][static_cast<std::size_t>(o)]);
         sum = algebra_add(sum, term * T(static_cast<double>(detail::binomial_of(n, o))));
     }
     return sum;
