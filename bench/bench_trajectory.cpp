@@ -15,13 +15,12 @@
 #include <string>
 #include <vector>
 
-#include <ceres/jet.h>
-
 #include <quat/trajectory/se3_bspline.hpp>
 #include <quat/trajectory/so3_bspline.hpp>
 
 #include "../tests/support/bspline_reference.hpp"
 #include "common.hpp"
+#include "jet_tangents.hpp"
 
 namespace bench {
 namespace {
@@ -30,8 +29,6 @@ using quat::matrix;
 using quat::quatd;
 using quat::vec3;
 using dq = quat::dual_quaternion<double>;
-template <int N>
-using jet = ceres::Jet<double, N>;
 
 /// K control points of one segment (t0 = 0, dt = 1, the domain [0, 1]) and a time in it. Each
 /// point is a small random step from the previous one, as a fitted trajectory's are.
@@ -62,73 +59,6 @@ segment<dq, K> motions(random_source& r) {
     }
     s.t = q.t;
     return s;
-}
-
-/// x (1, d/2): the first-order right plus of SO(3), d Jets at 0 from variable `first`.
-template <int N>
-quat::quaternion<jet<N>> first_order_plus(const quatd& x, int first) {
-    const quat::quaternion<jet<N>> step{jet<N>(1), jet<N>(0, first) * 0.5,
-                                        jet<N>(0, first + 1) * 0.5, jet<N>(0, first + 2) * 0.5};
-    return quat::quaternion<jet<N>>(x) * step;
-}
-/// x ((1, omega/2) + eps (0, rho/2)): SE(3)'s, rho from variable `first`, omega after it.
-template <int N>
-quat::dual_quaternion<jet<N>> first_order_plus(const dq& x, int first) {
-    const quat::dual_quaternion<jet<N>> step{
-        {jet<N>(1), jet<N>(0, first + 3) * 0.5, jet<N>(0, first + 4) * 0.5,
-         jet<N>(0, first + 5) * 0.5},
-        {jet<N>(0), jet<N>(0, first) * 0.5, jet<N>(0, first + 1) * 0.5,
-         jet<N>(0, first + 2) * 0.5}};
-    return quat::dual_quaternion<jet<N>>(x) * step;
-}
-/// The derivatives of a unit quaternion of Jets read into the tangent: 2 vec(q^-1 dq / dd_i).
-template <int N>
-matrix<double, 3, N> tangent(const quat::quaternion<jet<N>>& q) {
-    const quatd inverse{q.w.a, -q.x.a, -q.y.a, -q.z.a};
-    matrix<double, 3, N> m{};
-    for (int i = 0; i < N; ++i) {
-        const quatd d = inverse * quatd{q.w.v[i], q.x.v[i], q.y.v[i], q.z.v[i]};
-        m(0, i) = 2 * d.x;
-        m(1, i) = 2 * d.y;
-        m(2, i) = 2 * d.z;
-    }
-    return m;
-}
-/// The same for a unit dual quaternion of Jets: X^-1 dX = (0, omega/2) + eps (0, rho/2).
-template <int N>
-matrix<double, 6, N> tangent(const quat::dual_quaternion<jet<N>>& x) {
-    const dq inverse{{x.real.w.a, -x.real.x.a, -x.real.y.a, -x.real.z.a},
-                     {x.dual.w.a, -x.dual.x.a, -x.dual.y.a, -x.dual.z.a}};
-    matrix<double, 6, N> m{};
-    for (int i = 0; i < N; ++i) {
-        const dq d = inverse * dq{{x.real.w.v[i], x.real.x.v[i], x.real.y.v[i], x.real.z.v[i]},
-                                  {x.dual.w.v[i], x.dual.x.v[i], x.dual.y.v[i], x.dual.z.v[i]}};
-        const double column[6] = {d.dual.x, d.dual.y, d.dual.z, d.real.x, d.real.y, d.real.z};
-        for (int r = 0; r < 6; ++r) m(r, i) = 2 * column[r];
-    }
-    return m;
-}
-/// The derivatives of a vector of Jets, one row per component.
-template <int N>
-matrix<double, 3, N> partials(const vec3<jet<N>>& v) {
-    matrix<double, 3, N> m{};
-    for (int i = 0; i < N; ++i) {
-        m(0, i) = v.x.v[i];
-        m(1, i) = v.y.v[i];
-        m(2, i) = v.z.v[i];
-    }
-    return m;
-}
-template <int N>
-matrix<double, 6, N> partials(const quat::se3::twist<jet<N>>& t) {
-    const matrix<double, 3, N> l = partials(t.linear), a = partials(t.angular);
-    matrix<double, 6, N> m{};
-    for (int i = 0; i < N; ++i)
-        for (int r = 0; r < 3; ++r) {
-            m(r, i) = l(r, i);
-            m(r + 3, i) = a(r, i);
-        }
-    return m;
 }
 
 /// A sample and its three Jacobians, returned whole so that nothing is optimized away.
