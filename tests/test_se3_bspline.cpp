@@ -20,9 +20,9 @@
 #include <quat/quat.hpp>
 #include <quat/trajectory/se3_bspline.hpp>
 
+#include "support/bspline_checks.hpp"
 #include "support/bspline_reference.hpp"
 #include "support/catch.hpp"
-#include "support/dual_number.hpp"
 #include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
@@ -36,23 +36,21 @@ using dq = dual_quaternion<T>;
 template <class T>
 using twist = se3::twist<T>;
 using quat::test::central_differences;
+using quat::test::check_times;
+using quat::test::is_knot;
+using quat::test::joined;
 using quat::test::relative_error;
+using control_points = quat::test::control_points<dq<double>>;
+template <std::size_t K>
+using blocks = quat::test::blocks<6, K>;
 
 quat::test::worst_errors worst("se3_bspline");
 
 constexpr double pi = 3.14159265358979323846;
 
 using arr6 = std::array<ld, 6>;
-arr6 arr(const twist<ld>& t) {
-    return {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z};
-}
 twist<ld> tw(const arr6& a) { return {{a[0], a[1], a[2]}, {a[3], a[4], a[5]}}; }
 matrix<double, 6, 1> column(const twist<double>& t) { return se3::to_vector(t); }
-
-struct control_points {
-    std::string name;
-    std::vector<dq<double>> points;
-};
 
 /// X_(i+1) = X_i exp(step): rotation steps up to 1 rad and translation steps of about 1 with random
 /// signs; steps below 1e-7 from the identity; rotation steps of pi - 1e-2 rad.
@@ -80,43 +78,13 @@ std::vector<control_points> point_sets(std::size_t count) {
 }
 
 template <std::size_t K>
-std::vector<double> check_times(std::size_t count, double t0, double dt) {
-    test::random_rotations random(7);
-    std::vector<double> times;
-    const std::size_t segments = count - K + 1;
-    for (std::size_t i = 0; i <= segments; ++i) times.push_back(t0 + static_cast<double>(i) * dt);
-    for (int n = 0; n < 4; ++n) {
-        const double i = std::floor(random.uniform<double>(0, static_cast<double>(segments)));
-        times.push_back(t0 + (i + random.uniform<double>(0.05, 0.95)) * dt);
-    }
-    return times;
-}
-
-bool is_knot(double t, double t0, double dt) {
-    const double s = (t - t0) / dt;
-    return s == std::floor(s);
-}
-
-template <std::size_t K>
-using blocks = std::array<matrix6<double>, K>;
-
-template <std::size_t K>
-matrix<double, 6, 6 * K> joined(const blocks<K>& b) {
-    matrix<double, 6, 6 * K> m{};
-    for (int k = 0; k < static_cast<int>(K); ++k)
-        set_block(m, 0, 6 * k, b[static_cast<std::size_t>(k)]);
-    return m;
-}
-
-template <std::size_t K>
 void check_against_differences(const control_points& set, double t0, double dt) {
     const std::vector<dq<double>>& points = set.points;
-    std::vector<dq<ld>> wide;
-    for (const dq<double>& x : points) wide.push_back(dq<ld>(x));
+    const std::vector<dq<ld>> wide = test::widened(points);
     const se3_bspline<double, K> spline(points, t0, dt);
     const se3_bspline<ld, K> wide_spline(wide, static_cast<ld>(t0), static_cast<ld>(dt));
     const std::string order = "K=" + std::to_string(K) + " " + set.name + " ";
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 4)) {
         INFO(order << "t = " << t);
         blocks<K> Jx{}, Jv{}, Ja{}, Jj{};
         const se3_bspline_sample<double> s = spline.evaluate(t, &Jx, &Jv, &Ja, &Jj);
@@ -128,11 +96,12 @@ void check_against_differences(const control_points& set, double t0, double dt) 
         const ld h = 1e-3L * dt;
         const auto at = [&](ld step) { return wide_spline.evaluate(tl + step); };
         const auto velocity = test::time_derivative<6>(
-            [&](ld step) { return arr(se3::minus(at(step).motion, base.motion)); }, h, side);
-        const auto acceleration =
-            test::time_derivative<6>([&](ld step) { return arr(at(step).velocity); }, h, side);
-        const auto jerk =
-            test::time_derivative<6>([&](ld step) { return arr(at(step).acceleration); }, h, side);
+            [&](ld step) { return test::components(se3::minus(at(step).motion, base.motion)); }, h,
+            side);
+        const auto acceleration = test::time_derivative<6>(
+            [&](ld step) { return test::components(at(step).velocity); }, h, side);
+        const auto jerk = test::time_derivative<6>(
+            [&](ld step) { return test::components(at(step).acceleration); }, h, side);
         // Measured worst over the orders and point sets: twist 2.0e-13, derivative 4.0e-14, second
         // derivative 9.3e-15.
         worst.check(order + "twist", relative_error(column(s.velocity), velocity));
@@ -154,25 +123,28 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             set_block(rx, 0, c,
                       central_differences<6, 6>(
                           [&](const arr6& d) {
-                              return arr(se3::minus(perturbed(d).motion, base.motion));
+                              return test::components(se3::minus(perturbed(d).motion, base.motion));
                           },
                           step));
-            set_block(rv, 0, c,
-                      central_differences<6, 6>(
-                          [&](const arr6& d) { return arr(perturbed(d).velocity); }, step));
-            set_block(ra, 0, c,
-                      central_differences<6, 6>(
-                          [&](const arr6& d) { return arr(perturbed(d).acceleration); }, step));
-            set_block(rj, 0, c,
-                      central_differences<6, 6>(
-                          [&](const arr6& d) { return arr(perturbed(d).jerk); }, step));
+            set_block(
+                rv, 0, c,
+                central_differences<6, 6>(
+                    [&](const arr6& d) { return test::components(perturbed(d).velocity); }, step));
+            set_block(
+                ra, 0, c,
+                central_differences<6, 6>(
+                    [&](const arr6& d) { return test::components(perturbed(d).acceleration); },
+                    step));
+            set_block(
+                rj, 0, c,
+                central_differences<6, 6>(
+                    [&](const arr6& d) { return test::components(perturbed(d).jerk); }, step));
         }
         // Measured worst: motion 1.2e-14, twist 4.2e-15, derivative 3.2e-15, second 4.2e-15.
-        worst.check(order + "J motion / points", relative_error(joined<K>(Jx), rx));
-        worst.check(order + "J twist / points", relative_error(joined<K>(Jv), rv));
-        worst.check(order + "J twist derivative / points", relative_error(joined<K>(Ja), ra));
-        worst.check(order + "J twist second derivative / points",
-                    relative_error(joined<K>(Jj), rj));
+        worst.check(order + "J motion / points", relative_error(joined(Jx), rx));
+        worst.check(order + "J twist / points", relative_error(joined(Jv), rv));
+        worst.check(order + "J twist derivative / points", relative_error(joined(Ja), ra));
+        worst.check(order + "J twist second derivative / points", relative_error(joined(Jj), rj));
     }
 }
 
@@ -190,60 +162,11 @@ TEST_CASE(
 
 namespace {
 
-template <int N>
-using jet = ceres::Jet<double, N>;
-template <int N>
-jet<N> variable(int i, jet<N>*) {
-    return jet<N>(0.0, i);
-}
-template <int N>
-double value_of(const jet<N>& x) {
-    return x.a;
-}
-template <int N>
-double partial(const jet<N>& x, int i) {
-    return x.v[i];
-}
+using quat::test::jet;
+using quat::test::max_relative;
+using quat::test::partials;
 template <std::size_t N>
 using dual = test::dual<double, N>;
-template <std::size_t N>
-dual<N> variable(int i, dual<N>*) {
-    return dual<N>::variable(0.0, static_cast<std::size_t>(i));
-}
-template <std::size_t N>
-double value_of(const dual<N>& x) {
-    return x.value;
-}
-template <std::size_t N>
-double partial(const dual<N>& x, int i) {
-    return x.d[static_cast<std::size_t>(i)];
-}
-
-template <int C>
-double max_relative(const matrix<double, 6, C>& a, const matrix<double, 6, C>& b) {
-    double error = 0, largest = 0;
-    for (int r = 0; r < 6; ++r)
-        for (int c = 0; c < C; ++c) {
-            if (!std::isfinite(a(r, c))) return std::numeric_limits<double>::infinity();
-            error = std::max(error, std::abs(a(r, c) - b(r, c)));
-            largest = std::max(largest, std::abs(b(r, c)));
-        }
-    return largest > 0 ? error / largest : error;
-}
-
-template <int C, class S>
-matrix<double, 6, C> partials(const twist<S>& t) {
-    matrix<double, 6, C> m{};
-    const S e[6] = {t.linear.x, t.linear.y, t.linear.z, t.angular.x, t.angular.y, t.angular.z};
-    for (int r = 0; r < 6; ++r)
-        for (int c = 0; c < C; ++c) m(r, c) = partial(e[r], c);
-    return m;
-}
-
-template <class S>
-quaternion<S> value_part(const quaternion<S>& q) {
-    return {S(value_of(q.w)), S(value_of(q.x)), S(value_of(q.y)), S(value_of(q.z))};
-}
 
 /// Forward-mode derivatives (6K partials) through evaluate, point first + m moved by the first-order
 /// right plus X ((1, omega / 2) + eps (0, rho / 2)), against the analytic Jacobians.
@@ -252,7 +175,7 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
     const std::vector<dq<double>>& points = set.points;
     const se3_bspline<double, K> spline(points, t0, dt);
     const std::string order = scalar + " K=" + std::to_string(K) + " " + set.name + " ";
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 4)) {
         INFO(order << "t = " << t);
         blocks<K> Jx{}, Jv{}, Ja{}, Jj{};
         const se3_bspline_sample<double> s = spline.evaluate(t, &Jx, &Jv, &Ja, &Jj);
@@ -262,38 +185,37 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
             dq<S>& x = moved[s.first + static_cast<std::size_t>(m)];
             const S half(0.5), zero(0), one(1);
             S v[6];
-            for (int i = 0; i < 6; ++i) v[i] = variable(6 * m + i, (S*)nullptr) * half;
+            for (int i = 0; i < 6; ++i) v[i] = test::variable(6 * m + i, (S*)nullptr) * half;
             x = x * dq<S>{{one, v[3], v[4], v[5]}, {zero, v[0], v[1], v[2]}};
         }
         const se3_bspline<S, K> through(moved, S(t0), S(dt));
         const se3_bspline_sample<S> d = through.evaluate(S(t));
-        const dq<S> value{value_part(d.motion.real), value_part(d.motion.dual)};
+        const dq<S> value{test::value_part(d.motion.real), test::value_part(d.motion.dual)};
         const dq<S> local = dq<S>{conjugate(value.real), conjugate(value.dual)} * d.motion;
         const S two(2);
         const twist<S> tangent{{local.dual.x * two, local.dual.y * two, local.dual.z * two},
                                {local.real.x * two, local.real.y * two, local.real.z * two}};
         // Measured worst over both scalars: motion 3.6e-15, twist 3.0e-15, derivative 1.2e-15,
         // second derivative 3.0e-15.
-        worst.check(order + "autodiff J motion",
-                    max_relative(joined<K>(Jx), partials<6 * K>(tangent)), 1e-13);
+        worst.check(order + "autodiff J motion", max_relative(joined(Jx), partials<6 * K>(tangent)),
+                    1e-13);
         worst.check(order + "autodiff J twist",
-                    max_relative(joined<K>(Jv), partials<6 * K>(d.velocity)), 1e-13);
+                    max_relative(joined(Jv), partials<6 * K>(d.velocity)), 1e-13);
         worst.check(order + "autodiff J twist derivative",
-                    max_relative(joined<K>(Ja), partials<6 * K>(d.acceleration)), 1e-13);
+                    max_relative(joined(Ja), partials<6 * K>(d.acceleration)), 1e-13);
         worst.check(order + "autodiff J twist second derivative",
-                    max_relative(joined<K>(Jj), partials<6 * K>(d.jerk)), 1e-13);
+                    max_relative(joined(Jj), partials<6 * K>(d.jerk)), 1e-13);
     }
 }
 
 template <std::size_t K>
 void check_against_textbook(const control_points& set, double t0, double dt) {
     const std::vector<dq<double>>& points = set.points;
-    std::vector<dq<ld>> wide;
-    for (const dq<double>& x : points) wide.push_back(dq<ld>(x));
+    const std::vector<dq<ld>> wide = test::widened(points);
     const se3_bspline<double, K> spline(points, t0, dt);
     const std::string order = "K=" + std::to_string(K) + " " + set.name + " ";
     constexpr double eps = std::numeric_limits<double>::epsilon();
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 4)) {
         INFO(order << "t = " << t);
         const se3_bspline_sample<double> s = spline.evaluate(t);
         const detail::knot_position<double> at =
@@ -302,8 +224,8 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
             wide.data() + at.segment,
             detail::cumulative_weights_at<ld, K>(static_cast<ld>(at.u), static_cast<ld>(dt)));
         const auto relative = [](const twist<double>& got, const twist<ld>& want) {
-            const arr6 g = arr(twist<ld>{vec3<ld>(got.linear), vec3<ld>(got.angular)}),
-                       w = arr(want);
+            const arr6 g = test::components(twist<ld>{vec3<ld>(got.linear), vec3<ld>(got.angular)}),
+                       w = test::components(want);
             ld error = 0, scale = 0;
             for (std::size_t i = 0; i < 6; ++i) {
                 error = std::max(error, std::abs(g[i] - w[i]));
@@ -311,7 +233,7 @@ void check_against_textbook(const control_points& set, double t0, double dt) {
             }
             return static_cast<double>(scale > 0 ? error / scale : error);
         };
-        const arr6 e = arr(se3::minus(dq<ld>(s.motion), r.value));
+        const arr6 e = test::components(se3::minus(dq<ld>(s.motion), r.value));
         const ld reach = std::max<ld>(1, norm(translation_of(r.value)));
         ld motion_error = 0;
         for (const ld c : e) motion_error = std::max(motion_error, std::abs(c));

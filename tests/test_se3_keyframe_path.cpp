@@ -33,16 +33,8 @@ TEMPLATE_TEST_CASE("se3_keyframe_path passes through its keyframes", "[se3_keyfr
                    double) {
     using T = TestType;
     quat::test::random_rotations random;
-    std::vector<T> times;
-    std::vector<dual_quaternion<T>> poses;
-    quat::test::keyframe_misses worst;
-    for (int n = 0; n < 50; ++n) {
-        quat::test::random_pose_keyframes(random, 2 + std::size_t(n % 30), 2.5, 1.0, 10.0, times,
-                                          poses);
-        const se3_keyframe_path<T> path(times, poses);
-        const quat::test::keyframe_misses m = quat::test::misses_at_keyframes(path, times, poses);
-        worst = {std::max(worst.angle, m.angle), std::max(worst.position, m.position)};
-    }
+    const quat::test::keyframe_misses worst =
+        quat::test::misses_over_random_sets<se3_keyframe_path, T>(random);
     // Measured: 0 rad and 2.1 eps (float), 0 rad and 1.8 eps (double).
     CHECK(worst.angle <= 4 * eps<T>);
     CHECK(worst.position <= 4 * eps<T>);
@@ -52,20 +44,10 @@ TEMPLATE_TEST_CASE("se3_keyframe_path's velocities and accelerations are continu
                    "[se3_keyframe_path]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
-    std::vector<T> times;
-    std::vector<dual_quaternion<T>> poses;
-    quat::test::jumps worst;
-    for (int n = 0; n < 200; ++n) {
-        quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 40), 2.5, 1.0, 10.0, times,
-                                          poses);
-        const std::optional<se3_keyframe_path<T>> path =
-            se3_keyframe_path<T>::try_make(times, poses);
-        REQUIRE(path);
-        const quat::test::jumps j = quat::test::jumps_at_keyframes(*path, times);
-        worst = {std::max(worst.velocity, j.velocity), std::max(worst.acceleration, j.acceleration),
-                 std::max(worst.angular_velocity, j.angular_velocity),
-                 std::max(worst.angular_acceleration, j.angular_acceleration)};
-    }
+    int made = 0;
+    const quat::test::jumps worst =
+        quat::test::jumps_over_random_sets<se3_keyframe_path, T>(random, 200, 40, 2.5, 10.0, made);
+    CHECK(made == 200);
     // Sets with rotation steps up to 2.5 rad and durations unequal by up to 10x. Measured
     // (velocity, acceleration, angular velocity, angular acceleration): 1.7e-13, 2.5e-13, 1.5e-13,
     // 5.3e-13 in double; 8.9e-5, 1.3e-4, 8.2e-5, 2.9e-4 in float (one float ulp of time moves
@@ -79,23 +61,8 @@ TEMPLATE_TEST_CASE("se3_keyframe_path's velocities and accelerations are continu
 
 TEST_CASE("se3_keyframe_path's rates are the derivatives of its poses", "[se3_keyframe_path]") {
     quat::test::random_rotations random;
-    std::vector<double> times;
-    std::vector<dual_quaternion<double>> poses;
-    quat::test::jumps worst;
-    for (int n = 0; n < 20; ++n) {
-        quat::test::random_pose_keyframes(random, 10, 2.0, 1.0, 5.0, times, poses);
-        const se3_keyframe_path<double> path(times, poses);
-        const se3_keyframe_path<long double> reference(
-            std::vector<long double>(times.begin(), times.end()),
-            quat::test::converted<long double>(poses));
-        std::vector<double> ts;
-        for (int k = 0; k < 50; ++k)
-            ts.push_back(random.uniform<double>(times.front(), times.back()));
-        const quat::test::jumps e = quat::test::derivative_errors(path, reference, ts, 1e-5L);
-        worst = {std::max(worst.velocity, e.velocity), std::max(worst.acceleration, e.acceleration),
-                 std::max(worst.angular_velocity, e.angular_velocity),
-                 std::max(worst.angular_acceleration, e.angular_acceleration)};
-    }
+    const quat::test::jumps worst =
+        quat::test::derivative_errors_over_random_sets<se3_keyframe_path>(random);
     // Central differences with h = 1e-5 s are O(h^2) and, in long double, round at about 1e-19 / h
     // (1e-9 for the second difference). Measured: 1.5e-7, 6.7e-8, 8.2e-8, 5.0e-7 (velocity,
     // acceleration, angular velocity, angular acceleration), truncation: jerks of 1e4 m/s^3.
@@ -322,15 +289,7 @@ TEST_CASE("se3_keyframe_path's edge rules", "[se3_keyframe_path][nan]") {
 TEST_CASE("se3_keyframe_path::evaluate gives the single values in any order of times",
           "[se3_keyframe_path]") {
     quat::test::random_rotations random;
-    std::vector<double> times;
-    std::vector<dual_quaternion<double>> poses;
-    quat::test::random_pose_keyframes(random, 30, 1.5, 1.0, 10.0, times, poses);
-    std::vector<double> ts;
-    for (int k = -20; k < 420; ++k)
-        ts.push_back(times.front() + (times.back() - times.front()) * k / 400.0);
-    ts.push_back(times[7]);
-    ts.push_back(times.back());
-    quat::test::check_batch(se3_keyframe_path<double>(times, poses), ts);
+    quat::test::check_batch<se3_keyframe_path>(random);
 }
 
 TEST_CASE("se3_keyframe_path is C2 with half-turn steps and durations unequal by 1000x",
@@ -340,22 +299,9 @@ TEST_CASE("se3_keyframe_path is C2 with half-turn steps and durations unequal by
     // rotation_spline documents for such sets). Measured jumps: 4.3e-12, 1.3e-11, 2.9e-12,
     // 8.6e-11 (velocity, acceleration, angular velocity, angular acceleration).
     quat::test::random_rotations random;
-    std::vector<double> times;
-    std::vector<dual_quaternion<double>> poses;
-    quat::test::jumps worst;
     int made = 0;
-    for (int n = 0; n < 300; ++n) {
-        quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 40), 3.14, 1.0, 1000.0, times,
-                                          poses);
-        const std::optional<se3_keyframe_path<double>> path =
-            se3_keyframe_path<double>::try_make(times, poses);
-        if (!path) continue;
-        ++made;
-        const quat::test::jumps j = quat::test::jumps_at_keyframes(*path, times);
-        worst = {std::max(worst.velocity, j.velocity), std::max(worst.acceleration, j.acceleration),
-                 std::max(worst.angular_velocity, j.angular_velocity),
-                 std::max(worst.angular_acceleration, j.angular_acceleration)};
-    }
+    const quat::test::jumps worst = quat::test::jumps_over_random_sets<se3_keyframe_path, double>(
+        random, 300, 40, 3.14, 1000.0, made);
     CHECK(made >= 280);
     CHECK(worst.velocity <= 1e-9);
     CHECK(worst.acceleration <= 1e-9);

@@ -24,9 +24,9 @@
 #include <quat/quat.hpp>
 #include <quat/trajectory/so3_bspline.hpp>
 
+#include "support/bspline_checks.hpp"
 #include "support/bspline_reference.hpp"
 #include "support/catch.hpp"
-#include "support/dual_number.hpp"
 #include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
@@ -36,21 +36,20 @@ namespace {
 using namespace quat;
 using ld = long double;
 using quat::test::central_differences;
+using quat::test::check_times;
+using quat::test::is_knot;
+using quat::test::joined;
 using quat::test::relative_error;
+using control_points = quat::test::control_points<quaternion<double>>;
+template <std::size_t K>
+using blocks = quat::test::blocks<3, K>;
 
 quat::test::worst_errors worst("so3_bspline");
 
 constexpr double pi = 3.14159265358979323846;
 
-std::array<ld, 3> arr(const vec3<ld>& v) { return {v.x, v.y, v.z}; }
 vec3<ld> vec(const std::array<ld, 3>& a) { return {a[0], a[1], a[2]}; }
 matrix<double, 3, 1> to_column(const vec3<double>& v) { return {{{v.x}, {v.y}, {v.z}}}; }
-
-/// Control points of one kind, with the name the checks report them by.
-struct control_points {
-    std::string name;
-    std::vector<quaternion<double>> points;
-};
 
 /// Random steps up to 1 rad with random signs; steps below 1e-7 rad; steps of pi - 1e-2 rad.
 std::vector<control_points> point_sets(std::size_t count) {
@@ -72,47 +71,13 @@ std::vector<control_points> point_sets(std::size_t count) {
     return sets;
 }
 
-/// Times to check: every knot from t0 to the end, and random times inside segments (at least dt/20
-/// from a knot, so that central differences stay inside one segment).
-template <std::size_t K>
-std::vector<double> check_times(std::size_t count, double t0, double dt) {
-    test::random_rotations random(7);
-    std::vector<double> times;
-    const std::size_t segments = count - K + 1;
-    for (std::size_t i = 0; i <= segments; ++i) times.push_back(t0 + static_cast<double>(i) * dt);
-    for (int n = 0; n < 6; ++n) {
-        const double i = std::floor(random.uniform<double>(0, static_cast<double>(segments)));
-        times.push_back(t0 + (i + random.uniform<double>(0.05, 0.95)) * dt);
-    }
-    return times;
-}
-
-/// True when t is a knot of the spline (where one-sided differences are needed).
-bool is_knot(double t, double t0, double dt) {
-    const double s = (t - t0) / dt;
-    return s == std::floor(s);
-}
-
-template <std::size_t K>
-using blocks = std::array<matrix3<double>, K>;
-
-/// The 3 x 3K matrix of K blocks.
-template <std::size_t K>
-matrix<double, 3, 3 * K> joined(const blocks<K>& b) {
-    matrix<double, 3, 3 * K> m{};
-    for (int k = 0; k < static_cast<int>(K); ++k)
-        set_block(m, 0, 3 * k, b[static_cast<std::size_t>(k)]);
-    return m;
-}
-
 template <std::size_t K>
 void check_against_differences(const control_points& set, double t0, double dt) {
     const std::vector<quaternion<double>>& points = set.points;
-    std::vector<quaternion<ld>> wide;
-    for (const quaternion<double>& q : points) wide.push_back(quaternion<ld>(q));
+    const std::vector<quaternion<ld>> wide = test::widened(points);
     const so3_bspline<double, K> spline(points, t0, dt);
     const std::string order = "K=" + std::to_string(K) + " " + set.name + " ";
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 6)) {
         INFO(order << "t = " << t);
         blocks<K> Jq{}, Jw{}, Ja{}, Jj{};
         const so3_bspline_sample<double> s = spline.evaluate(t, &Jq, &Jw, &Ja, &Jj);
@@ -128,13 +93,18 @@ void check_against_differences(const control_points& set, double t0, double dt) 
         const ld h = 1e-3L * dt;
         const auto velocity = test::time_derivative<3>(
             [&](ld step) {
-                return arr(so3::minus(at(wide_spline, tl + step).rotation, base.rotation));
+                return test::components(
+                    so3::minus(at(wide_spline, tl + step).rotation, base.rotation));
             },
             h, side);
         const auto acceleration = test::time_derivative<3>(
-            [&](ld step) { return arr(at(wide_spline, tl + step).angular_velocity); }, h, side);
+            [&](ld step) { return test::components(at(wide_spline, tl + step).angular_velocity); },
+            h, side);
         const auto jerk = test::time_derivative<3>(
-            [&](ld step) { return arr(at(wide_spline, tl + step).angular_acceleration); }, h, side);
+            [&](ld step) {
+                return test::components(at(wide_spline, tl + step).angular_acceleration);
+            },
+            h, side);
         // Measured worst over the orders and point sets: velocity 1.9e-13, acceleration 4.3e-14,
         // jerk 3.1e-14 (the one-sided differences at knots are the least accurate references).
         worst.check(order + "angular velocity",
@@ -156,17 +126,24 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             const ld step = 1e-3L;
             const auto jq = central_differences<3, 3>(
                 [&](const std::array<ld, 3>& d) {
-                    return arr(so3::minus(perturbed(d).rotation, base.rotation));
+                    return test::components(so3::minus(perturbed(d).rotation, base.rotation));
                 },
                 step);
             const auto jw = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_velocity); },
+                [&](const std::array<ld, 3>& d) {
+                    return test::components(perturbed(d).angular_velocity);
+                },
                 step);
             const auto ja = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_acceleration); },
+                [&](const std::array<ld, 3>& d) {
+                    return test::components(perturbed(d).angular_acceleration);
+                },
                 step);
             const auto jj = central_differences<3, 3>(
-                [&](const std::array<ld, 3>& d) { return arr(perturbed(d).angular_jerk); }, step);
+                [&](const std::array<ld, 3>& d) {
+                    return test::components(perturbed(d).angular_jerk);
+                },
+                step);
             const int c = 3 * static_cast<int>(m);
             set_block(rq, 0, c, jq);
             set_block(rw, 0, c, jw);
@@ -174,10 +151,10 @@ void check_against_differences(const control_points& set, double t0, double dt) 
             set_block(rj, 0, c, jj);
         }
         // Measured worst: rotation 4.2e-15, velocity 2.3e-15, acceleration 2.5e-15, jerk 2.5e-15.
-        worst.check(order + "J rotation / points", relative_error(joined<K>(Jq), rq));
-        worst.check(order + "J angular velocity / points", relative_error(joined<K>(Jw), rw));
-        worst.check(order + "J angular acceleration / points", relative_error(joined<K>(Ja), ra));
-        worst.check(order + "J angular jerk / points", relative_error(joined<K>(Jj), rj));
+        worst.check(order + "J rotation / points", relative_error(joined(Jq), rq));
+        worst.check(order + "J angular velocity / points", relative_error(joined(Jw), rw));
+        worst.check(order + "J angular acceleration / points", relative_error(joined(Ja), ra));
+        worst.check(order + "J angular jerk / points", relative_error(joined(Jj), rj));
     }
 }
 
@@ -195,68 +172,11 @@ TEST_CASE(
 
 namespace {
 
-// Forward-mode scalars: a constant, variable i, the value and partial i.
-template <int N>
-using jet = ceres::Jet<double, N>;
-template <int N>
-jet<N> constant(double v, jet<N>*) {
-    return jet<N>(v);
-}
-template <int N>
-jet<N> variable(double v, int i, jet<N>*) {
-    return jet<N>(v, i);
-}
-template <int N>
-double value_of(const jet<N>& x) {
-    return x.a;
-}
-template <int N>
-double partial(const jet<N>& x, int i) {
-    return x.v[i];
-}
+using quat::test::jet;
+using quat::test::max_relative;
+using quat::test::partials;
 template <std::size_t N>
 using dual = test::dual<double, N>;
-template <std::size_t N>
-dual<N> constant(double v, dual<N>*) {
-    return dual<N>(v);
-}
-template <std::size_t N>
-dual<N> variable(double v, int i, dual<N>*) {
-    return dual<N>::variable(v, static_cast<std::size_t>(i));
-}
-template <std::size_t N>
-double value_of(const dual<N>& x) {
-    return x.value;
-}
-template <std::size_t N>
-double partial(const dual<N>& x, int i) {
-    return x.d[static_cast<std::size_t>(i)];
-}
-
-/// max |a - b| / max |b| over the 3 x C entries.
-template <int C>
-double max_relative(const matrix<double, 3, C>& a, const matrix<double, 3, C>& b) {
-    double error = 0, largest = 0;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < C; ++c) {
-            if (!std::isfinite(a(r, c))) return std::numeric_limits<double>::infinity();
-            error = std::max(error, std::abs(a(r, c) - b(r, c)));
-            largest = std::max(largest, std::abs(b(r, c)));
-        }
-    return largest > 0 ? error / largest : error;
-}
-
-/// The 3 x C partials of a vector of forward-mode scalars.
-template <int C, class S>
-matrix<double, 3, C> partials(const vec3<S>& v) {
-    matrix<double, 3, C> m{};
-    for (int c = 0; c < C; ++c) {
-        m(0, c) = partial(v.x, c);
-        m(1, c) = partial(v.y, c);
-        m(2, c) = partial(v.z, c);
-    }
-    return m;
-}
 
 /// Forward-mode derivatives (S with 3K partials) through evaluate, each point first + m moved by
 /// q (1, delta_m / 2), the first-order right plus, against the analytic Jacobians.
@@ -265,38 +185,35 @@ void check_autodiff(const control_points& set, double t0, double dt, const std::
     const std::vector<quaternion<double>>& points = set.points;
     const so3_bspline<double, K> spline(points, t0, dt);
     const std::string order = scalar + " K=" + std::to_string(K) + " " + set.name + " ";
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 6)) {
         INFO(order << "t = " << t);
         blocks<K> Jq{}, Jw{}, Ja{}, Jj{};
         const so3_bspline_sample<double> s = spline.evaluate(t, &Jq, &Jw, &Ja, &Jj);
         std::vector<quaternion<S>> moved;
-        for (const quaternion<double>& q : points)
-            moved.push_back({constant(q.w, (S*)nullptr), constant(q.x, (S*)nullptr),
-                             constant(q.y, (S*)nullptr), constant(q.z, (S*)nullptr)});
+        for (const quaternion<double>& q : points) moved.push_back(quaternion<S>(q));
         for (int m = 0; m < static_cast<int>(K); ++m) {
             quaternion<S>& q = moved[s.first + static_cast<std::size_t>(m)];
             const S half(0.5), one(1);
-            q = q * quaternion<S>{one, variable(0, 3 * m, (S*)nullptr) * half,
-                                  variable(0, 3 * m + 1, (S*)nullptr) * half,
-                                  variable(0, 3 * m + 2, (S*)nullptr) * half};
+            q = q * quaternion<S>{one, test::variable(3 * m, (S*)nullptr) * half,
+                                  test::variable(3 * m + 1, (S*)nullptr) * half,
+                                  test::variable(3 * m + 2, (S*)nullptr) * half};
         }
         const so3_bspline<S, K> through(moved, S(t0), S(dt));
         const so3_bspline_sample<S> d = through.evaluate(S(t));
-        const quaternion<S> value{S(value_of(d.rotation.w)), S(value_of(d.rotation.x)),
-                                  S(value_of(d.rotation.y)), S(value_of(d.rotation.z))};
+        const quaternion<S> value = test::value_part(d.rotation);
         const quaternion<S> local =
             conjugate(value) * d.rotation;  // (1, tangent / 2) to first order
         const vec3<S> tangent{local.x * S(2), local.y * S(2), local.z * S(2)};
         // Measured worst over both scalars: rotation 1.5e-15, velocity 1.3e-15, acceleration 1.6e-15,
         // jerk 2.3e-15.
         worst.check(order + "autodiff J rotation",
-                    max_relative(joined<K>(Jq), partials<3 * K>(tangent)), 1e-13);
+                    max_relative(joined(Jq), partials<3 * K>(tangent)), 1e-13);
         worst.check(order + "autodiff J angular velocity",
-                    max_relative(joined<K>(Jw), partials<3 * K>(d.angular_velocity)), 1e-13);
+                    max_relative(joined(Jw), partials<3 * K>(d.angular_velocity)), 1e-13);
         worst.check(order + "autodiff J angular acceleration",
-                    max_relative(joined<K>(Ja), partials<3 * K>(d.angular_acceleration)), 1e-13);
+                    max_relative(joined(Ja), partials<3 * K>(d.angular_acceleration)), 1e-13);
         worst.check(order + "autodiff J angular jerk",
-                    max_relative(joined<K>(Jj), partials<3 * K>(d.angular_jerk)), 1e-13);
+                    max_relative(joined(Jj), partials<3 * K>(d.angular_jerk)), 1e-13);
     }
 }
 
@@ -325,20 +242,18 @@ TEST_CASE(
         INFO("t = " << t);
         const so3_bspline_sample<double> s = spline.evaluate(t);
         const so3_bspline_sample<jet<1>> d = through.evaluate(jet<1>(t, 0));
-        const quaternion<jet<1>> value{jet<1>(d.rotation.w.a), jet<1>(d.rotation.x.a),
-                                       jet<1>(d.rotation.y.a), jet<1>(d.rotation.z.a)};
+        const quaternion<jet<1>> value = test::value_part(d.rotation);
         const quaternion<jet<1>> local = conjugate(value) * d.rotation;
         const vec3<jet<1>> w{local.x * 2.0, local.y * 2.0, local.z * 2.0};
         const auto column = [](const vec3<double>& v) { return to_column(v); };
         // Measured worst: velocity 6.0e-16, acceleration 3.6e-16, jerk 6.7e-16.
         worst.check("Jet time: angular velocity",
-                    max_relative<1>(partials<1>(w), column(s.angular_velocity)), 1e-14);
-        worst.check(
-            "Jet time: angular acceleration",
-            max_relative<1>(partials<1>(d.angular_velocity), column(s.angular_acceleration)),
-            1e-14);
+                    max_relative(partials<1>(w), column(s.angular_velocity)), 1e-14);
+        worst.check("Jet time: angular acceleration",
+                    max_relative(partials<1>(d.angular_velocity), column(s.angular_acceleration)),
+                    1e-14);
         worst.check("Jet time: angular jerk",
-                    max_relative<1>(partials<1>(d.angular_acceleration), column(s.angular_jerk)),
+                    max_relative(partials<1>(d.angular_acceleration), column(s.angular_jerk)),
                     1e-14);
     }
 }
@@ -349,12 +264,11 @@ namespace {
 template <std::size_t K>
 void check_against_textbook(const control_points& set, double t0, double dt) {
     const std::vector<quaternion<double>>& points = set.points;
-    std::vector<quaternion<ld>> wide;
-    for (const quaternion<double>& q : points) wide.push_back(quaternion<ld>(q));
+    const std::vector<quaternion<ld>> wide = test::widened(points);
     const so3_bspline<double, K> spline(points, t0, dt);
     const std::string order = "K=" + std::to_string(K) + " " + set.name + " ";
     constexpr double eps = std::numeric_limits<double>::epsilon();
-    for (const double t : check_times<K>(points.size(), t0, dt)) {
+    for (const double t : check_times<K>(points.size(), t0, dt, 6)) {
         INFO(order << "t = " << t);
         const so3_bspline_sample<double> s = spline.evaluate(t);
         const detail::knot_position<double> at =

@@ -28,16 +28,8 @@ TEMPLATE_TEST_CASE("split_keyframe_path passes through its keyframes", "[split_k
                    float, double) {
     using T = TestType;
     quat::test::random_rotations random;
-    std::vector<T> times;
-    std::vector<dual_quaternion<T>> poses;
-    quat::test::keyframe_misses worst;
-    for (int n = 0; n < 50; ++n) {
-        quat::test::random_pose_keyframes(random, 2 + std::size_t(n % 30), 2.5, 1.0, 10.0, times,
-                                          poses);
-        const split_keyframe_path<T> path(times, poses);
-        const quat::test::keyframe_misses m = quat::test::misses_at_keyframes(path, times, poses);
-        worst = {std::max(worst.angle, m.angle), std::max(worst.position, m.position)};
-    }
+    const quat::test::keyframe_misses worst =
+        quat::test::misses_over_random_sets<split_keyframe_path, T>(random);
     // Measured: 2.5 eps (rotation: rotation_spline normalizes the normalized keyframe once more)
     // and 2.1 eps (position) in float, 2.5 and 1.8 eps in double.
     CHECK(worst.angle <= 4 * eps<T>);
@@ -48,20 +40,10 @@ TEMPLATE_TEST_CASE("split_keyframe_path's velocities and accelerations are conti
                    "[split_keyframe_path]", float, double) {
     using T = TestType;
     quat::test::random_rotations random;
-    std::vector<T> times;
-    std::vector<dual_quaternion<T>> poses;
-    quat::test::jumps worst;
-    for (int n = 0; n < 200; ++n) {
-        quat::test::random_pose_keyframes(random, 3 + std::size_t(n % 40), 2.5, 1.0, 10.0, times,
-                                          poses);
-        const std::optional<split_keyframe_path<T>> path =
-            split_keyframe_path<T>::try_make(times, poses);
-        REQUIRE(path);
-        const quat::test::jumps j = quat::test::jumps_at_keyframes(*path, times);
-        worst = {std::max(worst.velocity, j.velocity), std::max(worst.acceleration, j.acceleration),
-                 std::max(worst.angular_velocity, j.angular_velocity),
-                 std::max(worst.angular_acceleration, j.angular_acceleration)};
-    }
+    int made = 0;
+    const quat::test::jumps worst = quat::test::jumps_over_random_sets<split_keyframe_path, T>(
+        random, 200, 40, 2.5, 10.0, made);
+    CHECK(made == 200);
     // Measured (velocity, acceleration, angular velocity, angular acceleration): 1.9e-13, 1.7e-13,
     // 1.5e-13, 5.3e-13 in double; 1.0e-4, 9.1e-5, 8.2e-5, 2.9e-4 in float (one float ulp of time
     // moves these fast paths visibly).
@@ -74,23 +56,8 @@ TEMPLATE_TEST_CASE("split_keyframe_path's velocities and accelerations are conti
 
 TEST_CASE("split_keyframe_path's rates are the derivatives of its poses", "[split_keyframe_path]") {
     quat::test::random_rotations random;
-    std::vector<double> times;
-    std::vector<dual_quaternion<double>> poses;
-    quat::test::jumps worst;
-    for (int n = 0; n < 20; ++n) {
-        quat::test::random_pose_keyframes(random, 10, 2.0, 1.0, 5.0, times, poses);
-        const split_keyframe_path<double> path(times, poses);
-        const split_keyframe_path<long double> reference(
-            std::vector<long double>(times.begin(), times.end()),
-            quat::test::converted<long double>(poses));
-        std::vector<double> ts;
-        for (int k = 0; k < 50; ++k)
-            ts.push_back(random.uniform<double>(times.front(), times.back()));
-        const quat::test::jumps e = quat::test::derivative_errors(path, reference, ts, 1e-5L);
-        worst = {std::max(worst.velocity, e.velocity), std::max(worst.acceleration, e.acceleration),
-                 std::max(worst.angular_velocity, e.angular_velocity),
-                 std::max(worst.angular_acceleration, e.angular_acceleration)};
-    }
+    const quat::test::jumps worst =
+        quat::test::derivative_errors_over_random_sets<split_keyframe_path>(random);
     // h = 1e-5 s: O(h^2) truncation, long double rounding near 1e-19 / h^2 for the second
     // difference. Measured: 1.4e-7, 7.3e-9, 8.2e-8, 5.0e-7 (velocity, acceleration, angular
     // velocity, angular acceleration).
@@ -155,15 +122,7 @@ TEST_CASE("split_keyframe_path's edge rules", "[split_keyframe_path][nan]") {
 TEST_CASE("split_keyframe_path::evaluate gives the single values in any order of times",
           "[split_keyframe_path]") {
     quat::test::random_rotations random;
-    std::vector<double> times;
-    std::vector<dual_quaternion<double>> poses;
-    quat::test::random_pose_keyframes(random, 30, 1.5, 1.0, 10.0, times, poses);
-    std::vector<double> ts;
-    for (int k = -20; k < 420; ++k)
-        ts.push_back(times.front() + (times.back() - times.front()) * k / 400.0);
-    ts.push_back(times[7]);
-    ts.push_back(times.back());
-    quat::test::check_batch(split_keyframe_path<double>(times, poses), ts);
+    quat::test::check_batch<split_keyframe_path>(random);
 }
 
 TEST_CASE("split_keyframe_path takes times of another precision than its poses",

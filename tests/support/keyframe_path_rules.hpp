@@ -1,4 +1,5 @@
-// The edge rules both keyframe paths of quat/trajectory share, as checks templated on the path.
+// The rules both keyframe paths of quat/trajectory share, as checks and measures templated on the
+// path: over random keyframe sets, at the edges of their domain, and for batches.
 #pragma once
 
 #include <algorithm>
@@ -117,24 +118,90 @@ void check_edge_rules() {
 #endif
 }
 
-/// evaluate gives what single calls give, for poses and states, in any order of times.
-template <class Path>
-void check_batch(const Path& path, std::vector<double> ts) {
+/// evaluate gives what single calls give, for poses and states, in any order of times: 30 random
+/// keyframes, 440 times from before the first to after the last, a keyframe and the end.
+template <template <class> class Path>
+void check_batch(random_rotations& random) {
+    std::vector<double> times, ts;
+    std::vector<dual_quaternion<double>> poses;
+    random_pose_keyframes(random, 30, 1.5, 1.0, 10.0, times, poses);
+    for (int k = -20; k < 420; ++k)
+        ts.push_back(times.front() + (times.back() - times.front()) * k / 400.0);
+    ts.push_back(times[7]);
+    ts.push_back(times.back());
+    const Path<double> path(times, poses);
     for (int pass = 0; pass < 2; ++pass) {
-        std::vector<dual_quaternion<double>> poses(ts.size());
+        std::vector<dual_quaternion<double>> batch_poses(ts.size());
         std::vector<keyframe_path_state<double>> states(ts.size());
-        path.evaluate(ts, poses);
+        path.evaluate(ts, batch_poses);
         path.evaluate(ts, states);
         bool same = true;
         for (std::size_t k = 0; k < ts.size(); ++k) {
             const keyframe_path_state<double> s = path.state(ts[k]);
-            same = same && poses[k] == path(ts[k]) && states[k].pose == s.pose &&
+            same = same && batch_poses[k] == path(ts[k]) && states[k].pose == s.pose &&
                    states[k].velocity == s.velocity && states[k].acceleration == s.acceleration &&
                    states[k].body_angular_acceleration == s.body_angular_acceleration;
         }
         CHECK(same);
         std::reverse(ts.begin(), ts.end());
     }
+}
+
+/// The worst misses at the keyframes over 50 random sets of 2 to 31 keyframes (rotation steps up
+/// to 2.5 rad, durations unequal by up to 10x).
+template <template <class> class Path, class T>
+keyframe_misses misses_over_random_sets(random_rotations& random) {
+    std::vector<T> times;
+    std::vector<dual_quaternion<T>> poses;
+    keyframe_misses worst;
+    for (int n = 0; n < 50; ++n) {
+        random_pose_keyframes(random, 2 + std::size_t(n % 30), 2.5, 1.0, 10.0, times, poses);
+        const keyframe_misses m = misses_at_keyframes(Path<T>(times, poses), times, poses);
+        worst = {std::max(worst.angle, m.angle), std::max(worst.position, m.position)};
+    }
+    return worst;
+}
+
+/// The worst jumps at the inner keyframes over `sets` random sets of 3 to 2 + `sizes` keyframes
+/// (rotation steps up to `max_angle` rad, durations unequal by up to `ratio`), and in `made` the
+/// number of sets try_make gave a path for (the others are skipped).
+template <template <class> class Path, class T>
+jumps jumps_over_random_sets(random_rotations& random, int sets, int sizes, double max_angle,
+                             double ratio, int& made) {
+    std::vector<T> times;
+    std::vector<dual_quaternion<T>> poses;
+    jumps worst;
+    made = 0;
+    for (int n = 0; n < sets; ++n) {
+        random_pose_keyframes(random, 3 + std::size_t(n % sizes), max_angle, 1.0, ratio, times,
+                              poses);
+        const std::optional<Path<T>> path = Path<T>::try_make(times, poses);
+        if (!path) continue;
+        ++made;
+        worst = worse(worst, jumps_at_keyframes(*path, times));
+    }
+    return worst;
+}
+
+/// The worst derivative_errors (h = 1e-5 s, against the same path in long double) at 50 random
+/// times of each of 20 random sets of 10 keyframes (rotation steps up to 2 rad, durations unequal
+/// by up to 5x).
+template <template <class> class Path>
+jumps derivative_errors_over_random_sets(random_rotations& random) {
+    std::vector<double> times;
+    std::vector<dual_quaternion<double>> poses;
+    jumps worst;
+    for (int n = 0; n < 20; ++n) {
+        random_pose_keyframes(random, 10, 2.0, 1.0, 5.0, times, poses);
+        const Path<double> path(times, poses);
+        const Path<long double> reference(std::vector<long double>(times.begin(), times.end()),
+                                          converted<long double>(poses));
+        std::vector<double> ts;
+        for (int k = 0; k < 50; ++k)
+            ts.push_back(random.uniform<double>(times.front(), times.back()));
+        worst = worse(worst, derivative_errors(path, reference, ts, 1e-5L));
+    }
+    return worst;
 }
 
 }  // namespace quat::test

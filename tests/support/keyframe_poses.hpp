@@ -86,6 +86,13 @@ struct jumps {
     double velocity = 0, acceleration = 0, angular_velocity = 0, angular_acceleration = 0;
 };
 
+/// The larger of each measure of a and b.
+inline jumps worse(const jumps& a, const jumps& b) {
+    return {std::max(a.velocity, b.velocity), std::max(a.acceleration, b.acceleration),
+            std::max(a.angular_velocity, b.angular_velocity),
+            std::max(a.angular_acceleration, b.angular_acceleration)};
+}
+
 template <class Path, class T>
 jumps jumps_at_keyframes(const Path& path, const std::vector<T>& times) {
     jumps worst;
