@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "../../detail/containers.hpp"
 #include "../../detail/math.hpp"
 #include "../../paths/detail/segments.hpp"
 #include "../../quaternion.hpp"
@@ -31,21 +32,44 @@ template <class T, class Time>
     return true;
 }
 
-/// The times converted to T, and each pose normalized and split into its rotation and the
-/// position of the body's origin.
-template <class T, class Time>
-void unpack_keyframe_poses(const Time* times, const dual_quaternion<T>* poses, std::size_t count,
-                           std::vector<T>& out_times, std::vector<quaternion<T>>& rotations,
-                           std::vector<vec3<T>>& positions) {
-    out_times.resize(count);
-    rotations.resize(count);
-    positions.resize(count);
+/// Keyframes unpacked: the times converted to T, the rotations and the body origin's positions.
+template <class T>
+struct keyframes {
+    std::vector<T> times;
+    std::vector<quaternion<T>> rotations;
+    std::vector<vec3<T>> positions;
+};
+
+/// The keyframes of containers (data() and size(), or C arrays) of `times` and of dual_quaternion
+/// `poses`, the first `count` of each, each pose normalized.
+template <class T, class Times, class Poses>
+[[nodiscard]] keyframes<T> unpack_keyframe_poses(const Times& times, const Poses& poses,
+                                                 std::size_t count) {
+    const auto* time = data_of(times);
+    const dual_quaternion<T>* pose = data_of(poses);
+    keyframes<T> k;
+    k.times.resize(count);
+    k.rotations.resize(count);
+    k.positions.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const dual_quaternion<T> pose = normalize(poses[i]);
-        out_times[i] = to_scalar<T>(times[i]);
-        rotations[i] = pose.real;
-        positions[i] = translation_of(pose);
+        const dual_quaternion<T> unit = normalize(pose[i]);
+        k.times[i] = to_scalar<T>(time[i]);
+        k.rotations[i] = unit.real;
+        k.positions[i] = translation_of(unit);
     }
+    return k;
+}
+
+/// The keyframes, or std::nullopt when there are fewer than two, the sizes differ or
+/// are_valid_keyframe_poses does not hold: the input checks of both keyframe paths' try_make.
+template <class T, class Times, class Poses>
+[[nodiscard]] std::optional<keyframes<T>> try_unpack_keyframe_poses(const Times& times,
+                                                                    const Poses& poses) {
+    const std::size_t count = size_of(times);
+    if (count < 2 || size_of(poses) != count) return std::nullopt;
+    const dual_quaternion<T>* pose = data_of(poses);
+    if (!are_valid_keyframe_poses(data_of(times), pose, count)) return std::nullopt;
+    return unpack_keyframe_poses<T>(times, poses, count);
 }
 
 }  // namespace detail
