@@ -18,7 +18,6 @@
 #include "../quaternion.hpp"
 #include "../rigid/dual_quaternion.hpp"
 #include "../vec3.hpp"
-#include "detail/evaluate_keyframe_path.hpp"
 #include "detail/hermite_cubic.hpp"
 #include "detail/keyframe_poses.hpp"
 #include "detail/left_jacobian_rates.hpp"

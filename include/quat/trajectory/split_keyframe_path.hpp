@@ -16,7 +16,6 @@
 #include "../quaternion.hpp"
 #include "../rigid/dual_quaternion.hpp"
 #include "../vec3.hpp"
-#include "detail/evaluate_keyframe_path.hpp"
 #include "detail/hermite_cubic.hpp"
 #include "detail/keyframe_poses.hpp"
 #include "keyframe_path_state.hpp"

@@ -36,75 +36,6 @@
 #include <vector>
 
 #include "../quat.hpp"
-// ---- begin quat/trajectory/detail/evaluate_keyframe_path.hpp ----
-// The loop behind both keyframe paths' evaluate(ts, out): each time's segment found from the last.
-#ifndef QUAT_TRAJECTORY_DETAIL_EVALUATE_KEYFRAME_PATH_HPP_INCLUDED
-#define QUAT_TRAJECTORY_DETAIL_EVALUATE_KEYFRAME_PATH_HPP_INCLUDED
-
-#include <cstddef>
-#include <type_traits>
-#include <vector>
-
-#include "../trajectory/keyframe_path_state.hpp"
-
-namespace quat {
-// ---- begin quat/detail/isa_namespace.inc ----
-// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
-// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
-// include guard): the one place the key is spelled out, because quat has no macros beyond its
-// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
-// covers.
-#if defined(__AVX512F__)
-inline namespace isa_avx512 {
-#elif defined(__AVX2__) && defined(__FMA__)
-inline namespace isa_avx2_fma {
-#elif defined(__AVX__) && defined(__FMA__)
-inline namespace isa_avx_fma {
-#elif defined(__AVX2__)
-inline namespace isa_avx2 {
-#elif defined(__AVX__)
-inline namespace isa_avx {
-#elif defined(__SSE4_1__)
-inline namespace isa_sse4 {
-#elif defined(__SSE__) || defined(_M_X64)
-inline namespace isa_sse {
-#else
-inline namespace isa_generic {
-#endif
-// ---- end quat/detail/isa_namespace.inc ----
-namespace detail {
-
-/// out[k] = pose_at(t, i) for an output of dual_quaternion<T>, state_at(t, i) for one of
-/// keyframe_path_state<T>, t = ts[k] converted to T and i its segment of the keyframe `times`, for
-/// the shorter of ts and out. The segment search starts from the last one, so that times in
-/// increasing order cost constant time each.
-template <class T, class Times, class Output, class PoseAt, class StateAt>
-void evaluate_keyframe_path(const std::vector<T>& times, const Times& ts, Output& out,
-                            const PoseAt& pose_at, const StateAt& state_at) noexcept {
-    using element = std::remove_pointer_t<decltype(data_of(out))>;
-    static_assert(std::is_same_v<element, dual_quaternion<T>> ||
-                      std::is_same_v<element, keyframe_path_state<T>>,
-                  "quat keyframe path evaluate: out holds dual_quaternion<T> or "
-                  "keyframe_path_state<T>");
-    const std::size_t count = size_of(ts) < size_of(out) ? size_of(ts) : size_of(out);
-    const auto* t = data_of(ts);
-    element* result = data_of(out);
-    std::size_t segment = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        const T time = to_scalar<T>(t[k]);
-        segment = segment_of(times.data(), times.size(), time, segment);
-        if constexpr (std::is_same_v<element, dual_quaternion<T>>)
-            result[k] = pose_at(time, segment);
-        else result[k] = state_at(time, segment);
-    }
-}
-
-}  // namespace detail
-}  // inline namespace isa_...
-}  // namespace quat
-
-#endif  // QUAT_TRAJECTORY_DETAIL_EVALUATE_KEYFRAME_PATH_HPP_INCLUDED
-// ---- end quat/trajectory/detail/evaluate_keyframe_path.hpp ----
 // ---- begin quat/trajectory/detail/hermite_cubic.hpp ----
 // One segment's cubic of a keyframe path, written in the segment's own time u in [0, 1], and the
 // clamped C2 cubic spline of positions that the split keyframe path moves its origin along.
@@ -259,14 +190,17 @@ void clamped_cubic_spline(const T* times, const vec3<T>* positions, std::size_t 
 #endif  // QUAT_TRAJECTORY_DETAIL_HERMITE_CUBIC_HPP_INCLUDED
 // ---- end quat/trajectory/detail/hermite_cubic.hpp ----
 // ---- begin quat/trajectory/detail/keyframe_poses.hpp ----
-// Checking and unpacking the (time, pose) keyframes both keyframe paths take.
+// Checking and unpacking the (time, pose) keyframes both keyframe paths take, and the loop behind
+// their evaluate(ts, out).
 #ifndef QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 #define QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
+#include "../trajectory/keyframe_path_state.hpp"
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -348,6 +282,31 @@ template <class T, class Times, class Poses>
     const dual_quaternion<T>* pose = data_of(poses);
     if (!are_valid_keyframe_poses(data_of(times), pose, count)) return std::nullopt;
     return unpack_keyframe_poses<T>(times, poses, count);
+}
+
+/// out[k] = pose_at(t, i) for an output of dual_quaternion<T>, state_at(t, i) for one of
+/// keyframe_path_state<T>, t = ts[k] converted to T and i its segment of the keyframe `times`, for
+/// the shorter of ts and out. The segment search starts from the last one, so that times in
+/// increasing order cost constant time each.
+template <class T, class Times, class Output, class PoseAt, class StateAt>
+void evaluate_keyframe_path(const std::vector<T>& times, const Times& ts, Output& out,
+                            const PoseAt& pose_at, const StateAt& state_at) noexcept {
+    using element = std::remove_pointer_t<decltype(data_of(out))>;
+    static_assert(std::is_same_v<element, dual_quaternion<T>> ||
+                      std::is_same_v<element, keyframe_path_state<T>>,
+                  "quat keyframe path evaluate: out holds dual_quaternion<T> or "
+                  "keyframe_path_state<T>");
+    const std::size_t count = size_of(ts) < size_of(out) ? size_of(ts) : size_of(out);
+    const auto* t = data_of(ts);
+    element* result = data_of(out);
+    std::size_t segment = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const T time = to_scalar<T>(t[k]);
+        segment = segment_of(times.data(), times.size(), time, segment);
+        if constexpr (std::is_same_v<element, dual_quaternion<T>>)
+            result[k] = pose_at(time, segment);
+        else result[k] = state_at(time, segment);
+    }
 }
 
 }  // namespace detail
