@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -59,18 +58,13 @@ public:
     template <class Times, class Poses>
     [[nodiscard]] static std::optional<split_keyframe_path> try_make(const Times& times,
                                                                      const Poses& poses) {
-        const std::size_t count = detail::size_of(times);
-        if (count < 2 || detail::size_of(poses) != count) return std::nullopt;
-        const dual_quaternion<T>* pose = detail::data_of(poses);
-        if (!detail::are_valid_keyframe_poses(detail::data_of(times), pose, count))
-            return std::nullopt;
-        keyframes k;
-        detail::unpack_keyframe_poses(detail::data_of(times), pose, count, k.times, k.rotations,
-                                      k.positions);
+        std::optional<detail::keyframes<T>> k = detail::try_unpack_keyframe_poses<T>(times, poses);
+        if (!k) return std::nullopt;
         std::optional<rotation_spline<T>> rotation =
-            rotation_spline<T>::try_make(k.times, k.rotations);
+            rotation_spline<T>::try_make(k->times, k->rotations);
         if (!rotation) return std::nullopt;
-        split_keyframe_path path(std::move(k.times), std::move(k.positions), std::move(*rotation));
+        split_keyframe_path path(std::move(k->times), std::move(k->positions),
+                                 std::move(*rotation));
         for (std::size_t j = 0; j + 1 < path.times_.size(); ++j) {
             const detail::cubic_bounds<T> b =
                 detail::cubic_bounds_of(path.cubics_[j], path.times_[j + 1] - path.times_[j]);
@@ -102,25 +96,14 @@ public:
     /// Allocates nothing; times in increasing order find their segments in constant time.
     template <class Times, class Output>
     void evaluate(const Times& ts, Output& out) const noexcept {
-        using element = std::remove_pointer_t<decltype(detail::data_of(out))>;
-        static_assert(std::is_same_v<element, dual_quaternion<T>> ||
-                          std::is_same_v<element, keyframe_path_state<T>>,
-                      "quat::split_keyframe_path::evaluate: out holds dual_quaternion<T> or "
-                      "keyframe_path_state<T>");
-        const std::size_t count = detail::size_of(ts);
-        QUAT_ASSERT(detail::size_of(out) == count,
+        QUAT_ASSERT(detail::size_of(out) == detail::size_of(ts),
                     "quat::split_keyframe_path::evaluate: ts and out differ in size");
-        const std::size_t filled = detail::size_of(out) < count ? detail::size_of(out) : count;
-        const auto* t = detail::data_of(ts);
-        element* result = detail::data_of(out);
-        std::size_t segment = 0;
-        for (std::size_t k = 0; k < filled; ++k) {
-            const T time = detail::to_scalar<T>(t[k]);
-            segment = segment_of(time, segment);
-            if constexpr (std::is_same_v<element, dual_quaternion<T>>)
-                result[k] = to_dual_quaternion(rotation_(time), position_at(time, segment));
-            else result[k] = state_at(time, segment);
-        }
+        detail::evaluate_keyframe_path(
+            times_, ts, out,
+            [this](T t, std::size_t i) {
+                return to_dual_quaternion(rotation_(t), position_at(t, i));
+            },
+            [this](T t, std::size_t i) { return state_at(t, i); });
     }
 
     /// The keyframe times, converted to T.
@@ -129,28 +112,19 @@ public:
     [[nodiscard]] const rotation_spline<T>& orientation() const noexcept { return rotation_; }
 
 private:
-    struct keyframes {
-        std::vector<T> times;
-        std::vector<quaternion<T>> rotations;
-        std::vector<vec3<T>> positions;
-    };
-
     template <class Times, class Poses>
-    static keyframes unpacked(const Times& times, const Poses& poses) {
+    static detail::keyframes<T> unpacked(const Times& times, const Poses& poses) {
         const std::size_t count = detail::size_of(times);
         QUAT_ASSERT(count >= 2 && detail::size_of(poses) == count,
                     "quat::split_keyframe_path: fewer than two keyframes, or times and poses "
                     "differ in size");
-        keyframes k;
-        if (count < 2 || detail::size_of(poses) != count) return k;
+        if (count < 2 || detail::size_of(poses) != count) return {};
         QUAT_ASSERT(detail::are_keyframe_times<T>(detail::data_of(times), count),
                     "quat::split_keyframe_path: times are not strictly increasing, or not finite");
-        detail::unpack_keyframe_poses(detail::data_of(times), detail::data_of(poses), count,
-                                      k.times, k.rotations, k.positions);
-        return k;
+        return detail::unpack_keyframe_poses<T>(times, poses, count);
     }
 
-    explicit split_keyframe_path(keyframes&& k)
+    explicit split_keyframe_path(detail::keyframes<T>&& k)
         : split_keyframe_path(std::move(k.times), std::move(k.positions),
                               rotation_spline<T>(k.times, k.rotations)) {}
 

@@ -85,34 +85,55 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-/// The base of the B-spline costs: `residuals` outputs, K blocks of `point_size` numbers, then
-/// `extra` blocks of the given sizes.
+/// The base of the B-spline costs: `residuals` outputs, K blocks of each size in `point_sizes` in
+/// turn (the segment's rotations or poses, then its positions where the spline has them), then
+/// `extra` blocks of the given sizes; it holds the measurement's offset into its segment and the
+/// knot spacing, and evaluates the spline over the point blocks there.
 template <std::size_t K>
 class bspline_cost_base : public ::ceres::CostFunction {
 protected:
-    bspline_cost_base(int residuals, int point_size, std::initializer_list<int> extra) {
+    bspline_cost_base(double offset, double dt, int residuals,
+                      std::initializer_list<int> point_sizes, std::initializer_list<int> extra)
+        : offset_(offset), dt_(dt) {
         set_num_residuals(residuals);
-        for (std::size_t m = 0; m < K; ++m) mutable_parameter_block_sizes()->push_back(point_size);
+        for (const int size : point_sizes)
+            for (std::size_t m = 0; m < K; ++m) mutable_parameter_block_sizes()->push_back(size);
         for (const int size : extra) mutable_parameter_block_sizes()->push_back(size);
     }
-    static std::array<quaternion<double>, K> rotations(double const* const* parameters) noexcept {
+    /// so3_bspline's evaluate(offset, J...) over the K quaternion blocks.
+    template <class... Jacobians>
+    so3_bspline_sample<double> so3_sample(double const* const* parameters,
+                                          Jacobians... J) const noexcept {
         std::array<quaternion<double>, K> q{};
         for (std::size_t m = 0; m < K; ++m) q[m] = quaternion_from_parameters(parameters[m]);
-        return q;
+        return so3_bspline<double, K>(q.data(), K, 0.0, dt_).evaluate(offset_, J...);
     }
-    static std::array<vec3<double>, K> positions(double const* const* parameters) noexcept {
-        std::array<vec3<double>, K> p{};
-        for (std::size_t m = 0; m < K; ++m) p[m] = vec3_from_parameters(parameters[m]);
-        return p;
-    }
-    static std::array<dual_quaternion<double>, K> poses(double const* const* parameters) noexcept {
+    /// se3_bspline's evaluate(offset, J...) over the K pose blocks.
+    template <class... Jacobians>
+    se3_bspline_sample<double> se3_sample(double const* const* parameters,
+                                          Jacobians... J) const noexcept {
         std::array<dual_quaternion<double>, K> x{};
         for (std::size_t m = 0; m < K; ++m) x[m] = pose_from_parameters(parameters[m]);
-        return x;
+        return se3_bspline<double, K>(x.data(), K, 0.0, dt_).evaluate(offset_, J...);
+    }
+    /// split_bspline's evaluate(offset, J...) over the K quaternion blocks and K position blocks.
+    template <class... Jacobians>
+    split_bspline_sample<double> split_sample(double const* const* parameters,
+                                              Jacobians... J) const noexcept {
+        std::array<quaternion<double>, K> q{};
+        std::array<vec3<double>, K> p{};
+        for (std::size_t m = 0; m < K; ++m) {
+            q[m] = quaternion_from_parameters(parameters[m]);
+            p[m] = vec3_from_parameters(parameters[K + m]);
+        }
+        return split_bspline<double, K>(q.data(), p.data(), K, 0.0, dt_).evaluate(offset_, J...);
     }
     static bool wants(double** jacobians, std::size_t block) noexcept {
         return jacobians != nullptr && jacobians[block] != nullptr;
     }
+
+private:
+    double offset_, dt_;
 };
 
 /// A 3-vector as a column.
@@ -132,9 +153,7 @@ public:
     /// weighted by sqrt_information (S above).
     so3_bspline_rotation_cost(double offset, double dt, const quaternion<double>& measured,
                               const matrix3<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(3, 4, {}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 3, {4}, {}),
           measured_(measured),
           sqrt_information_(sqrt_information) {}
 
@@ -143,11 +162,9 @@ public:
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto q = this->rotations(parameters);
         typename so3_bspline<double, K>::jacobian_blocks J_q{};
-        const bool any = jacobians != nullptr;
         const so3_bspline_sample<double> s =
-            so3_bspline<double, K>(q.data(), K, 0.0, dt_).evaluate(offset_, any ? &J_q : nullptr);
+            this->so3_sample(parameters, jacobians != nullptr ? &J_q : nullptr);
         matrix3<double> J_e_r{};
         const vec3<double> e = so3::minus(s.rotation, measured_, &J_e_r);
         write_parameters(sqrt_information_ * e, residuals);
@@ -159,7 +176,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     quaternion<double> measured_;
     matrix3<double> sqrt_information_;
 };
@@ -173,9 +189,7 @@ public:
     /// weighted by sqrt_information (S above).
     se3_bspline_pose_cost(double offset, double dt, const dual_quaternion<double>& measured,
                           const matrix6<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(6, 7, {}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 6, {7}, {}),
           measured_(measured),
           sqrt_information_(sqrt_information) {}
 
@@ -184,11 +198,9 @@ public:
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto x = this->poses(parameters);
         typename se3_bspline<double, K>::jacobian_blocks J_x{};
-        const bool any = jacobians != nullptr;
         const se3_bspline_sample<double> s =
-            se3_bspline<double, K>(x.data(), K, 0.0, dt_).evaluate(offset_, any ? &J_x : nullptr);
+            this->se3_sample(parameters, jacobians != nullptr ? &J_x : nullptr);
         matrix6<double> J_e_x{};
         const matrix<double, 6, 1> e =
             sqrt_information_ * se3::to_vector(se3::minus(s.motion, measured_, &J_e_x));
@@ -201,7 +213,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     dual_quaternion<double> measured_;
     matrix6<double> sqrt_information_;
 };
@@ -216,29 +227,21 @@ public:
     /// weighted by sqrt_information (S above).
     split_bspline_pose_cost(double offset, double dt, const dual_quaternion<double>& measured,
                             const matrix6<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(6, 4, {}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 6, {4, 3}, {}),
           measured_rotation_(rotation_of(measured)),
           measured_position_(translation_of(measured)),
-          sqrt_information_(sqrt_information) {
-        for (std::size_t m = 0; m < K; ++m) this->mutable_parameter_block_sizes()->push_back(3);
-    }
+          sqrt_information_(sqrt_information) {}
 
     /// The weighted residual from the blocks in parameters (the layout above); each jacobians[k]
     /// that is not null receives the row-major Jacobian with respect to block k. Always succeeds: a
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto q = this->rotations(parameters);
-        const auto p = this->positions(parameters + K);
         typename split_bspline<double, K>::jacobian_blocks J_q{};
         typename split_bspline<double, K>::jacobian_weights W_p{};
         const bool any = jacobians != nullptr;
-        const split_bspline_sample<double> s =
-            split_bspline<double, K>(q.data(), p.data(), K, 0.0, dt_)
-                .evaluate(offset_, any ? &J_q : nullptr, nullptr, nullptr, nullptr,
-                          any ? &W_p : nullptr);
+        const split_bspline_sample<double> s = this->split_sample(
+            parameters, any ? &J_q : nullptr, nullptr, nullptr, nullptr, any ? &W_p : nullptr);
         matrix3<double> J_e_r{};
         const vec3<double> angle = so3::minus(s.rotation, measured_rotation_, &J_e_r);
         const vec3<double> shift = s.position - measured_position_;
@@ -260,7 +263,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     quaternion<double> measured_rotation_;
     vec3<double> measured_position_;
     matrix6<double> sqrt_information_;
@@ -276,9 +278,7 @@ public:
     /// weighted by sqrt_information (S above).
     so3_bspline_gyroscope_cost(double offset, double dt, const vec3<double>& measured,
                                const matrix3<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(3, 4, {3}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 3, {4}, {3}),
           measured_(measured),
           sqrt_information_(sqrt_information) {}
 
@@ -287,11 +287,9 @@ public:
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto q = this->rotations(parameters);
         typename so3_bspline<double, K>::jacobian_blocks J_w{};
-        const bool any = jacobians != nullptr;
-        const so3_bspline_sample<double> s = so3_bspline<double, K>(q.data(), K, 0.0, dt_)
-                                                 .evaluate(offset_, nullptr, any ? &J_w : nullptr);
+        const so3_bspline_sample<double> s =
+            this->so3_sample(parameters, nullptr, jacobians != nullptr ? &J_w : nullptr);
         write_parameters(sqrt_information_ *
                              (s.angular_velocity + vec3_from_parameters(parameters[K]) - measured_),
                          residuals);
@@ -305,7 +303,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     vec3<double> measured_;
     matrix3<double> sqrt_information_;
 };
@@ -319,9 +316,7 @@ public:
     /// weighted by sqrt_information (S above).
     se3_bspline_gyroscope_cost(double offset, double dt, const vec3<double>& measured,
                                const matrix3<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(3, 7, {3}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 3, {7}, {3}),
           measured_(measured),
           sqrt_information_(sqrt_information) {}
 
@@ -330,11 +325,9 @@ public:
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto x = this->poses(parameters);
         typename se3_bspline<double, K>::jacobian_blocks J_v{};
-        const bool any = jacobians != nullptr;
-        const se3_bspline_sample<double> s = se3_bspline<double, K>(x.data(), K, 0.0, dt_)
-                                                 .evaluate(offset_, nullptr, any ? &J_v : nullptr);
+        const se3_bspline_sample<double> s =
+            this->se3_sample(parameters, nullptr, jacobians != nullptr ? &J_v : nullptr);
         write_parameters(sqrt_information_ *
                              (s.velocity.angular + vec3_from_parameters(parameters[K]) - measured_),
                          residuals);
@@ -348,7 +341,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     vec3<double> measured_;
     matrix3<double> sqrt_information_;
 };
@@ -365,30 +357,22 @@ public:
     split_bspline_accelerometer_cost(double offset, double dt, const vec3<double>& measured,
                                      const vec3<double>& gravity,
                                      const matrix3<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(3, 4, {}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 3, {4, 3}, {3}),
           measured_(measured),
           gravity_(gravity),
-          sqrt_information_(sqrt_information) {
-        for (std::size_t m = 0; m < K; ++m) this->mutable_parameter_block_sizes()->push_back(3);
-        this->mutable_parameter_block_sizes()->push_back(3);
-    }
+          sqrt_information_(sqrt_information) {}
 
     /// The weighted residual from the blocks in parameters (the layout above); each jacobians[k]
     /// that is not null receives the row-major Jacobian with respect to block k. Always succeeds: a
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto q = this->rotations(parameters);
-        const auto p = this->positions(parameters + K);
         typename split_bspline<double, K>::jacobian_blocks J_q{};
         typename split_bspline<double, K>::jacobian_weights W_a{};
         const bool any = jacobians != nullptr;
         const split_bspline_sample<double> s =
-            split_bspline<double, K>(q.data(), p.data(), K, 0.0, dt_)
-                .evaluate(offset_, any ? &J_q : nullptr, nullptr, nullptr, nullptr, nullptr,
-                          nullptr, any ? &W_a : nullptr);
+            this->split_sample(parameters, any ? &J_q : nullptr, nullptr, nullptr, nullptr, nullptr,
+                               nullptr, any ? &W_a : nullptr);
         const quaternion<double> inverse = conjugate(s.rotation);
         const vec3<double> body = rotate(inverse, s.linear_acceleration - gravity_);
         write_parameters(
@@ -409,7 +393,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     vec3<double> measured_, gravity_;
     matrix3<double> sqrt_information_;
 };
@@ -425,9 +408,7 @@ public:
     se3_bspline_accelerometer_cost(double offset, double dt, const vec3<double>& measured,
                                    const vec3<double>& gravity,
                                    const matrix3<double>& sqrt_information) noexcept
-        : detail::bspline_cost_base<K>(3, 7, {3}),
-          offset_(offset),
-          dt_(dt),
+        : detail::bspline_cost_base<K>(offset, dt, 3, {7}, {3}),
           measured_(measured),
           gravity_(gravity),
           sqrt_information_(sqrt_information) {}
@@ -437,13 +418,10 @@ public:
     /// non-finite input shows as a non-finite residual.
     bool Evaluate(double const* const* parameters, double* residuals,
                   double** jacobians) const override {
-        const auto x = this->poses(parameters);
         typename se3_bspline<double, K>::jacobian_blocks J_x{}, J_v{}, J_a{};
         const bool any = jacobians != nullptr;
-        const se3_bspline_sample<double> s =
-            se3_bspline<double, K>(x.data(), K, 0.0, dt_)
-                .evaluate(offset_, any ? &J_x : nullptr, any ? &J_v : nullptr,
-                          any ? &J_a : nullptr);
+        const se3_bspline_sample<double> s = this->se3_sample(
+            parameters, any ? &J_x : nullptr, any ? &J_v : nullptr, any ? &J_a : nullptr);
         const vec3<double> v = s.velocity.linear, w = s.velocity.angular;
         const vec3<double> gravity_body = rotate(conjugate(rotation_of(s.motion)), gravity_);
         write_parameters(sqrt_information_ * (s.acceleration.linear + cross(w, v) - gravity_body +
@@ -464,7 +442,6 @@ public:
     }
 
 private:
-    double offset_, dt_;
     vec3<double> measured_, gravity_;
     matrix3<double> sqrt_information_;
 };

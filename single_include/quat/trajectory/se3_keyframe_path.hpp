@@ -32,7 +32,6 @@
 
 #include <cstddef>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -191,14 +190,17 @@ void clamped_cubic_spline(const T* times, const vec3<T>* positions, std::size_t 
 #endif  // QUAT_TRAJECTORY_DETAIL_HERMITE_CUBIC_HPP_INCLUDED
 // ---- end quat/trajectory/detail/hermite_cubic.hpp ----
 // ---- begin quat/trajectory/detail/keyframe_poses.hpp ----
-// Checking and unpacking the (time, pose) keyframes both keyframe paths take.
+// Checking and unpacking the (time, pose) keyframes both keyframe paths take, and the loop behind
+// their evaluate(ts, out).
 #ifndef QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 #define QUAT_TRAJECTORY_DETAIL_KEYFRAME_POSES_HPP_INCLUDED
 
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
+#include "../trajectory/keyframe_path_state.hpp"
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -242,20 +244,68 @@ template <class T, class Time>
     return true;
 }
 
-/// The times converted to T, and each pose normalized and split into its rotation and the
-/// position of the body's origin.
-template <class T, class Time>
-void unpack_keyframe_poses(const Time* times, const dual_quaternion<T>* poses, std::size_t count,
-                           std::vector<T>& out_times, std::vector<quaternion<T>>& rotations,
-                           std::vector<vec3<T>>& positions) {
-    out_times.resize(count);
-    rotations.resize(count);
-    positions.resize(count);
+/// Keyframes unpacked: the times converted to T, the rotations and the body origin's positions.
+template <class T>
+struct keyframes {
+    std::vector<T> times;
+    std::vector<quaternion<T>> rotations;
+    std::vector<vec3<T>> positions;
+};
+
+/// The keyframes of containers (data() and size(), or C arrays) of `times` and of dual_quaternion
+/// `poses`, the first `count` of each, each pose normalized.
+template <class T, class Times, class Poses>
+[[nodiscard]] keyframes<T> unpack_keyframe_poses(const Times& times, const Poses& poses,
+                                                 std::size_t count) {
+    const auto* time = data_of(times);
+    const dual_quaternion<T>* pose = data_of(poses);
+    keyframes<T> k;
+    k.times.resize(count);
+    k.rotations.resize(count);
+    k.positions.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const dual_quaternion<T> pose = normalize(poses[i]);
-        out_times[i] = to_scalar<T>(times[i]);
-        rotations[i] = pose.real;
-        positions[i] = translation_of(pose);
+        const dual_quaternion<T> unit = normalize(pose[i]);
+        k.times[i] = to_scalar<T>(time[i]);
+        k.rotations[i] = unit.real;
+        k.positions[i] = translation_of(unit);
+    }
+    return k;
+}
+
+/// The keyframes, or std::nullopt when there are fewer than two, the sizes differ or
+/// are_valid_keyframe_poses does not hold: the input checks of both keyframe paths' try_make.
+template <class T, class Times, class Poses>
+[[nodiscard]] std::optional<keyframes<T>> try_unpack_keyframe_poses(const Times& times,
+                                                                    const Poses& poses) {
+    const std::size_t count = size_of(times);
+    if (count < 2 || size_of(poses) != count) return std::nullopt;
+    const dual_quaternion<T>* pose = data_of(poses);
+    if (!are_valid_keyframe_poses(data_of(times), pose, count)) return std::nullopt;
+    return unpack_keyframe_poses<T>(times, poses, count);
+}
+
+/// out[k] = pose_at(t, i) for an output of dual_quaternion<T>, state_at(t, i) for one of
+/// keyframe_path_state<T>, t = ts[k] converted to T and i its segment of the keyframe `times`, for
+/// the shorter of ts and out. The segment search starts from the last one, so that times in
+/// increasing order cost constant time each.
+template <class T, class Times, class Output, class PoseAt, class StateAt>
+void evaluate_keyframe_path(const std::vector<T>& times, const Times& ts, Output& out,
+                            const PoseAt& pose_at, const StateAt& state_at) noexcept {
+    using element = std::remove_pointer_t<decltype(data_of(out))>;
+    static_assert(std::is_same_v<element, dual_quaternion<T>> ||
+                      std::is_same_v<element, keyframe_path_state<T>>,
+                  "quat keyframe path evaluate: out holds dual_quaternion<T> or "
+                  "keyframe_path_state<T>");
+    const std::size_t count = size_of(ts) < size_of(out) ? size_of(ts) : size_of(out);
+    const auto* t = data_of(ts);
+    element* result = data_of(out);
+    std::size_t segment = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const T time = to_scalar<T>(t[k]);
+        segment = segment_of(times.data(), times.size(), time, segment);
+        if constexpr (std::is_same_v<element, dual_quaternion<T>>)
+            result[k] = pose_at(time, segment);
+        else result[k] = state_at(time, segment);
     }
 }
 
@@ -557,7 +607,6 @@ void se3_cubics(const std::vector<T>& times, const std::vector<quaternion<T>>& r
 
 #endif  // QUAT_TRAJECTORY_DETAIL_SE3_CUBICS_HPP_INCLUDED
 // ---- end quat/trajectory/detail/se3_cubics.hpp ----
-#include "../trajectory/keyframe_path_state.hpp"
 
 namespace quat {
 // ---- begin quat/detail/isa_namespace.inc ----
@@ -636,18 +685,12 @@ public:
     template <class Times, class Poses>
     [[nodiscard]] static std::optional<se3_keyframe_path> try_make(const Times& times,
                                                                    const Poses& poses) {
-        const std::size_t count = detail::size_of(times);
-        if (count < 2 || detail::size_of(poses) != count) return std::nullopt;
-        const dual_quaternion<T>* pose = detail::data_of(poses);
-        if (!detail::are_valid_keyframe_poses(detail::data_of(times), pose, count))
-            return std::nullopt;
-        keyframes k;
-        detail::unpack_keyframe_poses(detail::data_of(times), pose, count, k.times, k.rotations,
-                                      k.positions);
+        std::optional<detail::keyframes<T>> k = detail::try_unpack_keyframe_poses<T>(times, poses);
+        if (!k) return std::nullopt;
         const std::optional<rotation_spline<T>> rotation =
-            rotation_spline<T>::try_make(k.times, k.rotations);
+            rotation_spline<T>::try_make(k->times, k->rotations);
         if (!rotation) return std::nullopt;
-        se3_keyframe_path path(std::move(k), *rotation);
+        se3_keyframe_path path(std::move(*k), *rotation);
         return path.is_bounded() ? std::optional<se3_keyframe_path>(std::move(path)) : std::nullopt;
     }
 
@@ -671,59 +714,36 @@ public:
     /// Allocates nothing; times in increasing order find their segments in constant time.
     template <class Times, class Output>
     void evaluate(const Times& ts, Output& out) const noexcept {
-        using element = std::remove_pointer_t<decltype(detail::data_of(out))>;
-        static_assert(std::is_same_v<element, dual_quaternion<T>> ||
-                          std::is_same_v<element, keyframe_path_state<T>>,
-                      "quat::se3_keyframe_path::evaluate: out holds dual_quaternion<T> or "
-                      "keyframe_path_state<T>");
-        const std::size_t count = detail::size_of(ts);
-        QUAT_ASSERT(detail::size_of(out) == count,
+        QUAT_ASSERT(detail::size_of(out) == detail::size_of(ts),
                     "quat::se3_keyframe_path::evaluate: ts and out differ in size");
-        const std::size_t filled = detail::size_of(out) < count ? detail::size_of(out) : count;
-        const auto* t = detail::data_of(ts);
-        element* result = detail::data_of(out);
-        std::size_t segment = 0;
-        for (std::size_t k = 0; k < filled; ++k) {
-            const T time = detail::to_scalar<T>(t[k]);
-            segment = segment_of(time, segment);
-            if constexpr (std::is_same_v<element, dual_quaternion<T>>)
-                result[k] = pose_at(time, segment);
-            else result[k] = state_at(time, segment);
-        }
+        detail::evaluate_keyframe_path(
+            times_, ts, out, [this](T t, std::size_t i) { return pose_at(t, i); },
+            [this](T t, std::size_t i) { return state_at(t, i); });
     }
 
     /// The keyframe times, converted to T.
     [[nodiscard]] const std::vector<T>& times() const noexcept { return times_; }
 
 private:
-    struct keyframes {
-        std::vector<T> times;
-        std::vector<quaternion<T>> rotations;
-        std::vector<vec3<T>> positions;
-    };
-
     template <class Times, class Poses>
-    static keyframes unpacked(const Times& times, const Poses& poses) {
+    static detail::keyframes<T> unpacked(const Times& times, const Poses& poses) {
         const std::size_t count = detail::size_of(times);
         QUAT_ASSERT(count >= 2 && detail::size_of(poses) == count,
                     "quat::se3_keyframe_path: fewer than two keyframes, or times and poses "
                     "differ in size");
-        keyframes k;
-        if (count < 2 || detail::size_of(poses) != count) return k;
+        if (count < 2 || detail::size_of(poses) != count) return {};
         QUAT_ASSERT(detail::are_keyframe_times<T>(detail::data_of(times), count),
                     "quat::se3_keyframe_path: times are not strictly increasing, or not finite");
-        detail::unpack_keyframe_poses(detail::data_of(times), detail::data_of(poses), count,
-                                      k.times, k.rotations, k.positions);
-        return k;
+        return detail::unpack_keyframe_poses<T>(times, poses, count);
     }
 
-    explicit se3_keyframe_path(keyframes&& k) {
+    explicit se3_keyframe_path(detail::keyframes<T>&& k) {
         if (k.times.size() < 2) return;
         const rotation_spline<T> rotation(k.times, k.rotations);
         *this = se3_keyframe_path(std::move(k), rotation);
     }
 
-    se3_keyframe_path(keyframes&& k, const rotation_spline<T>& rotation)
+    se3_keyframe_path(detail::keyframes<T>&& k, const rotation_spline<T>& rotation)
         : times_(std::move(k.times)),
           rotations_(std::move(k.rotations)),
           positions_(std::move(k.positions)) {
