@@ -656,7 +656,7 @@ inline namespace isa_generic {
 /// cubic of its own: the origin's path does not swing when the body turns (a camera dollying in
 /// a straight line while it pans stays on the line, which here bends), at the price of depending
 /// on which point is the origin. Choose it when the keyframed position is the thing to follow.
-/// (J. Haarbach, T. Birdal, S. Ilic, "Survey of higher order rigid body motion interpolation
+/// (A. Haarbach, T. Birdal, S. Ilic, "Survey of higher order rigid body motion interpolation
 /// methods for keyframe animation and continuous-time trajectory estimation", 3DV 2018, compares
 /// the two families; the tests measure both cases.)
 ///
