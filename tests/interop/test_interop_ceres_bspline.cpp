@@ -116,8 +116,7 @@ struct reference {
 template <std::size_t K>
 void compare(const ceres::CostFunction& cost, const reference<K>& functor,
              std::vector<std::vector<double>>& blocks) {
-    ceres::DynamicAutoDiffCostFunction<reference<K>, 4> jet(new reference<K>(functor),
-                                                            ceres::DO_NOT_TAKE_OWNERSHIP);
+    ceres::DynamicAutoDiffCostFunction<reference<K>, 4> jet(new reference<K>(functor));
     for (const auto& b : blocks) jet.AddParameterBlock(static_cast<int>(b.size()));
     const int n = cost.num_residuals();
     jet.SetNumResiduals(n);
