@@ -567,9 +567,15 @@ struct spline_view {
     std::size_t count;
     T t0, dt;
 
+    /// False for a null pointer. Not asked during constant evaluation, where reading a null view
+    /// fails to compile anyway and where g++'s -fsanitize=null (it implies
+    /// -fno-delete-null-pointer-checks) refuses to compare an object's address with null.
+    [[nodiscard]] constexpr bool has_points() const noexcept {
+        return constant_evaluated() || points != nullptr;
+    }
     template <std::size_t K>
     [[nodiscard]] constexpr bool valid() const noexcept {
-        return points != nullptr && count >= K && dt > T(0) && is_finite(dt) && is_finite(t0);
+        return has_points() && count >= K && dt > T(0) && is_finite(dt) && is_finite(t0);
     }
     template <std::size_t K>
     [[nodiscard]] constexpr T end_time() const noexcept {
@@ -578,7 +584,7 @@ struct spline_view {
     }
     template <std::size_t K>
     [[nodiscard]] constexpr knot_position<T> locate(const T& t) const noexcept {
-        if (points == nullptr) return {0, quiet_nan<T>(), false};
+        if (!has_points()) return {0, quiet_nan<T>(), false};
         return spline_position<K>(t, t0, dt, count);
     }
     template <std::size_t K>
