@@ -294,7 +294,10 @@ void rotation_spline_cases() {
             if (!quat::try_normalize(q)) {
                 ++failures;
                 std::string listed;
-                for (const T t : times) listed += " " + str(t);
+                for (const T t : times) {
+                    listed += ' ';  // not " " + str(t): g++ 12's false -Wrestrict at -O3
+                    listed += str(t);
+                }
                 std::printf(
                     "FAIL %s: try_make with times%s gave a spline that evaluates to %s at %s\n",
                     current, listed.c_str(), str(q).c_str(), str(inside).c_str());

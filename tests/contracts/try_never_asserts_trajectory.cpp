@@ -173,7 +173,12 @@ void keyframe_path_cases(const char* name) {
         {T(0), T(1), T(1) + std::numeric_limits<T>::epsilon()}};
     for (const auto& times : time_sets) {
         std::string listed;
-        for (const T t : times) listed += " " + str(t);
+        // Appended piece by piece: g++ 12 at -O3 warns (-Wrestrict, a false positive) on
+        // " " + std::string, the operator+ that inserts at the front.
+        for (const T t : times) {
+            listed += ' ';
+            listed += str(t);
+        }
         if (times.size() == three.size())
             keyframe_path_made<Path, T>(times, three, prefix + "(times" + listed + ")");
         else
