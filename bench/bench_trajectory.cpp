@@ -82,7 +82,7 @@ void add(const std::string& name, Make make, F f) {
 template <std::size_t K>
 void register_order() {
     const std::string k = "_k" + std::to_string(K);
-    constexpr int N3 = 3 * K, N6 = 6 * K;
+    static constexpr int N3 = static_cast<int>(3 * K), N6 = static_cast<int>(6 * K);
     using so3 = quat::so3_bspline<double, K>;
     using se3 = quat::se3_bspline<double, K>;
     add("jacobian/quat/so3_bspline" + k + "/double", rotations<K>, [](const segment<quatd, K>& s) {
