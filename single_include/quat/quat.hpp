@@ -8136,6 +8136,77 @@ constexpr void solve_block_tridiagonal(std::size_t count, Lower lower, Diagonal 
 
 #endif  // QUAT_PATHS_DETAIL_BLOCK_TRIDIAGONAL_HPP_INCLUDED
 // ---- end quat/paths/detail/block_tridiagonal.hpp ----
+// ---- begin quat/paths/detail/segment_cubic.hpp ----
+// A segment's cubic in the segment's own time u in [0, 1], f(u) = ((a u + b) u + c) u, and bounds
+// on it and its derivatives: the form rotation_spline keeps its rotation vectors in and the
+// keyframe paths of trajectory/ their positions and twists.
+#ifndef QUAT_PATHS_DETAIL_SEGMENT_CUBIC_HPP_INCLUDED
+#define QUAT_PATHS_DETAIL_SEGMENT_CUBIC_HPP_INCLUDED
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+/// f(u) = ((a u + b) u + c) u for u in [0, 1]: f(0) = 0. Coefficients in the value's own unit
+/// (length, angle), whatever the unit of time.
+template <class T>
+struct hermite_cubic {
+    vec3<T> a, b, c;
+};
+
+/// |x| + |y| + |z|.
+template <class T>
+[[nodiscard]] constexpr T sum_of_magnitudes(const vec3<T>& v) noexcept {
+    return detail::abs(v.x) + detail::abs(v.y) + detail::abs(v.z);
+}
+
+/// A bound on |f|, |df/dt| and |d2f/dt2| over the segment (u in [0, 1]), or infinity where one
+/// overflows: angle (or length), rate and second.
+template <class T>
+struct cubic_bounds {
+    T value, rate, second;
+};
+
+/// The bounds of f over a segment lasting `duration`; divided by the duration twice rather than by
+/// its square, which over- or underflows first.
+template <class T>
+[[nodiscard]] constexpr cubic_bounds<T> cubic_bounds_of(const hermite_cubic<T>& f,
+                                                        T duration) noexcept {
+    const T a = sum_of_magnitudes(f.a), b = sum_of_magnitudes(f.b), c = sum_of_magnitudes(f.c);
+    return {a + b + c, (T(3) * a + T(2) * b + c) / duration,
+            (T(6) * a + T(2) * b) / duration / duration};
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_PATHS_DETAIL_SEGMENT_CUBIC_HPP_INCLUDED
+// ---- end quat/paths/detail/segment_cubic.hpp ----
 
 namespace quat {
 
@@ -8312,9 +8383,7 @@ private:
     // r(u) = ((a u + b) u + c) u, u = (t - t_i) / (t_(i+1) - t_i): the rotation vector from
     // keyframe i in the segment's own time, so that its coefficients are angles (c is the
     // angular velocity at keyframe i times the duration) whatever the unit of time.
-    struct cubic {
-        vec3<T> a, b, c;
-    };
+    using cubic = detail::hermite_cubic<T>;
 
     // The rotation vector from the keyframe before t and its first and second derivatives in t.
     struct local_motion {
@@ -8351,10 +8420,6 @@ private:
         return detail::max(detail::abs(v.x), detail::max(detail::abs(v.y), detail::abs(v.z)));
     }
 
-    [[nodiscard]] static T sum_of_magnitudes(const vec3<T>& v) noexcept {
-        return detail::abs(v.x) + detail::abs(v.y) + detail::abs(v.z);
-    }
-
     [[nodiscard]] std::size_t segment_of(T t, std::size_t hint = 0) const noexcept {
         return detail::segment_of(times_.data(), times_.size(), t, hint);
     }
@@ -8376,13 +8441,11 @@ private:
     // can overflow T: bounds from the coefficients' magnitudes for u in [0, 1] (|J(r)| <= 1).
     [[nodiscard]] bool is_bounded(std::size_t i) const noexcept {
         const T duration = times_[i + 1] - times_[i];
-        const T a = sum_of_magnitudes(cubics_[i].a), b = sum_of_magnitudes(cubics_[i].b),
-                c = sum_of_magnitudes(cubics_[i].c);
-        const T angle = a + b + c, rate = (T(3) * a + T(2) * b + c) / duration,
-                second = (T(6) * a + T(2) * b) / duration / duration;
-        return duration > T(0) && detail::is_finite(duration) && detail::is_finite(angle) &&
-               detail::is_finite(rate) &&
-               detail::is_finite(second + rate * rate * ((T(1) + angle) * (T(1) + angle)));
+        const detail::cubic_bounds<T> b = detail::cubic_bounds_of(cubics_[i], duration);
+        return duration > T(0) && detail::is_finite(duration) && detail::is_finite(b.value) &&
+               detail::is_finite(b.rate) &&
+               detail::is_finite(b.second +
+                                 b.rate * b.rate * ((T(1) + b.value) * (T(1) + b.value)));
     }
 
     // Fills cubics_ from times_ and rotations_; false when Newton's method did not converge within

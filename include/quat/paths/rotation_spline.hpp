@@ -17,6 +17,7 @@
 #include "../quaternion.hpp"
 #include "../vec3.hpp"
 #include "detail/block_tridiagonal.hpp"
+#include "detail/segment_cubic.hpp"
 #include "detail/segments.hpp"
 
 namespace quat {
@@ -171,9 +172,7 @@ private:
     // r(u) = ((a u + b) u + c) u, u = (t - t_i) / (t_(i+1) - t_i): the rotation vector from
     // keyframe i in the segment's own time, so that its coefficients are angles (c is the
     // angular velocity at keyframe i times the duration) whatever the unit of time.
-    struct cubic {
-        vec3<T> a, b, c;
-    };
+    using cubic = detail::hermite_cubic<T>;
 
     // The rotation vector from the keyframe before t and its first and second derivatives in t.
     struct local_motion {
@@ -210,10 +209,6 @@ private:
         return detail::max(detail::abs(v.x), detail::max(detail::abs(v.y), detail::abs(v.z)));
     }
 
-    [[nodiscard]] static T sum_of_magnitudes(const vec3<T>& v) noexcept {
-        return detail::abs(v.x) + detail::abs(v.y) + detail::abs(v.z);
-    }
-
     [[nodiscard]] std::size_t segment_of(T t, std::size_t hint = 0) const noexcept {
         return detail::segment_of(times_.data(), times_.size(), t, hint);
     }
@@ -235,13 +230,11 @@ private:
     // can overflow T: bounds from the coefficients' magnitudes for u in [0, 1] (|J(r)| <= 1).
     [[nodiscard]] bool is_bounded(std::size_t i) const noexcept {
         const T duration = times_[i + 1] - times_[i];
-        const T a = sum_of_magnitudes(cubics_[i].a), b = sum_of_magnitudes(cubics_[i].b),
-                c = sum_of_magnitudes(cubics_[i].c);
-        const T angle = a + b + c, rate = (T(3) * a + T(2) * b + c) / duration,
-                second = (T(6) * a + T(2) * b) / duration / duration;
-        return duration > T(0) && detail::is_finite(duration) && detail::is_finite(angle) &&
-               detail::is_finite(rate) &&
-               detail::is_finite(second + rate * rate * ((T(1) + angle) * (T(1) + angle)));
+        const detail::cubic_bounds<T> b = detail::cubic_bounds_of(cubics_[i], duration);
+        return duration > T(0) && detail::is_finite(duration) && detail::is_finite(b.value) &&
+               detail::is_finite(b.rate) &&
+               detail::is_finite(b.second +
+                                 b.rate * b.rate * ((T(1) + b.value) * (T(1) + b.value)));
     }
 
     // Fills cubics_ from times_ and rotations_; false when Newton's method did not converge within

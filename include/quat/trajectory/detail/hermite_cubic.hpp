@@ -8,19 +8,13 @@
 #include <vector>
 
 #include "../../detail/math.hpp"
+#include "../../paths/detail/segment_cubic.hpp"
 #include "../../paths/detail/segments.hpp"
 #include "../../vec3.hpp"
 
 namespace quat {
 #include "../../detail/isa_namespace.inc"
 namespace detail {
-
-/// f(u) = ((a u + b) u + c) u for u in [0, 1]: f(0) = 0. Coefficients in the value's own unit
-/// (length, angle), whatever the unit of time.
-template <class T>
-struct hermite_cubic {
-    vec3<T> a, b, c;
-};
 
 /// The cubic with f(0) = 0, f(1) = rise and slopes df/du = start at 0 and end at 1.
 template <class T>
@@ -49,27 +43,6 @@ template <class T>
 template <class T, class S>
 [[nodiscard]] constexpr vec3<T> narrow(const vec3<S>& v) noexcept {
     return {to_scalar<T>(v.x), to_scalar<T>(v.y), to_scalar<T>(v.z)};
-}
-
-/// |x| + |y| + |z|.
-template <class T>
-[[nodiscard]] constexpr T sum_of_magnitudes(const vec3<T>& v) noexcept {
-    return detail::abs(v.x) + detail::abs(v.y) + detail::abs(v.z);
-}
-
-/// A bound on |f|, |df/dt| and |d2f/dt2| over the segment (u in [0, 1]), or infinity where one
-/// overflows: angle (or length), rate and second.
-template <class T>
-struct cubic_bounds {
-    T value, rate, second;
-};
-
-template <class T>
-[[nodiscard]] constexpr cubic_bounds<T> cubic_bounds_of(const hermite_cubic<T>& f,
-                                                        T duration) noexcept {
-    const T a = sum_of_magnitudes(f.a), b = sum_of_magnitudes(f.b), c = sum_of_magnitudes(f.c);
-    return {a + b + c, (T(3) * a + T(2) * b + c) / duration,
-            (T(6) * a + T(2) * b) / duration / duration};
 }
 
 /// The C2 cubic spline through `positions` at `times` (count >= 2) whose velocities at the first
