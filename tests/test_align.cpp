@@ -13,6 +13,7 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
+#include "support/wide_float.hpp"
 
 using quat::quaternion;
 using quat::vec3;
@@ -34,13 +35,11 @@ static_assert(quat::detail::difference_of_products(1 - 0x1p-30, 1 + 0x1p-30, 1.0
 
 namespace {
 
-#if defined(__SIZEOF_FLOAT128__)
-__extension__ typedef __float128 wide;  // a product of two doubles is exact in its 113 bits
-#else
-// 64 bits: enough for float, and for double away from parallel and opposite; near opposite the
-// reference cross product of doubles would cancel like the naive one.
-using wide = long double;
-#endif
+// support/wide_float.hpp: 113 bits (__float128 on x86-64, long double on AArch64), where a product
+// of two doubles is exact. Where only 64 bits are available: enough for float, and for double away
+// from parallel and opposite; near opposite the reference cross product of doubles would cancel
+// like the naive one.
+using quat::test::wide;
 
 wide wide_sqrt(wide x) {
     if (!(x > 0)) return 0;

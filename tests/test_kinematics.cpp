@@ -8,6 +8,7 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
+#include "support/wide_float.hpp"
 
 using quat::quaternion;
 using quat::vec3;
@@ -28,11 +29,7 @@ static_assert(quat::integrate_body(quat::quatd::identity(), vec3<double>{0, 0, 0
 
 namespace {
 
-#if defined(__SIZEOF_FLOAT128__)
-using wide = __float128;  // products of two doubles are exact in 113 bits
-#else
-using wide = long double;
-#endif
+using quat::test::wide;  // support/wide_float.hpp: products of two doubles are exact in 113 bits
 
 // Independent reference: the rotation vector of q0* q1 (body) or q1 q0* (world) divided by dt. The
 // product is formed in `wide`, where each product of two inputs is exact and the sums round at
