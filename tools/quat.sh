@@ -5,7 +5,9 @@
 #                              each cell the median of 5 repetitions run in random interleaved order,
 #                              with their spread, so one disturbed run on a shared machine cannot
 #                              flip a verdict (quat_bench --table's defaults; a few minutes)
-#   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does)
+#   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does):
+#                              four x86-64 configurations, then the unit tests cross-built for
+#                              AArch64 and run under qemu-aarch64 (preset ci-aarch64)
 # Both first make sure the Debian packages quat needs are installed: as root they are installed
 # with apt-get; otherwise the script stops and prints the apt-get line to run.
 set -euo pipefail
@@ -16,8 +18,9 @@ cd "$repo"
 packages=(g++ cmake clang libglm-dev catch2 libbenchmark-dev libeigen3-dev doxygen
           libclang-rt-14-dev valgrind clang-format clang-tidy python3 pkg-config libfmt-dev
           clang-19 libc++-19-dev libc++abi-19-dev libclang-rt-19-dev qemu-user libceres-dev
-          libgtest-dev libgmock-dev libopencv-dev)
-matrix=(ci-gcc-cxx17-asan ci-clang-cxx20-asan ci-gcc-cxx20-release ci-clang-cxx17-release)
+          libgtest-dev libgmock-dev libopencv-dev g++-aarch64-linux-gnu)
+matrix=(ci-gcc-cxx17-asan ci-clang-cxx20-asan ci-gcc-cxx20-release ci-clang-cxx17-release
+        ci-aarch64)
 jobs="${QUAT_JOBS:-2}"
 
 usage() {
