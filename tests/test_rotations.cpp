@@ -57,7 +57,10 @@ TEMPLATE_TEST_CASE("batch rotate, struct of arrays, matches array of structs", "
                    double) {
     using T = TestType;
     quat::test::random_rotations random;
-    for (const std::size_t n : {1u, 5u, 256u, 777u}) {
+    // Every size to 40 (whole vectors of lanes and each tail), and longer ones.
+    std::vector<std::size_t> sizes = {256u, 777u};
+    for (std::size_t n = 0; n <= 40; ++n) sizes.push_back(n);
+    for (const std::size_t n : sizes) {
         const quat::quaternion<T> q = random.unit_quaternion<T>();
         const std::vector<quat::vec3<T>> in = random_points<T>(random, n);
         std::vector<T> x(n), y(n), z(n), ox(n), oy(n), oz(n);
@@ -249,6 +252,46 @@ TEST_CASE(
     CHECK(mismatches == 0);
     quat::rotate(m, points, points);  // in place
     CHECK(points == out);
+}
+
+TEST_CASE(
+    "batch rotate and transform of floats: every offset of input and output from a cache "
+    "line, every size to 40",
+    "[batch]") {
+    // AVX-512 builds start their 16-point kernel on the first 64-byte boundary of the input and do
+    // the points before it plainly; input and output start k points (12 k bytes) into their
+    // buffers, which meets every offset from a line.
+    const quat::quatf q = quat::normalize(quat::quatf{0.6f, 0.1f, -0.3f, 0.4f});
+    const quat::rotation_matrix<float> m = quat::to_matrix(q);
+    const quat::vec3<float> t{0.5f, -1.0f, 2.0f};
+    std::vector<quat::vec3<float>> source(100);
+    for (std::size_t i = 0; i < source.size(); ++i)
+        source[i] = {float(i % 13) - 6.0f, float(i % 7) * 0.25f, -float(i % 5)};
+    const quat::vec3<float> sentinel{9, 9, 9};
+    std::size_t mismatches = 0, overwritten = 0;
+    for (std::size_t in_offset = 0; in_offset < 16; ++in_offset) {
+        for (std::size_t out_offset = 0; out_offset < 16; ++out_offset) {
+            for (std::size_t count = 0; count <= 41; ++count) {
+                const quat::vec3<float>* in = source.data() + in_offset;
+                std::vector<quat::vec3<float>> buffer(60, sentinel);
+                quat::vec3<float>* out = buffer.data() + out_offset + 1;
+                quat::rotate(m, in, out, count);
+                for (std::size_t i = 0; i < count; ++i)
+                    if (!(max_difference(out[i], quat::rotate(m, in[i])) <= 1e-5f)) ++mismatches;
+                std::vector<quat::vec3<float>> moved(60, sentinel);
+                quat::vec3<float>* moved_out = moved.data() + out_offset + 1;
+                quat::detail::transform_points<true>(m, t, in, moved_out, count);
+                for (std::size_t i = 0; i < count; ++i)
+                    if (!(max_difference(moved_out[i], quat::rotate(m, in[i]) + t) <= 1e-5f))
+                        ++mismatches;
+                if (!(out[-1] == sentinel && out[count] == sentinel && moved_out[-1] == sentinel &&
+                      moved_out[count] == sentinel))
+                    ++overwritten;
+            }
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(overwritten == 0);  // nothing written before or past the output
 }
 
 TEST_CASE("streamed batch rotate: every offset of the output from a cache line, every short tail",

@@ -31,7 +31,9 @@
 #define QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "../config.hpp"
 #include "../conversions.hpp"
@@ -41,6 +43,7 @@
 #include "../vec3.hpp"
 #include "detail/interleaved_points_avx.hpp"
 #include "detail/overlap.hpp"
+#include "detail/wide_lanes.hpp"
 #include "soa.hpp"
 
 namespace quat {
@@ -73,6 +76,19 @@ template <class T>
     }
 }
 
+// rotate_factored on vectors of lanes (GCC/clang vector extensions; a scalar works too), term for
+// term, for the kernels that vectorize by hand.
+template <class V>
+inline void rotate_factored_lanes(V w, V x, V y, V z, V vx, V vy, V vz, V& rx, V& ry,
+                                  V& rz) noexcept {
+    const V n2 = w * w + x * x + y * y + z * z;
+    const V scale = 4 - (n2 + n2);
+    const V tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
+    rx = vx + (tx * w + (y * tz - z * ty)) * scale;
+    ry = vy + (ty * w + (z * tx - x * tz)) * scale;
+    rz = vz + (tz * w + (x * ty - y * tx)) * scale;
+}
+
 // The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
 // its -Wpass-failed warning would break -Werror builds of user code, so it is silenced here.
 #if defined(__clang__)
@@ -103,13 +119,47 @@ void rotate_each_loop(const quaternion<T>* rotations, const vec3<T>* points, vec
 template <class T>
 void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
                      soa_points<T> output) noexcept {
+    std::size_t done = 0;
+    // Whole vectors of lanes written out (detail/wide_lanes.hpp says why), the rest below. Each
+    // step loads the next vector of every input before it stores its own results, which keeps
+    // the loads clear of 4K aliasing with the stores (detail::transform_block's struct-of-arrays
+    // loop says more), and is safe where an output array is an input array.
+    if constexpr (has_wide_lanes<T>) {
+        using V = wide_t<T>;
+        constexpr std::size_t lanes = wide_count<T>;
+        struct element {
+            V w, x, y, z, px, py, pz;
+        };
+        auto load = [&](std::size_t at) noexcept {
+            return element{load_wide(q.w + at), load_wide(q.x + at), load_wide(q.y + at),
+                           load_wide(q.z + at), load_wide(p.x + at), load_wide(p.y + at),
+                           load_wide(p.z + at)};
+        };
+        auto turn = [&](const element& e, std::size_t at) noexcept {
+            V rx, ry, rz;
+            rotate_factored_lanes(e.w, e.x, e.y, e.z, e.px, e.py, e.pz, rx, ry, rz);
+            store_wide(output.x + at, rx);
+            store_wide(output.y + at, ry);
+            store_wide(output.z + at, rz);
+        };
+        if (p.count >= lanes) {
+            element current = load(0);
+            for (; done + 2 * lanes <= p.count; done += lanes) {
+                const element next = load(done + lanes);
+                turn(current, done);
+                current = next;
+            }
+            turn(current, done);
+            done += lanes;
+        }
+    }
     // As above; each output array may be any one of the input arrays.
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)
 #pragma GCC ivdep
 #endif
-    for (std::size_t i = 0; i < p.count; ++i) {
+    for (std::size_t i = done; i < p.count; ++i) {
         const vec3<T> r = rotate_element(quaternion<T>{q.w[i], q.x[i], q.y[i], q.z[i]},
                                          vec3<T>{p.x[i], p.y[i], p.z[i]});
         output.x[i] = r.x;
@@ -182,9 +232,8 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
 // and out by 3 permutes and 6 blends each; 26 shuffles per 8 elements where g++ 12 compiles the
 // plain loop (and GLM's and Eigen's) with 53-54 lane-crossing permutes, the bound of those loops.
 // The arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole
-// before it is written. Used in AVX and AVX2 builds; AVX-512 builds keep the compiled loop, which
-// g++ widens to 16 elements (on a Zen 4, 1024 elements: 0.77 ns an element against 0.82 for this
-// kernel, in separate runs; GLM's loop 0.66-0.68).
+// before it is written. AVX-512 builds run rotate_each_interleaved_16 below and this kernel for a
+// remaining 8.
 [[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
                                                          std::size_t n) noexcept {
     auto load = [](const float* low, const float* high) noexcept {
@@ -192,7 +241,6 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
         return __builtin_ia32_vinsertf128_ps256(
             __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
     };
-    const float8 four = {4, 4, 4, 4, 4, 4, 4, 4};
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* r = q + 4 * i;
@@ -212,13 +260,8 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
         const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
         const float8 vy = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
         const float8 vz = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));
-        // rotate_factored: v + (t w + u x t) s with t = u x v, s = 4 - 2 |q|^2.
-        const float8 n2 = w * w + x * x + y * y + z * z;
-        const float8 scale = four - (n2 + n2);
-        const float8 tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
-        const float8 rx = vx + (tx * w + (y * tz - z * ty)) * scale;
-        const float8 ry = vy + (ty * w + (z * tx - x * tz)) * scale;
-        const float8 rz = vz + (tz * w + (x * ty - y * tx)) * scale;
+        float8 rx, ry, rz;
+        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
         const float8 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
         const float8 ra = blend_2_6(blend_1_5(px, py), pz);
         const float8 rb = blend_2_6(blend_1_5(py, pz), px);
@@ -236,6 +279,97 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
 #endif
 #endif
 
+#if defined(__AVX512F__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+// rotate_each of float elements [0, n - n % 16) in AVX-512 builds, 16 a step, and how many it did.
+// A quaternion is one 128-bit lane, so the 4x4 transpose that separates w, x, y and z of 16 of them
+// (4 registers) is 8 in-lane unpacks; it leaves element each_element(l) in lane l, not element l.
+// The points are separated into that same lane order, and their results joined back from it, by
+// two-source permutes (vpermt2ps) of any order: 2 per coordinate each way. 20 shuffles per 16
+// elements, where g++ 12 compiles the plain loop with 4 times as many lane-crossing permutes. The
+// arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole before
+// it is written.
+[[nodiscard]] constexpr int each_element(int lane) noexcept { return lane / 4 + 4 * (lane % 4); }
+[[nodiscard]] constexpr int each_lane(int element) noexcept {
+    return 4 * (element % 4) + element / 4;
+}
+// Float f (0-47) of a group of points, as a shuffle index into the pair (a, b) and then into the
+// pair (that result, c): lanes whose float is in c keep their place in the first step.
+[[nodiscard]] constexpr int first_of_pair(int f) noexcept { return f < 32 ? f : 0; }
+[[nodiscard]] constexpr int second_of_pair(int f, int lane) noexcept {
+    return f < 32 ? lane : f - 16;
+}
+// Coordinate k of lane l's point, and the lane of output float g's element.
+[[nodiscard]] constexpr int point_float(int lane, int k) noexcept {
+    return 3 * each_element(lane) + k;
+}
+[[nodiscard]] constexpr int result_lane(int g) noexcept { return each_lane(g / 3); }
+
+// Coordinate K of the 16 points in registers a, b, c, in each_element's lane order.
+template <int K, int... L>
+[[nodiscard]] inline float16 gather_coordinate(float16 a, float16 b, float16 c,
+                                               std::integer_sequence<int, L...>) noexcept {
+    const float16 ab = __builtin_shufflevector(a, b, first_of_pair(point_float(L, K))...);
+    return __builtin_shufflevector(ab, c, second_of_pair(point_float(L, K), L)...);
+}
+// Output register R (floats 16 R ... 16 R + 15 of the group) from the coordinates in lane order.
+template <int R, int... L>
+[[nodiscard]] inline float16 join_coordinates(float16 x, float16 y, float16 z,
+                                              std::integer_sequence<int, L...>) noexcept {
+    const float16 xy =
+        __builtin_shufflevector(x, y,
+                                ((16 * R + L) % 3 == 0   ? result_lane(16 * R + L)
+                                 : (16 * R + L) % 3 == 1 ? 16 + result_lane(16 * R + L)
+                                                         : L)...);
+    return __builtin_shufflevector(xy, z,
+                                   ((16 * R + L) % 3 == 2 ? 16 + result_lane(16 * R + L) : L)...);
+}
+
+[[nodiscard]] inline std::size_t rotate_each_interleaved_16(const float* q, const float* p,
+                                                            float* out, std::size_t n) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const float* r = q + 4 * i;
+        const float16 e0 = load16(r), e1 = load16(r + 16), e2 = load16(r + 32), e3 = load16(r + 48);
+        // Per 128-bit lane j: t0 = w_j w_j+4 x_j x_j+4, t1 = y_j y_j+4 z_j z_j+4, t2 and t3 the
+        // same of elements j + 8 and j + 12; then w = w_j w_j+4 w_j+8 w_j+12, and so on.
+        const float16 t0 = __builtin_shufflevector(e0, e1, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25,
+                                                   12, 28, 13, 29);
+        const float16 t1 = __builtin_shufflevector(e0, e1, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11,
+                                                   27, 14, 30, 15, 31);
+        const float16 t2 = __builtin_shufflevector(e2, e3, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25,
+                                                   12, 28, 13, 29);
+        const float16 t3 = __builtin_shufflevector(e2, e3, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11,
+                                                   27, 14, 30, 15, 31);
+        const float16 w = __builtin_shufflevector(t0, t2, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25,
+                                                  12, 13, 28, 29);
+        const float16 x = __builtin_shufflevector(t0, t2, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26,
+                                                  27, 14, 15, 30, 31);
+        const float16 y = __builtin_shufflevector(t1, t3, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25,
+                                                  12, 13, 28, 29);
+        const float16 z = __builtin_shufflevector(t1, t3, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26,
+                                                  27, 14, 15, 30, 31);
+        const float* s = p + 3 * i;
+        const float16 a = load16(s), b = load16(s + 16), c = load16(s + 32);
+        const float16 vx = gather_coordinate<0>(a, b, c, lanes);
+        const float16 vy = gather_coordinate<1>(a, b, c, lanes);
+        const float16 vz = gather_coordinate<2>(a, b, c, lanes);
+        float16 rx, ry, rz;
+        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
+        const float16 ra = join_coordinates<0>(rx, ry, rz, lanes);
+        const float16 rb = join_coordinates<1>(rx, ry, rz, lanes);
+        const float16 rc = join_coordinates<2>(rx, ry, rz, lanes);
+        float* o = out + 3 * i;
+        std::memcpy(o, &ra, sizeof ra);
+        std::memcpy(o + 16, &rb, sizeof rb);
+        std::memcpy(o + 32, &rc, sizeof rc);
+    }
+    return i;
+}
+#endif
+#endif
+
 template <class T>
 void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3<T>* output,
                      std::size_t count) noexcept {
@@ -244,14 +378,19 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
     // 13.8-14.5 ms; GLM's loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
 #if defined(__AVX__)
     std::size_t done = 0;
-#if defined(__has_builtin) && !defined(__AVX512F__)
+#if defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
                           sizeof(vec3<float>) == 3 * sizeof(float),
                       "packed quaternions and points");
-        if (count >= 8)
-            done = rotate_each_interleaved(&rotations[0].w, &points[0].x, &output[0].x, count);
+#if defined(__AVX512F__)
+        if (count >= 16)
+            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, count);
+#endif
+        if (count - done >= 8)
+            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
+                                            count - done);
     }
 #endif
 #endif
