@@ -15,6 +15,7 @@
 #include "../../vec3.hpp"
 #include "../soa.hpp"
 #include "interleaved_points_avx.hpp"
+#include "interleaved_points_neon.hpp"
 #include "streaming_store.hpp"
 #include "wide_lanes.hpp"
 
@@ -42,12 +43,15 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
     const T tx = t.x, ty = t.y, tz = t.z;
     std::size_t done = 0;
     // Float: groups of 16 and 8 points by the explicit shuffles of interleaved_points_avx.hpp in
-    // AVX builds, the rest (all of it elsewhere) below.
+    // AVX builds, of 4 by interleaved_points_neon.hpp on AArch64, the rest (all of it elsewhere)
+    // below.
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                       "vec3<float> must be three packed floats");
         if (n >= 8)
             done = transform_interleaved_floats<Translate>(m, t, &input[0].x, &output[0].x, n);
+        if (n >= 4 && done == 0)
+            done = transform_interleaved_neon<Translate>(m, t, &input[0].x, &output[0].x, n);
     }
     // Point i is read before it is written and no iteration touches another's point, so the
     // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
