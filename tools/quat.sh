@@ -4,7 +4,9 @@
 #                              and print the benchmark comparison table, naming the instruction set:
 #                              each cell the median of 5 repetitions run in random interleaved order,
 #                              with their spread, so one disturbed run on a shared machine cannot
-#                              flip a verdict (quat_bench --table's defaults; a few minutes)
+#                              flip a verdict (quat_bench --table's defaults; a few minutes); last,
+#                              the README's headline rows measured here beside the README's own
+#                              (bench/headline.py)
 #   bash tools/quat.sh test    configure, build and test every CI matrix preset (what .ci/run does):
 #                              four x86-64 configurations, then the unit tests cross-built for
 #                              AArch64 and run under qemu-aarch64 (preset ci-aarch64)
@@ -62,8 +64,11 @@ run_bench() {
     exe="$(find "build/$preset" -type f -name quat_bench -perm -u+x | head -n 1)"
     [[ -n "$exe" ]] || { echo "quat.sh: quat_bench executable not found" >&2; exit 1; }
     # --table repeats and interleaves by itself (--benchmark_repetitions=5,
-    # --benchmark_enable_random_interleaving=true), printing medians and their spread.
-    "$exe" --table
+    # --benchmark_enable_random_interleaving=true), printing medians and their spread; the JSON it
+    # also writes gives the README's headline rows measured here, printed last beside the README's.
+    local json="build/$preset/bench-table.json"
+    "$exe" --table --benchmark_out="$json" --benchmark_out_format=json
+    python3 bench/headline.py "$json" --beside README.md
 }
 
 # Seconds as 12m34s.
