@@ -6,6 +6,7 @@
 //   quat_bench --counts            the thesis's operation-count tables beside ours (no timing)
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -343,6 +344,35 @@ void print_targets(const std::vector<measurement>& all) {
         }
 }
 
+// The CPU as /proc/cpuinfo names it, with its vendor, family and model numbers (a virtual machine
+// may name only "AMD EPYC"; the family tells Zen 4, 25, from Zen 5, 26); "unknown" elsewhere.
+std::string cpu_description() {
+    std::ifstream info("/proc/cpuinfo");
+    std::string line, name, vendor, family, model;
+    auto value = [](const std::string& l) {
+        const std::size_t colon = l.find(':');
+        return colon == std::string::npos || colon + 2 > l.size() ? std::string()
+                                                                  : l.substr(colon + 2);
+    };
+    while (std::getline(info, line) && (name.empty() || family.empty() || model.empty())) {
+        if (line.rfind("model name", 0) == 0) name = value(line);
+        else if (line.rfind("vendor_id", 0) == 0) vendor = value(line);
+        else if (line.rfind("cpu family", 0) == 0) family = value(line);
+        else if (line.rfind("model\t", 0) == 0) model = value(line);
+    }
+    if (name.empty()) return "unknown";
+    // Appended piecewise: GCC 12's -Wrestrict misfires on chains of std::string + at -O3.
+    std::string text = name;
+    text += " (";
+    text += vendor;
+    text += " family ";
+    text += family;
+    text += " model ";
+    text += model;
+    text += ')';
+    return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -375,6 +405,8 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("quat_compile_flags", bench::build_info::flags);
     benchmark::AddCustomContext("quat_march", bench::build_info::arch);
     benchmark::AddCustomContext("quat_instruction_set", instruction_set);
+    benchmark::AddCustomContext("quat_commit", bench::build_info::commit);
+    benchmark::AddCustomContext("quat_cpu", cpu_description());
     benchmark::Initialize(&count, args.data());
     if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
     bench::register_rotate();
@@ -393,9 +425,11 @@ int main(int argc, char** argv) {
         benchmark::RunSpecifiedBenchmarks();
     } else {
         collecting_reporter reporter;
-        std::printf("compiler: %s\nflags: %s\ninstruction set: %s (-march=%s)\n",
-                    bench::build_info::compiler, bench::build_info::flags, instruction_set,
-                    *bench::build_info::arch ? bench::build_info::arch : "compiler default");
+        std::printf(
+            "compiler: %s\nflags: %s\ninstruction set: %s (-march=%s)\ncpu: %s\ncommit: %s\n",
+            bench::build_info::compiler, bench::build_info::flags, instruction_set,
+            *bench::build_info::arch ? bench::build_info::arch : "compiler default",
+            cpu_description().c_str(), bench::build_info::commit);
         benchmark::RunSpecifiedBenchmarks(&reporter);
         const std::vector<measurement> results = reporter.results();
         print_table(results, reporter.repetitions());
