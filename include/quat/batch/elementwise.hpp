@@ -142,15 +142,16 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
             store_wide(output.y + at, ry);
             store_wide(output.z + at, rz);
         };
-        if (p.count >= lanes) {
+        const std::size_t whole = p.count - p.count % lanes;  // as in detail::transform_block
+        if (whole != 0) {
             element current = load(0);
-            for (; done + 2 * lanes <= p.count; done += lanes) {
+            for (; done + lanes < whole; done += lanes) {
                 const element next = load(done + lanes);
                 turn(current, done);
                 current = next;
             }
             turn(current, done);
-            done += lanes;
+            done = whole;
         }
     }
     // As above; each output array may be any one of the input arrays.

@@ -142,16 +142,19 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
             store_wide(oy + at, ry);
             store_wide(oz + at, rz);
         };
-        if (n >= lanes) {
+        // The points in whole vectors, counted so that the loop below visibly does at most
+        // lanes - 1 (g++ 12 for AArch64 otherwise warns of an overflowing iteration in it).
+        const std::size_t whole = n - n % lanes;
+        if (whole != 0) {
             V px = load_wide(x), py = load_wide(y), pz = load_wide(z);
-            for (; done + 2 * lanes <= n; done += lanes) {
+            for (; done + lanes < whole; done += lanes) {
                 const V nx = load_wide(x + done + lanes), ny = load_wide(y + done + lanes),
                         nz = load_wide(z + done + lanes);
                 move(px, py, pz, done);
                 px = nx, py = ny, pz = nz;
             }
             move(px, py, pz, done);
-            done += lanes;
+            done = whole;
         }
     }
     // Each index is read before it is written, so each output array may be its own input array, and
