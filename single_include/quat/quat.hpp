@@ -3864,13 +3864,24 @@ namespace detail {
 // instead of 45, the same tolerance of |q| near 1, other roundings: over 200000 random pairs it
 // differs from rotate(q, v) by at most 4.2 eps |v| per component (float and double, g++ and clang,
 // SSE2 to AVX-512) and from the exact rotation by 4.2 eps |v|, against 3.3 for rotate(q, v).
+// The arithmetic of rotate_factored on any lanes: a scalar, or a vector of GCC/clang vector
+// extensions for the kernels that vectorize by hand, so every path rounds alike.
+template <class V>
+constexpr void rotate_factored_lanes(V w, V x, V y, V z, V vx, V vy, V vz, V& rx, V& ry,
+                                     V& rz) noexcept {
+    const V n2 = w * w + x * x + y * y + z * z;
+    const V scale = 4 - (n2 + n2);
+    const V tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
+    rx = vx + (tx * w + (y * tz - z * ty)) * scale;
+    ry = vy + (ty * w + (z * tx - x * tz)) * scale;
+    rz = vz + (tz * w + (x * ty - y * tx)) * scale;
+}
+
 template <class T>
 [[nodiscard]] constexpr vec3<T> rotate_factored(const quaternion<T>& q, const vec3<T>& v) noexcept {
-    const T n2 = squared_norm(q);
-    const T s = T(4) - (n2 + n2);
-    const vec3<T> u{q.x, q.y, q.z};
-    const vec3<T> t = cross(u, v);
-    return v + (t * q.w + cross(u, t)) * s;
+    vec3<T> r{};
+    rotate_factored_lanes(q.w, q.x, q.y, q.z, v.x, v.y, v.z, r.x, r.y, r.z);
+    return r;
 }
 
 // The rotation of one element: rotate_factored for float and double, whose loops vectorize; for
@@ -3883,19 +3894,6 @@ template <class T>
     } else {
         return rotate_unchecked(q, v);
     }
-}
-
-// rotate_factored on vectors of lanes (GCC/clang vector extensions; a scalar works too), term for
-// term, for the kernels that vectorize by hand.
-template <class V>
-inline void rotate_factored_lanes(V w, V x, V y, V z, V vx, V vy, V vz, V& rx, V& ry,
-                                  V& rz) noexcept {
-    const V n2 = w * w + x * x + y * y + z * z;
-    const V scale = 4 - (n2 + n2);
-    const V tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
-    rx = vx + (tx * w + (y * tz - z * ty)) * scale;
-    ry = vy + (ty * w + (z * tx - x * tz)) * scale;
-    rz = vz + (tz * w + (x * ty - y * tx)) * scale;
 }
 
 // The loops below ask clang to vectorize; where it cannot (at -O1 with the sanitizers, for one),
