@@ -5,8 +5,8 @@ Usage: python3 bench/median_table.py run1.json run2.json run3.json
        python3 bench/median_table.py --levels x86-64=a1.json,a2.json x86-64-v3=b1.json native=c1.json
   each run from: quat_bench --table --benchmark_out=runN.json --benchmark_out_format=json
 With --levels, a comment line per column names its CPU (quat_bench's context, from /proc/cpuinfo),
-compiler, flags and the commit measured (git describe at configure time): a column whose commit
-is not the current code's is to be measured again or removed.
+compiler, flags and the commit measured (git describe when quat_bench was built): a column whose
+commit is not the current code's is to be measured again or removed.
 Cells are ns per item (point, product, call or value) from items_per_second, as `--table` prints
 them, the median over every repetition in every file (`--table` writes 5 repetitions per run);
 "copy floor" rows are the fastest of the copies' medians (memcpy, plain loop, streaming copy);

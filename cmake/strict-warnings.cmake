@@ -3,7 +3,11 @@
 # language standard given. Run by the strict_warnings.* CTest tests, one per compiler and standard
 # (so that CTest runs them side by side), and one per compiler for the batch code's instruction sets:
 #   cmake -DCOMPILERS="g++;clang++" -DSTANDARDS="17;20" -DSOURCE_DIR=<quat> -DEXTRA_INCLUDES="<dirs>"
-#         -DWORK_DIR=<dir> -P strict-warnings.cmake     (STANDARDS empty: the instruction sets only)
+#         -DWORK_DIR=<dir> [-DALONE=ON] -P strict-warnings.cmake
+#   (STANDARDS empty: the instruction sets only)
+# A header's warnings are the same alone or beside the others, so the headers are compiled one
+# translation unit each (proving each compiles alone) only with ALONE=ON, which one of the tests
+# passes; the others compile them all in one unit, and the instantiation units one by one.
 set(_flags -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wdouble-promotion -Wshadow
            -Wold-style-cast -Werror -fsyntax-only)
 set(_includes "-I${SOURCE_DIR}/include")
@@ -20,6 +24,7 @@ file(MAKE_DIRECTORY "${WORK_DIR}")
 file(GLOB _units "${SOURCE_DIR}/tests/warnings/*.cpp")  # instantiate*.cpp: one per area
 list(SORT _units)
 set(_instantiations ${_units})
+set(_all_headers "")
 foreach(_header IN LISTS _headers)
     # An old include path (docs/architecture.md) is a comment and one #include of the header that
     # moved, which is compiled alone here under its own name; old_include_paths compiles the old one.
@@ -27,11 +32,19 @@ foreach(_header IN LISTS _headers)
     if(_code MATCHES "^#include \"[^\"]+\"  // IWYU pragma: export$")
         continue()
     endif()
-    string(MAKE_C_IDENTIFIER "${_header}" _name)
-    set(_unit "${WORK_DIR}/${_name}.cpp")
-    file(WRITE "${_unit}" "#include <${_header}>\n")
-    list(APPEND _units "${_unit}")
+    string(APPEND _all_headers "#include <${_header}>\n")
+    if(ALONE)
+        string(MAKE_C_IDENTIFIER "${_header}" _name)
+        set(_unit "${WORK_DIR}/${_name}.cpp")
+        file(WRITE "${_unit}" "#include <${_header}>\n")
+        list(APPEND _units "${_unit}")
+    endif()
 endforeach()
+if(NOT ALONE)
+    set(_unit "${WORK_DIR}/all_headers.cpp")
+    file(WRITE "${_unit}" "${_all_headers}")
+    list(APPEND _units "${_unit}")
+endif()
 
 set(_failures 0)
 set(_checked 0)

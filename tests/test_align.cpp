@@ -15,6 +15,8 @@
 #include "support/tolerance.hpp"
 #include "support/wide_float.hpp"
 
+namespace test_align {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -454,3 +456,5 @@ TEMPLATE_TEST_CASE(
     CHECK(quat::angle_between(quat::look_rotation(vec3<T>{1, 0, 0}, vec3<T>{0, 0, -1}) * body,
                               quaternion<T>::identity()) <= 4 * eps<T>);
 }
+
+}  // namespace test_align

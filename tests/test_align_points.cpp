@@ -10,6 +10,7 @@
 // g++ 12 at -O3 reports a false -Warray-bounds (and, with AVX-512, -Wmaybe-uninitialized) inside
 // Eigen::umeyama's packet loads of its 3-vector means; the reference is Eigen's code, not quat's.
 #if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
@@ -20,6 +21,8 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
+
+namespace test_align_points {
 
 using quat::dual_quaternion;
 using quat::quaternion;
@@ -368,3 +371,9 @@ TEMPLATE_TEST_CASE("to_similarity applies the fitted scale; to_matrix4 is Eigen'
                 CHECK(std::abs(m(i, j) - e(i, j)) <= (j < 3 ? tolerance : tolerance * 8));
     }
 }
+
+}  // namespace test_align_points
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

@@ -18,6 +18,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_align_vectors {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -628,3 +630,5 @@ TEST_CASE("alignment_with_sensitivity is an alignment with one more field", "[al
     CHECK(fit.unique == plain.unique);
     CHECK(both.sensitivity(0, 0) > 0);
 }
+
+}  // namespace test_align_vectors

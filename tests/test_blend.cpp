@@ -12,6 +12,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_blend {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -150,3 +152,5 @@ TEST_CASE("mixed precisions: the transforms' precision, weights converted", "[bl
     CHECK(d.dual == quat::blend(bones_d.data(), wd.data(), 2).dual);
     CHECK(quat::blend(bones.data(), wd.data(), 2).dual == f.dual);  // pointers too
 }
+
+}  // namespace test_blend

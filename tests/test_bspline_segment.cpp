@@ -15,6 +15,8 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 
+namespace test_bspline_segment {
+
 namespace {
 
 using namespace quat;
@@ -102,3 +104,5 @@ TEST_CASE("bspline_segment: empty outside the domain and for views that cannot b
     CHECK(split_bspline<double, 4>(rotations, positions, 1.0, 0.5).segment_at(1.2).has_value());
     CHECK(!split_bspline<double, 4>(rotations, fewer, 1.0, 0.5).segment_at(1.2).has_value());
 }
+
+}  // namespace test_bspline_segment

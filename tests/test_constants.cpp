@@ -12,6 +12,8 @@
 
 #include "support/catch.hpp"
 
+namespace test_constants {
+
 static_assert(std::is_same_v<decltype(quat::numbers::pi), const double>);
 static_assert(quat::numbers::pi == 3.141592653589793);
 static_assert(quat::numbers::pi_v<float> == 3.14159265f);
@@ -89,3 +91,5 @@ TEMPLATE_TEST_CASE("radians and degrees agree with glm::radians and glm::degrees
     CHECK(quat::radians(123.0) == glm::radians(123.0));
     CHECK(quat::degrees(2.5) == glm::degrees(2.5));
 }
+
+}  // namespace test_constants

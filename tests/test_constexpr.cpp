@@ -9,6 +9,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_constexpr {
+
 using namespace quat;
 
 // Algebra, exactly (these hold under C++17 with any compiler).
@@ -133,3 +135,5 @@ TEMPLATE_TEST_CASE("compile-time exp and log of quaternions equal run-time ones 
             Approx(std::log(static_cast<double>(y))).epsilon(2 * test::eps<double>).margin(1e-300));
     }
 }
+
+}  // namespace test_constexpr

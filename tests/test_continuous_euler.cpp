@@ -14,6 +14,8 @@
 #include "support/conventions.hpp"
 #include "support/random.hpp"
 
+namespace test_continuous_euler {
+
 using quat::euler;
 using quat::frame;
 using quat::quaternion;
@@ -178,3 +180,5 @@ TEST_CASE("continuous Euler angles are constexpr", "[euler][continuous][constexp
     static_assert(out[0] > 3.0 && out[2] < -3.0, "unwrapped past pi at compile time");
     CHECK(out[0] == Approx(-3.2 + 2 * quat::numbers::pi));
 }
+
+}  // namespace test_continuous_euler

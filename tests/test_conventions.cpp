@@ -14,6 +14,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_conventions {
+
 using quat::euler;
 using quat::frame;
 using quat::quatd;
@@ -192,3 +194,5 @@ TEST_CASE(
         CHECK(quat::angle_between(quat::from_eigen(e), quat::to_quaternion(ypr)) <= 1e-7);
     }
 }
+
+}  // namespace test_conventions

@@ -11,6 +11,8 @@
 #include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_conversions {
+
 using quat::axis_angle;
 using quat::quaternion;
 using quat::rotation_matrix;
@@ -367,3 +369,5 @@ TEMPLATE_TEST_CASE("from_rotation_vector is a unit quaternion for every finite v
     CHECK(std::isnan(quat::from_rotation_vector(vec3<T>{L::infinity(), 0, 0}).w));
     CHECK(std::isnan(quat::from_rotation_vector(vec3<T>{L::quiet_NaN(), 1, 0}).x));
 }
+
+}  // namespace test_conversions

@@ -4,6 +4,8 @@
 #include "../bench/count_cases.hpp"
 #include "support/catch.hpp"
 
+namespace test_counts {
+
 namespace {
 
 struct expected {
@@ -121,3 +123,5 @@ TEST_CASE("Table 3.2 for rigid motions: the types store their scalars and nothin
     CHECK(sizeof(quat::dual_quaternion<float>) == 8 * sizeof(float));
     CHECK(sizeof(quat::quaternion<double>) + sizeof(quat::vec3<double>) == 7 * sizeof(double));
 }
+
+}  // namespace test_counts

@@ -7,6 +7,8 @@
 
 #include "support/catch.hpp"
 
+namespace test_deprecated {
+
 namespace {
 
 using namespace quat;
@@ -52,3 +54,5 @@ TEST_CASE("se3::rotation_matrix_of is so3::adjoint of the rotation, to_matrix's 
 #if defined(__GNUC__) || defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
+
+}  // namespace test_deprecated

@@ -35,6 +35,8 @@
 #include "support/dual_number.hpp"
 #include "support/random.hpp"
 
+namespace test_differentiation {
+
 namespace {
 
 using namespace quat;
@@ -51,12 +53,14 @@ S variable(double v, int i) {
     if constexpr (is_jet<S>::value) return S(v, i);
     else return S::variable(v, static_cast<std::size_t>(i));
 }
+// Partial i of output y. Not named partial: quat::test::partial (support/bspline_checks.hpp), found
+// by argument-dependent lookup for a dual, would make the call ambiguous in a unity build.
 template <std::size_t N>
-double partial(const dual<double, N>& y, int i) {
+double derivative(const dual<double, N>& y, int i) {
     return y.d[static_cast<std::size_t>(i)];
 }
 template <int N>
-double partial(const ceres::Jet<double, N>& y, int i) {
+double derivative(const ceres::Jet<double, N>& y, int i) {
     return y.v[i];
 }
 
@@ -75,7 +79,7 @@ jacobian<In, outputs_of<F, In>> autodiff(F f, const std::array<double, In>& x) {
     const auto y = f(input);
     jacobian<In, outputs_of<F, In>> result{};
     for (std::size_t r = 0; r < y.size(); ++r)
-        for (std::size_t i = 0; i < In; ++i) result[r][i] = partial(y[r], static_cast<int>(i));
+        for (std::size_t i = 0; i < In; ++i) result[r][i] = derivative(y[r], static_cast<int>(i));
     return result;
 }
 
@@ -477,3 +481,5 @@ TEST_CASE(
     check_derivatives<6>("se3::exp of the zero twist", se3_exp, zero_twist);
     check_derivatives<6>("se3::log at the zero twist", se3_log, zero_twist);
 }
+
+}  // namespace test_differentiation

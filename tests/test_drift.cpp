@@ -14,6 +14,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_drift {
+
 namespace {
 
 constexpr std::size_t chain_length = 1000000;
@@ -66,3 +68,5 @@ TEST_CASE("without renormalization the norm of a 10^6-product chain drifts", "[d
     INFO("never: " << never.max_norm_error << ", every 16: " << policy.max_norm_error);
     CHECK(never.max_norm_error > policy.max_norm_error);
 }
+
+}  // namespace test_drift

@@ -18,6 +18,8 @@
 #include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_dual_quaternion {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -311,3 +313,7 @@ TEST_CASE("a scalar times a dual quaternion scales all eight components, as GLM'
     constexpr auto doubled = 2.0 * quat::dual_quaterniond::identity();
     static_assert(doubled.real.w == 2 && doubled.dual.w == 0);
 }
+
+}  // namespace test_dual_quaternion
+
+#undef GLM_ENABLE_EXPERIMENTAL

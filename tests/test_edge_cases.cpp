@@ -12,6 +12,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_edge_cases {
+
 namespace {
 
 using quat::frame;
@@ -587,3 +589,5 @@ TEMPLATE_TEST_CASE("an infinite w gives NaN, not a clean rotation, from the angl
         CHECK_FALSE(all_finite(quat::pow(q, T(0.5))));
     }
 }
+
+}  // namespace test_edge_cases

@@ -17,6 +17,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_elementwise {
+
 using quat::quaternion;
 using quat::rotation_matrix;
 using quat::soa_points;
@@ -284,3 +286,5 @@ TEMPLATE_TEST_CASE("struct-of-arrays rotate_each in place: the writable views ar
         CHECK(max_difference(vec3<T>{px[i], py[i], pz[i]}, expected[i]) <=
               rotate_each_vs_rotate<T> * T(i + 1));  // |p| <= i + 1
 }
+
+}  // namespace test_elementwise

@@ -19,6 +19,8 @@
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
 
+namespace test_euclidean_bspline {
+
 namespace {
 
 using namespace quat;
@@ -146,3 +148,5 @@ TEST_CASE("euclidean_bspline domain: NaN from evaluate, an empty optional from t
     CHECK(euclidean_bspline<double, 4>(bad, 0.0, 1.0).try_evaluate(1.0).has_value());
     CHECK(!euclidean_bspline<double, 4>(bad, 0.0, 1.0).try_evaluate(2.0).has_value());
 }
+
+}  // namespace test_euclidean_bspline

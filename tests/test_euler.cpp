@@ -10,6 +10,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_euler {
+
 using quat::euler;
 using quat::frame;
 using quat::quaternion;
@@ -197,3 +199,5 @@ TEST_CASE("auto [a0, a1, a2] = e works for every Euler convention", "[euler][fir
     static_assert(!std::is_constructible_v<euler<double, sequence::xyz>, euler<double>>,
                   "conventions never convert into each other");
 }
+
+}  // namespace test_euler

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <quat/quat.hpp>
@@ -22,6 +23,8 @@
 #include <quat/trajectory.hpp>
 
 #include "support/catch.hpp"
+
+namespace test_generic_scalar {
 
 namespace user {
 
@@ -105,45 +108,68 @@ inline runtime_real log(runtime_real a) noexcept { return runtime_real(std::log(
 
 }  // namespace user
 
+}  // namespace test_generic_scalar
+
+// Specializations of std:: templates: at global scope, outside the file's namespace.
 template <>
-struct std::numeric_limits<user::real> {
+struct std::numeric_limits<test_generic_scalar::user::real> {
     static constexpr bool is_specialized = true;
-    static constexpr user::real epsilon() noexcept {
-        return user::real(std::numeric_limits<double>::epsilon());
+    static constexpr test_generic_scalar::user::real epsilon() noexcept {
+        return test_generic_scalar::user::real(std::numeric_limits<double>::epsilon());
     }
-    static constexpr user::real min() noexcept {
-        return user::real(std::numeric_limits<double>::min());
+    static constexpr test_generic_scalar::user::real min() noexcept {
+        return test_generic_scalar::user::real(std::numeric_limits<double>::min());
     }
-    static constexpr user::real max() noexcept {
-        return user::real(std::numeric_limits<double>::max());
+    static constexpr test_generic_scalar::user::real max() noexcept {
+        return test_generic_scalar::user::real(std::numeric_limits<double>::max());
     }
-    static constexpr user::real infinity() noexcept {
-        return user::real(std::numeric_limits<double>::infinity());
+    static constexpr test_generic_scalar::user::real infinity() noexcept {
+        return test_generic_scalar::user::real(std::numeric_limits<double>::infinity());
     }
-    static constexpr user::real quiet_NaN() noexcept {
-        return user::real(std::numeric_limits<double>::quiet_NaN());
+    static constexpr test_generic_scalar::user::real quiet_NaN() noexcept {
+        return test_generic_scalar::user::real(std::numeric_limits<double>::quiet_NaN());
     }
 };
 
 template <>
-struct std::numeric_limits<user::runtime_real> {
+struct std::numeric_limits<test_generic_scalar::user::runtime_real> {
     static constexpr bool is_specialized = true;
-    static user::runtime_real epsilon() noexcept {
-        return user::runtime_real(std::numeric_limits<double>::epsilon());
+    static test_generic_scalar::user::runtime_real epsilon() noexcept {
+        return test_generic_scalar::user::runtime_real(std::numeric_limits<double>::epsilon());
     }
-    static user::runtime_real min() noexcept {
-        return user::runtime_real(std::numeric_limits<double>::min());
+    static test_generic_scalar::user::runtime_real min() noexcept {
+        return test_generic_scalar::user::runtime_real(std::numeric_limits<double>::min());
     }
-    static user::runtime_real max() noexcept {
-        return user::runtime_real(std::numeric_limits<double>::max());
+    static test_generic_scalar::user::runtime_real max() noexcept {
+        return test_generic_scalar::user::runtime_real(std::numeric_limits<double>::max());
     }
-    static user::runtime_real infinity() noexcept {
-        return user::runtime_real(std::numeric_limits<double>::infinity());
+    static test_generic_scalar::user::runtime_real infinity() noexcept {
+        return test_generic_scalar::user::runtime_real(std::numeric_limits<double>::infinity());
     }
-    static user::runtime_real quiet_NaN() noexcept {
-        return user::runtime_real(std::numeric_limits<double>::quiet_NaN());
+    static test_generic_scalar::user::runtime_real quiet_NaN() noexcept {
+        return test_generic_scalar::user::runtime_real(std::numeric_limits<double>::quiet_NaN());
     }
 };
+
+// Catch prints a quaternion of these scalars as {?}, having no operator<< for it. In a unity build
+// quat/io.hpp may be in the same translation unit, and its operator<< for quaternion<T>, which
+// accepts any T, would make Catch instantiate it for scalars that cannot be printed.
+namespace Catch {
+template <>
+struct StringMaker<quat::quaternion<test_generic_scalar::user::real>> {
+    static std::string convert(const quat::quaternion<test_generic_scalar::user::real>&) {
+        return Detail::unprintableString;
+    }
+};
+template <>
+struct StringMaker<quat::quaternion<test_generic_scalar::user::runtime_real>> {
+    static std::string convert(const quat::quaternion<test_generic_scalar::user::runtime_real>&) {
+        return Detail::unprintableString;
+    }
+};
+}  // namespace Catch
+
+namespace test_generic_scalar {
 
 namespace {
 
@@ -496,3 +522,5 @@ TEMPLATE_TEST_CASE("the keyframe paths of rigid motions take a user-defined scal
         CHECK(near(c.body_angular_acceleration.z, cd.body_angular_acceleration.z));
     }
 }
+
+}  // namespace test_generic_scalar

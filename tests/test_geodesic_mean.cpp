@@ -21,6 +21,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_geodesic_mean {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -302,3 +304,5 @@ TEST_CASE("try_geodesic_mean of motions refuses what has no unique mean", "[geod
     const std::vector<dual_quaternion<double>> long_one{turn(0), turn(1) * 2.0};
     CHECK_FALSE(quat::try_geodesic_mean(long_one));
 }
+
+}  // namespace test_geodesic_mean

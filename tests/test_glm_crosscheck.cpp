@@ -23,6 +23,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_glm_crosscheck {
+
 using quat::from_glm;
 using quat::quaternion;
 using quat::to_glm;
@@ -190,3 +192,5 @@ TEMPLATE_TEST_CASE("exp and log agree with glm::exp and glm::log where GLM's are
     CHECK(quat::exp(tiny).x == T(1e-20));
     CHECK(glm::exp(to_glm(tiny)).x == 0);
 }
+
+}  // namespace test_glm_crosscheck

@@ -13,6 +13,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_hand_eye {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -448,3 +450,5 @@ TEST_CASE("rotation_first: more accurate in rotation than the joint solution on 
     CAPTURE(std::sqrt(joint / 40), std::sqrt(first / 40));
     CHECK(std::sqrt(first / 40) * 1.5 <= std::sqrt(joint / 40));
 }
+
+}  // namespace test_hand_eye

@@ -14,6 +14,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_hand_eye_from_poses {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -384,3 +386,5 @@ TEST_CASE("a release-build hand_eye_from_poses of lists of different sizes is Na
     CHECK(all_nan(quat::hand_eye_from_poses(fewer, p.hands)));
 }
 #endif
+
+}  // namespace test_hand_eye_from_poses

@@ -17,6 +17,8 @@
 #include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_homogeneous_matrix {
+
 using quat::dual_quaternion;
 using quat::homogeneous_matrix;
 using quat::quaternion;
@@ -271,3 +273,5 @@ TEMPLATE_TEST_CASE("a translation with components up to max() reads back through
     const dual_quaternion<T> beyond{quaternion<T>::identity(), quaternion<T>{0, largest, 0, 0}};
     CHECK(std::isinf(quat::translation_of(beyond).x));
 }
+
+}  // namespace test_homogeneous_matrix

@@ -19,6 +19,8 @@
 #include "support/catch.hpp"
 #include "support/hostile.hpp"
 
+namespace test_hostile_estimation {
+
 namespace {
 
 using namespace quat::test::hostile;  // NOLINT(google-build-using-namespace): the harness
@@ -350,3 +352,5 @@ HOSTILE("hand_eye_from_poses", "hand_eye") {
                                          quat::try_hand_eye_from_poses(h, s));
                         });
 }
+
+}  // namespace test_hostile_estimation

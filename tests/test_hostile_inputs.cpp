@@ -28,6 +28,8 @@
 #include "support/catch.hpp"
 #include "support/hostile.hpp"
 
+namespace test_hostile_inputs {
+
 namespace {
 using namespace quat::test::hostile;  // NOLINT(google-build-using-namespace): the harness
 }  // namespace
@@ -1311,3 +1313,7 @@ TEMPLATE_TEST_CASE("hostile: extreme magnitudes, nearest_rotation and rotation_s
         CHECK(made.has_value());
     }
 }
+
+}  // namespace test_hostile_inputs
+
+#undef EXPECT_SAME

@@ -12,6 +12,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_interop {
+
 using quat::quaternion;
 using quat::rotation_matrix;
 using quat::vec3;
@@ -142,3 +144,5 @@ TEST_CASE("matrix<T, R, C> converts to and from Eigen by element", "[interop][ei
     const quat::matrix3<double> jacobian = quat::to_matrix3(quat::from_eigen(square));
     CHECK(jacobian == quat::matrix3<double>::identity() * 2.0);
 }
+
+}  // namespace test_interop

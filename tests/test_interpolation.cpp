@@ -15,6 +15,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_interpolation {
+
 using quat::from_glm;
 using quat::quaternion;
 using quat::to_glm;
@@ -462,3 +464,5 @@ TEST_CASE("exp and log are found by argument-dependent lookup beside std::exp an
     constexpr quat::quatd zero = quat::log(quat::quatd{1, 0, 0, 0});
     static_assert(zero == quat::quatd{0, 0, 0, 0});
 }
+
+}  // namespace test_interpolation

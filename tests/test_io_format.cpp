@@ -22,6 +22,8 @@
 #include "support/catch.hpp"
 #include "support/read_back.hpp"
 
+namespace test_io_format {
+
 using quat::axis_angle;
 using quat::euler;
 using quat::euler_extraction;
@@ -113,11 +115,11 @@ TEMPLATE_TEST_CASE("std::format's default reads back to the same values", "[io][
         const auto m = values.next_matrix(scale);
         const auto r = values.next_axis_angle(scale);
         const auto e = values.next_euler(scale);
-        CHECK(read_back<T>(std::format("{}", v), vec3_pattern) == components(v));
-        CHECK(read_back<T>(std::format("{}", q), quaternion_pattern) == components(q));
-        CHECK(read_back<T>(std::format("{}", m), matrix_pattern) == components(m));
-        CHECK(read_back<T>(std::format("{}", r), axis_angle_pattern) == components(r));
-        CHECK(read_back<T>(std::format("{}", e), euler_pattern) == components(e));
+        CHECK(read_back<T>(std::format("{}", v), vec3_pattern) == printed_components(v));
+        CHECK(read_back<T>(std::format("{}", q), quaternion_pattern) == printed_components(q));
+        CHECK(read_back<T>(std::format("{}", m), matrix_pattern) == printed_components(m));
+        CHECK(read_back<T>(std::format("{}", r), axis_angle_pattern) == printed_components(r));
+        CHECK(read_back<T>(std::format("{}", e), euler_pattern) == printed_components(e));
         CHECK(std::format("{}", q) ==
               std::format("quaternion{{{}, {}, {}, {}}}", q.w, q.x, q.y, q.z));
     }
@@ -177,5 +179,7 @@ TEST_CASE("std::format prints wide strings", "[io][format]") {
     CHECK(std::format(L"{:.1f} {:>4}", vec3<float>{1, 2, 3}, sequence::zxz) ==
           L"vec3{1.0, 2.0, 3.0}  zxz");
 }
+
+}  // namespace test_io_format
 
 #endif  // __cpp_lib_format

@@ -13,6 +13,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_keyframe_slerp {
+
 using quat::quaternion;
 using quat::test::eps;
 
@@ -145,3 +147,5 @@ TEST_CASE("keyframe_slerp takes times and t of another precision than its rotati
         CHECK(q == quat::keyframe_slerp(times, rotations, float(t)));
     }
 }
+
+}  // namespace test_keyframe_slerp

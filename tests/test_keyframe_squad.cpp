@@ -18,6 +18,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_keyframe_squad {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -301,3 +303,5 @@ TEST_CASE("keyframe_squad takes times and t of another precision than its rotati
         CHECK(q == quat::keyframe_squad(times, rotations, float(t)));
     }
 }
+
+}  // namespace test_keyframe_squad

@@ -10,6 +10,8 @@
 #include "support/tolerance.hpp"
 #include "support/wide_float.hpp"
 
+namespace test_kinematics {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -225,3 +227,5 @@ TEMPLATE_TEST_CASE("angular velocity near a half turn and with a negative, zero 
     CHECK(std::isnan(quat::integrate_body(q0, vec3<T>{nan, 0, 0}, T(1)).w));
     CHECK(std::isnan(quat::integrate_world(q0, vec3<T>{0, 0, 1}, nan).w));
 }
+
+}  // namespace test_kinematics

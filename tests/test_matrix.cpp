@@ -8,6 +8,8 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 
+namespace test_matrix {
+
 using quat::matrix;
 using quat::matrix3;
 using quat::vec3;
@@ -117,3 +119,5 @@ TEST_CASE("float and long double matrices instantiate", "[matrix]") {
     static_assert(l(2, 0) == 3.0L);
     CHECK(f(0, 1) == 0.0f);
 }
+
+}  // namespace test_matrix

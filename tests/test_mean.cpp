@@ -18,6 +18,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_mean {
+
 using quat::quaternion;
 using quat::test::eps;
 
@@ -317,3 +319,5 @@ TEST_CASE("mixed precisions: float rotations with double weights and the reverse
     CHECK(quat::mean(rotations, wf) == quat::mean(rotations, wd));
     CHECK(quat::try_mean(rotations, wf) == quat::try_mean(rotations, wd));
 }
+
+}  // namespace test_mean

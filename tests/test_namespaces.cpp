@@ -15,6 +15,8 @@
 // The user's own constant, at global scope, before and after the using-directive.
 constexpr float pi = 3.14159f;
 
+namespace test_namespaces {
+
 using namespace quat;  // NOLINT(google-build-using-namespace): the case under test
 
 namespace {
@@ -50,3 +52,5 @@ TEST_CASE("A global pi of the user's stays unambiguous after using namespace qua
     const double local_numbers_pi = pi_v<double>;
     CHECK(local_numbers_pi == ::quat::numbers::pi);
 }
+
+}  // namespace test_namespaces

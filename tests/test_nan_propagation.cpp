@@ -16,6 +16,8 @@
 
 #include "support/catch.hpp"
 
+namespace test_nan_propagation {
+
 namespace {
 
 using quat::axis_angle;
@@ -479,3 +481,5 @@ TEMPLATE_TEST_CASE(
         CHECK_FALSE(quat::try_geodesic_mean(motions).has_value());
     }
 }
+
+}  // namespace test_nan_propagation

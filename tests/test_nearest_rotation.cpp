@@ -9,6 +9,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_nearest_rotation {
+
 using matrix = quat::rotation_matrix<double>;
 using quat::test::max_difference;
 
@@ -123,3 +125,5 @@ TEMPLATE_TEST_CASE("FOAM is used only where the answer is well separated, and is
     }
     CHECK(used > 2000);
 }
+
+}  // namespace test_nearest_rotation

@@ -17,6 +17,8 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 
+namespace test_no_allocation {
+
 TEST_CASE("no operation allocates: scalar, checked and batch paths", "[allocation]") {
     quat::test::random_rotations random;
     const quat::quatf a = random.unit_quaternion<float>(), b = random.unit_quaternion<float>();
@@ -212,3 +214,5 @@ TEST_CASE("keyframe paths of rigid motions allocate nothing when evaluated", "[a
     CHECK(allocations.load() == built);
     CHECK(std::isfinite(sink));
 }
+
+}  // namespace test_no_allocation

@@ -12,6 +12,8 @@
 #include "support/same_bits.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_quaternion {
+
 using quat::quatd;
 using quat::quaternion;
 using quat::vec3;
@@ -304,3 +306,5 @@ TEST_CASE("rotation_x<float>(numbers::pi) is a quatf; the angle sets the precisi
     CHECK(half_turn.y == 1.0f);
     static_assert(quat::rotation_z<float>(0.0) == quat::quatf::identity());
 }
+
+}  // namespace test_quaternion

@@ -12,6 +12,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_random {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::tolerance;
@@ -184,3 +186,5 @@ TEST_CASE("random_rotation<float> keeps w >= 0 at the ends of the third uniform"
         CHECK(std::abs(quat::norm(q) - 1.0f) <= 4 * std::numeric_limits<float>::epsilon());
     }
 }
+
+}  // namespace test_random

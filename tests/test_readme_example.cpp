@@ -8,6 +8,8 @@
 
 #include "support/catch.hpp"
 
+namespace test_readme_example {
+
 TEST_CASE("the README example works as written", "[readme]") {
     std::ostringstream printed;
     std::streambuf* const console = std::cout.rdbuf(printed.rdbuf());
@@ -41,3 +43,5 @@ TEST_CASE("the README example works as written", "[readme]") {
     CHECK(orthogonality_error(repaired) < 1e-15);
     CHECK_FALSE(checked.has_value());
 }
+
+}  // namespace test_readme_example

@@ -11,6 +11,8 @@
 #include "support/rigid_reference.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_rigid_motions {
+
 using quat::dual_quaternion;
 using quat::soa_points;
 using quat::vec3;
@@ -130,3 +132,5 @@ TEMPLATE_TEST_CASE("struct-of-arrays transform in place: soa_points<T> is also t
     quat::transform(quat::to_homogeneous(quat::inverse(dq)), points, points);  // and back
     for (std::size_t i = 0; i < n; ++i) CHECK(std::abs(x[i] - T(i)) <= 1024 * eps<T>);
 }
+
+}  // namespace test_rigid_motions

@@ -10,6 +10,8 @@
 #include "support/catch.hpp"
 #include "support/same_bits.hpp"
 
+namespace test_rotation_matrix {
+
 using matrix = quat::rotation_matrix<double>;
 using quat::vec3;
 
@@ -74,3 +76,5 @@ TEST_CASE("m * v is rotate(m, v), bit for bit, and Eigen's Matrix3 * Vector3",
         CHECK(std::abs(product.z - reference.z()) <= bound);
     }
 }
+
+}  // namespace test_rotation_matrix

@@ -20,6 +20,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_rotation_spline {
+
 using quat::quaternion;
 using quat::rotation_spline;
 using quat::vec3;
@@ -719,3 +721,5 @@ TEST_CASE("rotation_spline with times and rotations of different sizes reads nei
     CHECK_FALSE(rotation_spline<double>::try_make(c_times, c_rotations));
 }
 #endif
+
+}  // namespace test_rotation_spline

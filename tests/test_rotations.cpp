@@ -13,6 +13,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_rotations {
+
 namespace {
 
 using quat::test::max_difference;
@@ -426,3 +428,5 @@ TEMPLATE_TEST_CASE("struct-of-arrays rotate in place: soa_points<T> is also the 
     for (std::size_t i = 0; i < n; ++i)
         CHECK(std::abs(x[i] - T(i)) <= T(64) * std::numeric_limits<T>::epsilon());
 }
+
+}  // namespace test_rotations

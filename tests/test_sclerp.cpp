@@ -16,6 +16,8 @@
 #include "support/rigid_reference.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_sclerp {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -178,3 +180,5 @@ TEST_CASE("sclerp is constexpr", "[sclerp][constexpr]") {
     static_assert(middle.real.z > 0.7 && middle.real.z < 0.71);
     STATIC_REQUIRE(middle.dual.w < 0);
 }
+
+}  // namespace test_sclerp

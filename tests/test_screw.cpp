@@ -10,6 +10,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_screw {
+
 using quat::dual_quaternion;
 using quat::quaternion;
 using quat::vec3;
@@ -159,3 +161,5 @@ TEST_CASE("to_screw of a subnormal turn with a slide across its axis", "[screw][
         quat::to_dual_quaternion(quaternion<double>{1, d / 2, 0, 0}, vec3<double>{0, 1, 0}));
     CHECK(std::isinf(far.moment.y));
 }
+
+}  // namespace test_screw

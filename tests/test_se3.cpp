@@ -25,6 +25,8 @@
 #include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 
+namespace test_se3 {
+
 namespace {
 
 using namespace quat;
@@ -563,3 +565,5 @@ TEST_CASE("se3 the Jacobians of exp and log are right_jacobian and its inverse, 
         CHECK(log_jacobian == se3::right_jacobian_inverse(back));
     }
 }
+
+}  // namespace test_se3

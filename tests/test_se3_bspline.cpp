@@ -27,6 +27,8 @@
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
 
+namespace test_se3_bspline {
+
 namespace {
 
 using namespace quat;
@@ -303,3 +305,5 @@ TEST_CASE(
     static_assert(noexcept(spline.evaluate(0.0))&& noexcept(spline.try_evaluate(0.0)));
     static_assert(std::is_trivially_copyable_v<se3_bspline<double, 5>>);
 }
+
+}  // namespace test_se3_bspline

@@ -21,6 +21,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_se3_keyframe_path {
+
 using quat::dual_quaternion;
 using quat::keyframe_path_state;
 using quat::quaternion;
@@ -349,3 +351,5 @@ TEMPLATE_TEST_CASE("se3_keyframe_path::try_make is empty wherever a value would 
     quat::test::random_rotations random;
     quat::test::check_try_make_bounds<se3_keyframe_path, TestType>(random);
 }
+
+}  // namespace test_se3_keyframe_path

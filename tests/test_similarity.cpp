@@ -12,6 +12,8 @@
 #include "support/rigid_reference.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_similarity {
+
 using quat::dual_quaternion;
 using quat::similarity;
 using quat::vec3;
@@ -149,3 +151,5 @@ TEST_CASE("the identity, and a scale without an inverse", "[similarity]") {
     CHECK(quat::transform(flip, p) == p * -2.0);
     CHECK(quat::transform(quat::inverse(flip), quat::transform(flip, p)) == p);
 }
+
+}  // namespace test_similarity

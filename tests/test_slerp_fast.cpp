@@ -12,6 +12,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_slerp_fast {
+
 namespace {
 
 // The documented bounds in radians (include/quat/paths/slerp_fast.hpp); the benchmark labels
@@ -163,3 +165,5 @@ TEST_CASE(
     const quat::rotation_matrix<float> m = quat::to_matrix(a);
     CHECK(quat::try_to_quaternion(m, 0.125) == quat::try_to_quaternion(m, 0.125f));
 }
+
+}  // namespace test_slerp_fast

@@ -31,6 +31,8 @@
 #include "support/jacobian_check.hpp"
 #include "support/random.hpp"
 
+namespace test_so3 {
+
 namespace {
 
 using namespace quat;
@@ -717,3 +719,5 @@ TEST_CASE("so3 under using namespace quat::so3: so3::log(q) and so3::inverse(q),
     const quatd quaternion_log = quat::log(positive);
     CHECK(std::abs(rotation_vector.x - 2 * quaternion_log.x) <= 1e-15);
 }
+
+}  // namespace test_so3

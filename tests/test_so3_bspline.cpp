@@ -16,6 +16,8 @@
 #include "support/catch.hpp"
 #include "support/random.hpp"
 
+namespace test_so3_bspline {
+
 namespace {
 
 using namespace quat;
@@ -137,3 +139,5 @@ TEST_CASE("so3_bspline: noexcept, a trivially copyable view, constexpr evaluatio
     CHECK(std::abs(q.w - std::sqrt(0.5)) <= 2e-16);
     CHECK(std::abs(q.z - std::sqrt(0.5)) <= 2e-16);
 }
+
+}  // namespace test_so3_bspline

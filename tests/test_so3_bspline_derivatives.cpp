@@ -31,6 +31,8 @@
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
 
+namespace test_so3_bspline_derivatives {
+
 namespace {
 
 using namespace quat;
@@ -304,3 +306,5 @@ TEST_CASE("so3_bspline: the O(K) recurrences agree with the O(K^2) product rule 
         check_against_textbook<6>(set, 2.0, 0.3125);
     }
 }
+
+}  // namespace test_so3_bspline_derivatives

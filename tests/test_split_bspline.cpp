@@ -18,6 +18,8 @@
 #include "support/random.hpp"
 #include "support/time_differences.hpp"
 
+namespace test_split_bspline {
+
 namespace {
 
 using namespace quat;
@@ -137,3 +139,5 @@ TEST_CASE(
     CHECK(!with_nan.try_evaluate(0.5).has_value());
     CHECK(with_nan.try_evaluate(1.5).has_value());
 }
+
+}  // namespace test_split_bspline

@@ -18,6 +18,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_split_keyframe_path {
+
 using quat::dual_quaternion;
 using quat::keyframe_path_state;
 using quat::split_keyframe_path;
@@ -147,3 +149,5 @@ TEMPLATE_TEST_CASE("split_keyframe_path::try_make is empty wherever a value woul
     quat::test::random_rotations random;
     quat::test::check_try_make_bounds<split_keyframe_path, TestType>(random);
 }
+
+}  // namespace test_split_keyframe_path

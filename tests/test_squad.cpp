@@ -16,6 +16,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_squad {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -234,3 +236,5 @@ TEMPLATE_TEST_CASE("squad takes t of another precision than its quaternions", "[
               quat::squad(q[1], a1, a2, q[2], T(t_float)));
     }
 }
+
+}  // namespace test_squad

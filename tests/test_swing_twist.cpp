@@ -8,6 +8,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_swing_twist {
+
 using quat::quaternion;
 using quat::vec3;
 using quat::test::eps;
@@ -167,3 +169,5 @@ TEMPLATE_TEST_CASE("try_swing_twist rejects a zero or non-finite axis or q", "[s
     CHECK(std::isnan(quat::swing_twist(q, vec3<T>{0, 0, 0}).twist.w));
     CHECK(std::isnan(quat::swing_twist(quaternion<T>{nan, 0, 0, 1}, vec3<T>{0, 0, 1}).swing.w));
 }
+
+}  // namespace test_swing_twist

@@ -8,6 +8,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_thesis_notes {
+
 using quat::axis_angle;
 using quat::quatd;
 using quat::rotation_matrix;
@@ -220,3 +222,5 @@ TEST_CASE("6. homogeneous first: the thesis's 4x4 matrices are quat's with coord
         CHECK(max_difference(projected, quat::transform(motion, u)) <= 8 * tol::rotate);
     }
 }
+
+}  // namespace test_thesis_notes

@@ -9,6 +9,8 @@
 #include "support/random.hpp"
 #include "support/tolerance.hpp"
 
+namespace test_vec3 {
+
 using quat::vec3;
 
 static_assert(std::is_trivially_default_constructible_v<vec3<double>>, "a plain struct");
@@ -127,3 +129,5 @@ TEMPLATE_TEST_CASE("lerp of points is std::lerp component by component, exact at
         std::is_same_v<decltype(quat::lerp(vec3<float>{}, vec3<float>{}, 0.5)), vec3<float>>,
         "t converts to the points' precision");
 }
+
+}  // namespace test_vec3

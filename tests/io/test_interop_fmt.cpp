@@ -22,6 +22,8 @@
 #include "support/catch.hpp"
 #include "support/read_back.hpp"
 
+namespace test_interop_fmt {
+
 using quat::axis_angle;
 using quat::euler;
 using quat::euler_extraction;
@@ -99,11 +101,11 @@ TEMPLATE_TEST_CASE("fmt::format's default reads back to the same values", "[io][
         const auto m = values.next_matrix(scale);
         const auto r = values.next_axis_angle(scale);
         const auto e = values.next_euler(scale);
-        CHECK(read_back<T>(fmt::format("{}", v), vec3_pattern) == components(v));
-        CHECK(read_back<T>(fmt::format("{}", q), quaternion_pattern) == components(q));
-        CHECK(read_back<T>(fmt::format("{}", m), matrix_pattern) == components(m));
-        CHECK(read_back<T>(fmt::format("{}", r), axis_angle_pattern) == components(r));
-        CHECK(read_back<T>(fmt::format("{}", e), euler_pattern) == components(e));
+        CHECK(read_back<T>(fmt::format("{}", v), vec3_pattern) == printed_components(v));
+        CHECK(read_back<T>(fmt::format("{}", q), quaternion_pattern) == printed_components(q));
+        CHECK(read_back<T>(fmt::format("{}", m), matrix_pattern) == printed_components(m));
+        CHECK(read_back<T>(fmt::format("{}", r), axis_angle_pattern) == printed_components(r));
+        CHECK(read_back<T>(fmt::format("{}", e), euler_pattern) == printed_components(e));
         CHECK(fmt::format("{}", q) ==
               fmt::format("quaternion{{{}, {}, {}, {}}}", q.w, q.x, q.y, q.z));
         CHECK(fmt::format("{:.4e}", q) ==
@@ -141,3 +143,5 @@ TEST_CASE("fmt::format prints wide strings", "[io][fmt]") {
     CHECK(fmt::format(L"{:.1f} {:>4}", vec3<float>{1, 2, 3}, sequence::zxz) ==
           L"vec3{1.0, 2.0, 3.0}  zxz");
 }
+
+}  // namespace test_interop_fmt

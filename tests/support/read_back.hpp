@@ -35,25 +35,28 @@ std::optional<std::vector<T>> read_back(const std::string& text, std::string_vie
 }
 
 /// The components of each type in the order they are printed, with the pattern of their text.
+/// (Not named components: support/bspline_checks.hpp's quat::test::components of a vec3, a
+/// std::array, would make calls ambiguous where both headers are in one translation unit, as in a
+/// unity build.)
 /// @{
 template <class T>
-std::vector<T> components(const vec3<T>& v) {
+std::vector<T> printed_components(const vec3<T>& v) {
     return {v.x, v.y, v.z};
 }
 template <class T>
-std::vector<T> components(const quaternion<T>& q) {
+std::vector<T> printed_components(const quaternion<T>& q) {
     return {q.w, q.x, q.y, q.z};
 }
 template <class T>
-std::vector<T> components(const rotation_matrix<T>& m) {
+std::vector<T> printed_components(const rotation_matrix<T>& m) {
     return {m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)};
 }
 template <class T>
-std::vector<T> components(const axis_angle<T>& rotation) {
+std::vector<T> printed_components(const axis_angle<T>& rotation) {
     return {rotation.axis.x, rotation.axis.y, rotation.axis.z, rotation.angle};
 }
 template <class T, sequence S, frame F>
-std::vector<T> components(const euler<T, S, F>& e) {
+std::vector<T> printed_components(const euler<T, S, F>& e) {
     return {e[0], e[1], e[2]};
 }
 
