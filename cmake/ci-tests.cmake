@@ -155,6 +155,9 @@ if(QUAT_TEST_TIDY)
             list(APPEND _quat_tidy_sources "${PROJECT_SOURCE_DIR}/${_tu}")
         endif()
     endforeach()
+    # clang-tidy reads each file's command from compile_commands.json, which a unity build lists
+    # only by its combined units: these files are compiled alone.
+    set_source_files_properties(${_quat_tidy_sources} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
     # Without CMAKE_CXX_STANDARD the compile commands may carry no -std (g++ defaults to C++17,
     # clang-tidy 14 to C++14), so state it.
     set(_quat_tidy_std "")

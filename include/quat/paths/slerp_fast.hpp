@@ -1,11 +1,10 @@
 // Slerp approximations without trigonometry, for when the exact slerp (paths/interpolation.hpp)
-// costs too
-// much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within 5.9e-4 rad
-// of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8 rad in
-// double and 4e-7 rad in float). nlerp (paths/interpolation.hpp) is the cheap end of the family
-// (0.14
-// rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6 samples by
-// `quat_accuracy --slerp-fast`; the times are the benchmarks slerp_fast/quat/<method>/<type>.
+// costs too much: corrected_nlerp, nlerp with a polynomial correction of t (rotation angle within
+// 5.9e-4 rad of slerp), and slerp_fast, polynomials in the cosine of half the angle (within 3.4e-8
+// rad in double and 4e-7 rad in float). nlerp (paths/interpolation.hpp) is the cheap end of the
+// family (0.14 rad). The bounds are asserted by tests/test_slerp_fast.cpp and measured on 10^6
+// samples by `quat_accuracy --slerp-fast`; the times are the benchmarks
+// slerp_fast/quat/<method>/<type>.
 #ifndef QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
 #define QUAT_PATHS_SLERP_FAST_HPP_INCLUDED
 
