@@ -24,7 +24,7 @@ file(MAKE_DIRECTORY "${WORK_DIR}")
 file(GLOB _units "${SOURCE_DIR}/tests/warnings/*.cpp")  # instantiate*.cpp: one per area
 list(SORT _units)
 set(_instantiations ${_units})
-set(_all_headers "")
+set(_all_headers "")  # the headers' includes, for the unit that has them all (ALONE off)
 foreach(_header IN LISTS _headers)
     # An old include path (docs/architecture.md) is a comment and one #include of the header that
     # moved, which is compiled alone here under its own name; old_include_paths compiles the old one.
@@ -69,13 +69,16 @@ endforeach()
 # CMAKE_HOST_SYSTEM_PROCESSOR is not set in script mode (cmake -P); ask the host.
 cmake_host_system_information(RESULT _host_processor QUERY OS_PLATFORM)
 if(NOT STANDARDS AND _host_processor MATCHES "x86_64|AMD64")
+    set(_batch_units "")
+    foreach(_unit IN LISTS _instantiations)
+        file(STRINGS "${_unit}" _batch REGEX "#include <quat/(batch/|quat\\.hpp)")
+        if(_batch)
+            list(APPEND _batch_units "${_unit}")
+        endif()
+    endforeach()
     foreach(_compiler IN LISTS COMPILERS)
         foreach(_arch -mavx -march=x86-64-v3 -march=skylake-avx512)
-            foreach(_unit IN LISTS _instantiations)
-                file(STRINGS "${_unit}" _batch REGEX "#include <quat/(batch/|quat\\.hpp)")
-                if(NOT _batch)
-                    continue()
-                endif()
+            foreach(_unit IN LISTS _batch_units)
                 execute_process(COMMAND "${_compiler}" -std=c++17 ${_arch} ${_flags} ${_includes}
                                         "${_unit}"
                                 RESULT_VARIABLE _result OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
