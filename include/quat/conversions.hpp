@@ -49,7 +49,14 @@ template <class T>
         q = {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1),
              T(1) - m(0, 0) - m(1, 1) + m(2, 2)};
     }
-    return normalize(q.w < T(0) ? -q : q);
+    // For a rotation |4 |c| q|^2 = 16 c^2 is in [4, 16] (c^2 >= 1/4 as the largest of four
+    // squares summing to 1), so one division and four multiplications scale it, rather than
+    // normalize's four divisions, which bounded a loop of conversions (to_quaternion_each). Off
+    // the precondition, where |q|^2 leaves the normal range, normalize rescales.
+    const T s = squared_norm(q);
+    if (!detail::in_normal_range(s)) return normalize(q.w < T(0) ? -q : q);
+    const T scale = (q.w < T(0) ? T(-1) : T(1)) / detail::sqrt(s);
+    return q * scale;
 }
 
 /// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for

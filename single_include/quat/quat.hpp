@@ -1562,7 +1562,14 @@ template <class T>
         q = {m(1, 0) - m(0, 1), m(0, 2) + m(2, 0), m(1, 2) + m(2, 1),
              T(1) - m(0, 0) - m(1, 1) + m(2, 2)};
     }
-    return normalize(q.w < T(0) ? -q : q);
+    // For a rotation |4 |c| q|^2 = 16 c^2 is in [4, 16] (c^2 >= 1/4 as the largest of four
+    // squares summing to 1), so one division and four multiplications scale it, rather than
+    // normalize's four divisions, which bounded a loop of conversions (to_quaternion_each). Off
+    // the precondition, where |q|^2 leaves the normal range, normalize rescales.
+    const T s = squared_norm(q);
+    if (!detail::in_normal_range(s)) return normalize(q.w < T(0) ? -q : q);
+    const T scale = (q.w < T(0) ? T(-1) : T(1)) / detail::sqrt(s);
+    return q * scale;
 }
 
 /// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for
@@ -3432,12 +3439,16 @@ using float16 = float __attribute__((vector_size(64)));
 }
 
 // The points before the first one whose floats start on a 64-byte boundary of `in` (at most 15:
-// 12 k bytes meet every multiple of 4 modulo 64), or n when there are fewer.
+// 12 k bytes meet every multiple of 4 modulo 64), or n when there are fewer; 0 when `in` is not
+// 4-byte aligned, since no point of it starts a line. In closed form rather than a search, which
+// cost up to 15 dependent steps a call:
+// 12 k = -offset (mod 64) <=> 3 k = -offset / 4 (mod 16) <=> k = 11 (16 - offset / 4) (mod 16),
+// since 3 * 11 = 1 (mod 16).
 [[nodiscard]] inline std::size_t points_before_line(const float* in, std::size_t n) noexcept {
     const std::size_t offset = reinterpret_cast<std::uintptr_t>(in) % 64;
-    std::size_t k = 0;
-    while (k < n && (offset + 12 * k) % 64 != 0) ++k;
-    return k;
+    if (offset % 4 != 0) return 0;
+    const std::size_t k = (11 * (16 - offset / 4)) % 16;
+    return k < n ? k : n;
 }
 
 // Register R's lanes of column J of m (J = 3: of t) from `entries` (m's rows, then t): lane l
@@ -3472,6 +3483,7 @@ template <bool Translate>
 [[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
                                                           const vec3<float>& t, const float* in,
                                                           float* out, std::size_t n) noexcept {
+    if (n < 16) return 0;
     // Lane l of register r is float 16 r + l of the group: coordinate (16 r + l) % 3, that is
     // (r + l) % 3. The coefficients are permutes of one register holding m's rows and t.
     const float16 entries = {m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1),
@@ -3486,8 +3498,13 @@ template <bool Translate>
          row_cycle<2, 2>(entries, lanes)}};
     const float16 offset[3] = {row_cycle<0, 3>(entries, lanes), row_cycle<1, 3>(entries, lanes),
                                row_cycle<2, 3>(entries, lanes)};
-    // Group g of points, starting at point `first`.
-    auto group = [&](std::size_t first) noexcept {
+    // The groups start at 0, then (out of place) at the input's first line, every 16 points on,
+    // and last at n - 16. One loop body, not a lambda called per group: in a large translation
+    // unit g++ 12 left such a lambda out of line, reloading the coefficients at every call (64
+    // points in quat_bench took 0.67 ns a point against 0.25 for a plain loop).
+    const bool in_place = in == out;
+    const std::size_t line = in_place ? 0 : points_before_line(in, n);
+    for (std::size_t first = 0;;) {
         const float* p = in + 3 * first;
         const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
         // x, y, z of each lane's point: floats 3 (g / 3) + 0, 1, 2 of the group (0-15 in a, 16-31
@@ -3522,17 +3539,13 @@ template <bool Translate>
         std::memcpy(out + 3 * first, &oa, sizeof oa);
         std::memcpy(out + 3 * first + 16, &ob, sizeof ob);
         std::memcpy(out + 3 * first + 32, &oc, sizeof oc);
-    };
-    if (n < 16) return 0;
-    std::size_t i = 0;
-    if (in != out) {
-        i = points_before_line(in, n);
-        if (i != 0) group(0);
+        std::size_t next = first < line ? line : first + 16;
+        if (next + 16 > n) {
+            if (in_place || first + 16 == n) return first + 16;
+            next = n - 16;
+        }
+        first = next;
     }
-    for (; i + 16 <= n; i += 16) group(i);
-    if (in == out) return i;
-    if (i != n) group(n - 16);
-    return n;
 }
 
 #endif  // __AVX512F__
@@ -9172,9 +9185,12 @@ template <class T>
     const T k = (k00 + k01 * w) + x * ((k10 + k11 * w) + x * (k20 + k21 * w));
     const T tau = t - (t - T(0.5)) * w * k;
     // |(1 - tau) a + tau b|^2 = 1 - 2 tau (1 - tau) (1 - x) for unit a and b: exactly 1 at tau = 0
-    // and tau = 1, where the division then leaves the end point as it is.
+    // and tau = 1, where the scaling then leaves the end point as it is. One division, folded
+    // into the two weights, rather than one for each of the four components.
     const T squared_length = T(1) + (x * T(2) - T(2)) * (tau - tau * tau);
-    return (a * (T(1) - tau) + b * (tau * detail::sign_factor(d))) / detail::sqrt(squared_length);
+    const T inverse_length = T(1) / detail::sqrt(squared_length);
+    return a * ((T(1) - tau) * inverse_length) +
+           b * (tau * detail::sign_factor(d) * inverse_length);
 }
 
 /// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
