@@ -3272,6 +3272,10 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
 // The last resort where no cache size can be read: 16 MiB of output.
 inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
 
+// No output smaller than this is streamed, whatever the cache size says: it stays in any
+// x86 core's L2.
+inline constexpr std::size_t minimum_streaming_bytes = std::size_t(128) << 10;
+
 // The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
 // sysconf, whose L3 figure virtual machines may invent (320 MiB on a Zen 4 guest whose cpuid and
 // lscpu say 32 MiB), and which would bring <unistd.h>'s names into every user's code: streaming
@@ -3286,9 +3290,18 @@ inline std::size_t last_level_cache_bytes() noexcept {
 // the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
 // each line only adds a third to the memory traffic; below that plain stores, which leave the
 // result in cache. Without a cache size, the fixed default_streaming_bytes.
+// Never below minimum_streaming_bytes.
 inline std::size_t streaming_threshold_bytes() noexcept {
     const std::size_t cache = last_level_cache_bytes();
-    return cache == 0 ? default_streaming_bytes : cache / 2;
+    const std::size_t half = cache == 0 ? default_streaming_bytes : cache / 2;
+    return half < minimum_streaming_bytes ? minimum_streaming_bytes : half;
+}
+
+// Whether an output of this many bytes is streamed; the constant first, so that a small batch does
+// not ask for the cache size.
+[[nodiscard]] inline bool streams_output(std::size_t bytes) noexcept {
+    return has_streaming_stores && bytes >= minimum_streaming_bytes &&
+           bytes >= streaming_threshold_bytes();
 }
 
 }  // namespace detail
@@ -3469,14 +3482,13 @@ template <int R, int J, int... L>
 //
 // A 64-byte access that straddles two cache lines costs a Zen 4 core two, and with arrays only
 // 16-byte aligned three accesses in four straddle; straddling loads cost more than straddling
-// stores, so transform_interleaved_floats starts `in` on a line and the stores fall where `out`
+// stores, so from 1024 points on the groups start `in` on a line and the stores fall where `out`
 // puts them. Shifting each group's results into line-aligned stores (3 more permutes) measured
 // slower than the straddling stores: 1024 points 170 ns against 157 with `out` off its line.
 //
-// Out of place, groups may overlap (aligned false): the first 16 points as they lie, the groups from
-// the input's first 64-byte boundary on, and the last 16, which may write some points again (the
-// same values); so every load but the first and last group's starts on a line, and no point is
-// left to a slower loop. In place each group starts 16 points after the last. The coefficients
+// Out of place, groups may overlap: the first 16 points as they lie, the groups from the input's
+// first 64-byte boundary on (from 1024 points; below, every 16 points), and the last 16, which may
+// write some points again (the same values); so no point is left to a slower loop. In place each group starts 16 points after the last. The coefficients
 // are formed once for all of them: 64 points took 0.44 ns a point with the three runs of groups
 // each forming its own, twice the plain loop. Returns how many points it did.
 template <bool Translate>
@@ -3502,8 +3514,11 @@ template <bool Translate>
     // and last at n - 16. One loop body, not a lambda called per group: in a large translation
     // unit g++ 12 left such a lambda out of line, reloading the coefficients at every call (64
     // points in quat_bench took 0.67 ns a point against 0.25 for a plain loop).
+    // From 1024 points on; below, the extra group costs more than the straddling loads save (Zen 5,
+    // input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024 points 148 against
+    // 149, 4096 points 654 against 641).
     const bool in_place = in == out;
-    const std::size_t line = in_place ? 0 : points_before_line(in, n);
+    const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in, n);
     for (std::size_t first = 0;;) {
         const float* p = in + 3 * first;
         const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
@@ -5314,6 +5329,19 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 #pragma clang diagnostic pop
 #endif
 
+// A float batch of at least minimum_streaming_bytes: streamed where it exceeds the threshold,
+// plainly below.
+template <bool Translate>
+[[gnu::noinline]] void transform_large(const rotation_matrix<float>& m, const vec3<float>& t,
+                                       const vec3<float>* input, vec3<float>* output,
+                                       std::size_t count) noexcept {
+    if (streams_output(count * sizeof(vec3<float>))) {
+        transform_streaming<Translate>(m, t, input, output, count);
+        return;
+    }
+    transform_block<Translate>(m, t, input, output, count);
+}
+
 // output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
 // and of the rigid transform (batch/rigid_motions.hpp).
 template <bool Translate, class T>
@@ -5325,9 +5353,12 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<
     // 3.9-4.1 plain, streaming copy 3.2-3.8. With a fixed 16 MiB threshold instead: on a Xeon with
     // a 480 MiB L3 streaming won at every level (SSE2 5.7 ms against 6.6, AVX2 4.7-4.9 against
     // 5.2-6.0), on a Zen 5 only with AVX-512.
+    // The size is compared with the constant minimum first and the cache size read out of line
+    // (transform_large), so that a small batch's path makes no call that returns and g++ sets up
+    // no frame for it.
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
-            transform_streaming<Translate>(m, t, input, output, count);
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= minimum_streaming_bytes) {
+            transform_large<Translate>(m, t, input, output, count);
             return;
         }
     }
@@ -5341,8 +5372,7 @@ template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
                       soa_points<T> output) noexcept {
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores &&
-            input.count * 3 * sizeof(float) >= streaming_threshold_bytes()) {
+        if (streams_output(input.count * 3 * sizeof(float))) {
             // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
             // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
             // the same offset into a page), so that the blocks cover whole cache lines.

@@ -175,14 +175,13 @@ template <int R, int J, int... L>
 //
 // A 64-byte access that straddles two cache lines costs a Zen 4 core two, and with arrays only
 // 16-byte aligned three accesses in four straddle; straddling loads cost more than straddling
-// stores, so transform_interleaved_floats starts `in` on a line and the stores fall where `out`
+// stores, so from 1024 points on the groups start `in` on a line and the stores fall where `out`
 // puts them. Shifting each group's results into line-aligned stores (3 more permutes) measured
 // slower than the straddling stores: 1024 points 170 ns against 157 with `out` off its line.
 //
-// Out of place, groups may overlap (aligned false): the first 16 points as they lie, the groups from
-// the input's first 64-byte boundary on, and the last 16, which may write some points again (the
-// same values); so every load but the first and last group's starts on a line, and no point is
-// left to a slower loop. In place each group starts 16 points after the last. The coefficients
+// Out of place, groups may overlap: the first 16 points as they lie, the groups from the input's
+// first 64-byte boundary on (from 1024 points; below, every 16 points), and the last 16, which may
+// write some points again (the same values); so no point is left to a slower loop. In place each group starts 16 points after the last. The coefficients
 // are formed once for all of them: 64 points took 0.44 ns a point with the three runs of groups
 // each forming its own, twice the plain loop. Returns how many points it did.
 template <bool Translate>
@@ -208,8 +207,11 @@ template <bool Translate>
     // and last at n - 16. One loop body, not a lambda called per group: in a large translation
     // unit g++ 12 left such a lambda out of line, reloading the coefficients at every call (64
     // points in quat_bench took 0.67 ns a point against 0.25 for a plain loop).
+    // From 1024 points on; below, the extra group costs more than the straddling loads save (Zen 5,
+    // input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024 points 148 against
+    // 149, 4096 points 654 against 641).
     const bool in_place = in == out;
-    const std::size_t line = in_place ? 0 : points_before_line(in, n);
+    const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in, n);
     for (std::size_t first = 0;;) {
         const float* p = in + 3 * first;
         const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);

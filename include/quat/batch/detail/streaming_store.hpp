@@ -132,6 +132,10 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
 // The last resort where no cache size can be read: 16 MiB of output.
 inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
 
+// No output smaller than this is streamed, whatever the cache size says: it stays in any
+// x86 core's L2.
+inline constexpr std::size_t minimum_streaming_bytes = std::size_t(128) << 10;
+
 // The last-level cache size in bytes, read once from cpuid (0 where it does not answer). Not from
 // sysconf, whose L3 figure virtual machines may invent (320 MiB on a Zen 4 guest whose cpuid and
 // lscpu say 32 MiB), and which would bring <unistd.h>'s names into every user's code: streaming
@@ -146,9 +150,18 @@ inline std::size_t last_level_cache_bytes() noexcept {
 // the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
 // each line only adds a third to the memory traffic; below that plain stores, which leave the
 // result in cache. Without a cache size, the fixed default_streaming_bytes.
+// Never below minimum_streaming_bytes.
 inline std::size_t streaming_threshold_bytes() noexcept {
     const std::size_t cache = last_level_cache_bytes();
-    return cache == 0 ? default_streaming_bytes : cache / 2;
+    const std::size_t half = cache == 0 ? default_streaming_bytes : cache / 2;
+    return half < minimum_streaming_bytes ? minimum_streaming_bytes : half;
+}
+
+// Whether an output of this many bytes is streamed; the constant first, so that a small batch does
+// not ask for the cache size.
+[[nodiscard]] inline bool streams_output(std::size_t bytes) noexcept {
+    return has_streaming_stores && bytes >= minimum_streaming_bytes &&
+           bytes >= streaming_threshold_bytes();
 }
 
 }  // namespace detail

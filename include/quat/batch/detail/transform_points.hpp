@@ -185,6 +185,19 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
 #pragma clang diagnostic pop
 #endif
 
+// A float batch of at least minimum_streaming_bytes: streamed where it exceeds the threshold,
+// plainly below.
+template <bool Translate>
+[[gnu::noinline]] void transform_large(const rotation_matrix<float>& m, const vec3<float>& t,
+                                       const vec3<float>* input, vec3<float>* output,
+                                       std::size_t count) noexcept {
+    if (streams_output(count * sizeof(vec3<float>))) {
+        transform_streaming<Translate>(m, t, input, output, count);
+        return;
+    }
+    transform_block<Translate>(m, t, input, output, count);
+}
+
 // output[i] = m input[i] (+ t when Translate) for i < count: the array-of-structs loop of rotate
 // and of the rigid transform (batch/rigid_motions.hpp).
 template <bool Translate, class T>
@@ -196,9 +209,12 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<
     // 3.9-4.1 plain, streaming copy 3.2-3.8. With a fixed 16 MiB threshold instead: on a Xeon with
     // a 480 MiB L3 streaming won at every level (SSE2 5.7 ms against 6.6, AVX2 4.7-4.9 against
     // 5.2-6.0), on a Zen 5 only with AVX-512.
+    // The size is compared with the constant minimum first and the cache size read out of line
+    // (transform_large), so that a small batch's path makes no call that returns and g++ sets up
+    // no frame for it.
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= streaming_threshold_bytes()) {
-            transform_streaming<Translate>(m, t, input, output, count);
+        if (has_streaming_stores && count * sizeof(vec3<float>) >= minimum_streaming_bytes) {
+            transform_large<Translate>(m, t, input, output, count);
             return;
         }
     }
@@ -212,8 +228,7 @@ template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<const T> input,
                       soa_points<T> output) noexcept {
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores &&
-            input.count * 3 * sizeof(float) >= streaming_threshold_bytes()) {
+        if (streams_output(input.count * 3 * sizeof(float))) {
             // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
             // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
             // the same offset into a page), so that the blocks cover whole cache lines.
