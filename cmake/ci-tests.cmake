@@ -185,9 +185,12 @@ if(QUAT_TEST_VALGRIND)
     # ERROR SUMMARY, and that is what fails the test.
     # Under valgrind the whole suite is the longest test of the matrix, so it runs in
     # QUAT_MEMCHECK_SHARDS parts (test files dealt round-robin; Catch2's "[#a],[#b]" is a or b),
-    # which CTest runs side by side; together they cover every test file once. A file without test
-    # cases in this configuration (test_io_format.cpp without <format>) only makes Catch2 say "No
-    # test cases matched" for its part of the filter.
+    # which CTest runs side by side; together they cover every test file once, all but the test
+    # cases tagged [sweep]: statistical and reference sweeps that repeat, thousands of times, code
+    # the other cases run (about half the suite's native run time; they run in every other
+    # configuration, the sanitized ones included). A file without test cases in this configuration
+    # (test_io_format.cpp without <format>) only makes Catch2 say "No test cases matched" for its
+    # part of the filter.
     set(QUAT_MEMCHECK_SHARDS 4 CACHE STRING "Number of CTest tests the valgrind run is split into")
     get_target_property(_quat_memcheck_files quat_tests SOURCES)
     list(FILTER _quat_memcheck_files EXCLUDE REGEX "catch_main\\.cpp$")
@@ -195,7 +198,7 @@ if(QUAT_TEST_VALGRIND)
     foreach(_file IN LISTS _quat_memcheck_files)
         get_filename_component(_stem "${_file}" NAME_WE)
         math(EXPR _shard "(${_shard} % ${QUAT_MEMCHECK_SHARDS}) + 1")
-        list(APPEND _quat_memcheck_spec_${_shard} "[#${_stem}]~[.]")
+        list(APPEND _quat_memcheck_spec_${_shard} "[#${_stem}]~[.]~[sweep]")
     endforeach()
     foreach(_shard RANGE 1 ${QUAT_MEMCHECK_SHARDS})
         if(NOT _quat_memcheck_spec_${_shard})

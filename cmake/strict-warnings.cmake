@@ -62,10 +62,12 @@ foreach(_compiler IN LISTS COMPILERS)
         endforeach()
     endforeach()
 endforeach()
-# The batch code has paths of its own for AVX, AVX2 and AVX-512 (intrinsics in
-# detail/interleaved_points_avx.hpp): instantiate it for those too, in one language standard. Only
-# the batch headers test the instruction set (include/quat/batch/), so only the instantiation
-# units that include them (directly or through quat.hpp) are compiled again.
+# The batch code has paths of its own for AVX and AVX-512 (vector extensions in
+# detail/interleaved_points_avx.hpp): instantiate it for those too, in one language standard. AVX2
+# and FMA select no code of their own (only the instruction-set namespace's name,
+# detail/isa_namespace.inc), so -mavx covers them. Only the batch headers test the instruction set
+# (include/quat/batch/), so only the instantiation units that include them (directly or through
+# quat.hpp) are compiled again.
 # CMAKE_HOST_SYSTEM_PROCESSOR is not set in script mode (cmake -P); ask the host.
 cmake_host_system_information(RESULT _host_processor QUERY OS_PLATFORM)
 if(NOT STANDARDS AND _host_processor MATCHES "x86_64|AMD64")
@@ -77,7 +79,7 @@ if(NOT STANDARDS AND _host_processor MATCHES "x86_64|AMD64")
         endif()
     endforeach()
     foreach(_compiler IN LISTS COMPILERS)
-        foreach(_arch -mavx -march=x86-64-v3 -march=skylake-avx512)
+        foreach(_arch -mavx -march=skylake-avx512)
             foreach(_unit IN LISTS _batch_units)
                 execute_process(COMMAND "${_compiler}" -std=c++17 ${_arch} ${_flags} ${_includes}
                                         "${_unit}"

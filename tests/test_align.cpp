@@ -146,8 +146,8 @@ struct family_pair {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("rotation_between is within 4 eps of the exact rotation", "[align]", float,
-                   double) {
+TEMPLATE_TEST_CASE("rotation_between is within 4 eps of the exact rotation", "[align][sweep]",
+                   float, double) {
     using T = TestType;
     auto random_pair = [](quat::test::random_rotations& r, int) {
         return family_pair<T>{r.unit_vector<T>() * random_length<T>(r),

@@ -117,7 +117,7 @@ TEMPLATE_TEST_CASE("exact data: the motion and scale of the long double solution
 }
 
 TEMPLATE_TEST_CASE("RANSAC sizes: 3 to 16 noisy pairs, the long double answer within a few eps",
-                   "[align_points]", float, double) {
+                   "[align_points][sweep]", float, double) {
     // Few pairs take their own path (float solved in double, FOAM down to small eigen-gaps and
     // Newton steps over the pairs), so they are held to the long double solution of the same data.
     // Three points are as accurate as their triangle allows: a thin one (B of rank 2 with a small

@@ -94,7 +94,7 @@ void check_uniform(Engine engine) {
 }  // namespace
 
 TEMPLATE_TEST_CASE("random_rotation is uniform over rotations with each standard engine",
-                   "[random]", float, double) {
+                   "[random][sweep]", float, double) {
     using T = TestType;
     // 10^5 samples each, KS critical value 0.00617 (alpha = 0.001). Measured statistics (angle,
     // rotated z, azimuth), g++ 12 / libstdc++: float mt19937 0.0032 0.0024 0.0031, mt19937_64
@@ -105,7 +105,7 @@ TEMPLATE_TEST_CASE("random_rotation is uniform over rotations with each standard
     SECTION("std::minstd_rand") { check_uniform<T>(std::minstd_rand(quat::test::seed)); }
 }
 
-TEST_CASE("the same test rejects a uniform axis with a uniform angle", "[random]") {
+TEST_CASE("the same test rejects a uniform axis with a uniform angle", "[random][sweep]") {
     // The check above must be able to fail: this sampler's angle distribution function is
     // angle / pi, off by up to 1 / pi = 0.32 from the right one. Measured KS statistics: angle
     // 0.318, rotated z 0.251 (it leaves the axis near where it was).

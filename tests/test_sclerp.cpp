@@ -43,7 +43,7 @@ T screw_angle(const dual_quaternion<T>& dq) {
 }  // namespace
 
 TEMPLATE_TEST_CASE("sclerp agrees with the 4x4 form a exp(t log(a^-1 b)) for random motions",
-                   "[sclerp]", float, double) {
+                   "[sclerp][sweep]", float, double) {
     quat::test::random_rotations random;
     long double worst = 0;
     for (int i = 0; i < 300; ++i) {

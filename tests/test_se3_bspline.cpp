@@ -154,7 +154,8 @@ void check_against_differences(const control_points& set, double t0, double dt) 
 
 TEST_CASE(
     "se3_bspline: the body twist, its derivatives and every Jacobian against long double "
-    "differences, at random times and knots, near the identity and near half turns") {
+    "differences, at random times and knots, near the identity and near half turns",
+    "[sweep]") {
     for (const control_points& set : point_sets(8)) {
         check_against_differences<4>(set, 0.25, 0.5);
         check_against_differences<5>(set, -1.0, 0.75);
