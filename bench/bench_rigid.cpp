@@ -1,7 +1,9 @@
 // Rigid motions x -> R x + t as dual quaternions and 4x4 matrices: transform_batch (n points moved
 // by one motion, in cache and out of it; rotate_batch's copies of the same bytes are the floor),
-// rigid_chain (the product of 1024 motions), sclerp and blend. Eigen has no dual quaternion, so
-// its entries are matrices only; sclerp and blend have no counterpart in GLM or Eigen.
+// transform_point and transform_pairs (one point at a time: latency, and throughput with each
+// point its own motion), rigid_chain (the product of 1024 motions), sclerp and blend. Eigen has no
+// dual quaternion, so its entries are matrices, and for one point at a time also a unit quaternion
+// with a translation; sclerp and blend have no counterpart in GLM or Eigen.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -68,6 +70,11 @@ struct rigid_quat {
     static void transform_batch(const R& r, const vector* in, vector* out, std::size_t n) {
         quat::transform(r, in, out, n);
     }
+    static dual_quaternion make_point_motion(const motion& m) { return make_dual_quaternion(m); }
+    template <class R>
+    static vector transform(const R& r, const vector& p) {
+        return quat::transform(r, p);
+    }
 };
 
 /// GLM 0.9.9: glm::tdualquat (gtx) and glm::mat4 on (x, y, z, 1), in the loops its users write.
@@ -105,6 +112,9 @@ struct rigid_glm {
     static void transform_batch(const matrix& m, const vector* in, vector* out, std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) out[i] = vector(m * point(in[i], T(1)));
     }
+    static dual_quaternion make_point_motion(const motion& m) { return make_dual_quaternion(m); }
+    static vector transform(const dual_quaternion& dq, const vector& p) { return dq * p; }
+    static vector transform(const matrix& m, const vector& p) { return vector(m * point(p, T(1))); }
 };
 
 /// Eigen 3.4: Isometry3 (a 4x4 matrix whose products Eigen specializes for rigid motions), applied
@@ -126,6 +136,19 @@ struct rigid_eigen {
     static void transform_batch(const matrix& m, const vector* in, vector* out, std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) out[i] = m * in[i];
     }
+    /// A unit quaternion and a translation, as Sophus's SE3 stores a motion: its SE3 * p is q * p
+    /// + t with Eigen's quaternion product (Sophus itself is not a dependency of the benchmark).
+    struct pose {
+        Eigen::Quaternion<T> rotation;
+        vector translation;
+    };
+    static pose make_point_motion(const motion& m) {
+        return {lib_eigen<T>::make_quaternion(m.rotation), make_vector(m.translation)};
+    }
+    static vector transform(const pose& x, const vector& p) {
+        return x.rotation * p + x.translation;
+    }
+    static vector transform(const matrix& m, const vector& p) { return m * p; }
 };
 
 /// Representation tags; the names differ from common.hpp's rotation tags, which stay visible here.
@@ -151,6 +174,49 @@ struct matrix_motion {
         return Lib::identity_matrix();
     }
 };
+
+/// One point at a time, each library's own rigid motion: quat's and GLM's dual quaternions,
+/// Eigen's quaternion and translation (rigid_eigen::pose).
+struct point_motion {
+    static constexpr const char* name = "motion";
+    template <class Lib>
+    static auto make(const motion& m) {
+        return Lib::make_point_motion(m);
+    }
+};
+
+// One motion applied to its own result (latency: one dependency chain), as rotate_point.
+template <class Lib, class Rep>
+void transform_point(benchmark::State& state) {
+    random_source random;
+    const auto r = Rep::template make<Lib>(random_motion(random));
+    auto v = Lib::make_vector(random.vector());
+    for (auto _ : state) {
+        v = Lib::transform(r, v);
+        benchmark::DoNotOptimize(v);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+// Each point moved by its own motion, all independent (throughput), as rotate_pairs: whatever a
+// library spends on the motion itself is paid per point.
+template <class Lib, class Rep>
+void transform_pairs(benchmark::State& state, long long count) {
+    const std::size_t n = static_cast<std::size_t>(count);
+    random_source random;
+    std::vector<decltype(Rep::template make<Lib>(random_motion(random)))> r;
+    std::vector<typename Lib::vector> in(n), out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        r.push_back(Rep::template make<Lib>(random_motion(random)));
+        in[i] = Lib::make_vector(random.vector());
+    }
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = Lib::transform(r[i], in[i]);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
 
 template <class T>
 std::int64_t batch_bytes(std::size_t n) {
@@ -261,6 +327,20 @@ influences<T> random_influences(random_source& random) {
     return s;
 }
 
+template <class Lib>
+void register_single_points_of() {
+    const char* type = type_name<typename Lib::scalar>;
+    constexpr long long n = 1024;
+    benchmark::RegisterBenchmark(name("transform_point", Lib::name, "motion", type).c_str(),
+                                 transform_point<Lib, point_motion>);
+    benchmark::RegisterBenchmark(name("transform_point", Lib::name, "matrix", type).c_str(),
+                                 transform_point<Lib, matrix_motion>);
+    benchmark::RegisterBenchmark(name("transform_pairs", Lib::name, "motion", type, n).c_str(),
+                                 transform_pairs<Lib, point_motion>, n);
+    benchmark::RegisterBenchmark(name("transform_pairs", Lib::name, "matrix", type, n).c_str(),
+                                 transform_pairs<Lib, matrix_motion>, n);
+}
+
 // transform_batch at n points and rigid_chain of k motions for one library and representation.
 template <class Lib, class Rep>
 void register_pair(const std::vector<long long>& sizes, long long k) {
@@ -272,9 +352,19 @@ void register_pair(const std::vector<long long>& sizes, long long k) {
                                  rigid_chain<Lib, Rep>, k);
 }
 
+// transform_point and transform_pairs for one library, motion and matrix, float and double.
+template <template <class> class Lib>
+void register_single_points() {
+    register_single_points_of<Lib<float>>();
+    register_single_points_of<Lib<double>>();
+}
+
 }  // namespace
 
 void register_rigid() {
+    register_single_points<rigid_quat>();
+    register_single_points<rigid_glm>();
+    register_single_points<rigid_eigen>();
     using T = float;  // the rigid-motion targets are float
     const char* type = type_name<T>;
     const std::vector<long long> sizes = {1024, 4194304};  // in L1/L2, and far beyond L3

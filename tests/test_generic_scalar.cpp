@@ -151,24 +151,6 @@ struct std::numeric_limits<test_generic_scalar::user::runtime_real> {
     }
 };
 
-// Catch prints a quaternion of these scalars as {?}, having no operator<< for it. In a unity build
-// quat/io.hpp may be in the same translation unit, and its operator<< for quaternion<T>, which
-// accepts any T, would make Catch instantiate it for scalars that cannot be printed.
-namespace Catch {
-template <>
-struct StringMaker<quat::quaternion<test_generic_scalar::user::real>> {
-    static std::string convert(const quat::quaternion<test_generic_scalar::user::real>&) {
-        return Detail::unprintableString;
-    }
-};
-template <>
-struct StringMaker<quat::quaternion<test_generic_scalar::user::runtime_real>> {
-    static std::string convert(const quat::quaternion<test_generic_scalar::user::runtime_real>&) {
-        return Detail::unprintableString;
-    }
-};
-}  // namespace Catch
-
 namespace test_generic_scalar {
 
 namespace {

@@ -6,6 +6,8 @@
 #include <locale>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include <quat/io.hpp>
 // The families whose results are printed below: io.hpp prints them where their headers are
@@ -66,7 +68,18 @@ struct cents {
 
 std::ostream& operator<<(std::ostream& os, cents c) { return os << c.value << 'c'; }
 
+/// A scalar that cannot be printed.
+struct opaque {
+    double value;
+};
+
 }  // namespace user
+
+template <class Value, class = void>
+struct prints : std::false_type {};
+template <class Value>
+struct prints<Value, decltype(std::declval<std::ostream&>() << std::declval<const Value&>(),
+                              void())> : std::true_type {};
 
 TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]", float, double,
                    long double) {
@@ -128,6 +141,20 @@ TEMPLATE_TEST_CASE("each type prints as its name and brace initializer", "[io]",
     // The stream's default precision is 6 significant digits, for every T alike.
     CHECK(text_of(vec3<T>{T(1) / T(3), T(2) / T(3), T(-100) / T(3)}) ==
           "vec3{0.333333, 0.666667, -33.3333}");
+}
+
+TEST_CASE("a quat type prints exactly when its scalar does", "[io]") {
+    // So a printability check (Catch2 makes one before it shows a value) says no for a scalar
+    // without operator<<, instead of failing to compile inside quat's operator<<.
+    STATIC_REQUIRE(prints<quaternion<double>>::value);
+    STATIC_REQUIRE(prints<quaternion<user::cents>>::value);
+    STATIC_REQUIRE_FALSE(prints<quaternion<user::opaque>>::value);
+    STATIC_REQUIRE_FALSE(prints<vec3<user::opaque>>::value);
+    STATIC_REQUIRE_FALSE(prints<rotation_matrix<user::opaque>>::value);
+    STATIC_REQUIRE_FALSE(prints<axis_angle<user::opaque>>::value);
+    STATIC_REQUIRE_FALSE(prints<euler<user::opaque, sequence::zyx, frame::intrinsic>>::value);
+    STATIC_REQUIRE_FALSE(prints<quat::matrix<user::opaque, 2, 3>>::value);
+    CHECK(Catch::Detail::stringify(quaternion<user::opaque>{}) == "{?}");
 }
 
 TEST_CASE("sequence and frame print their names", "[io]") {
