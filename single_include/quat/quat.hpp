@@ -9215,12 +9215,13 @@ template <class T>
     const T k = (k00 + k01 * w) + x * ((k10 + k11 * w) + x * (k20 + k21 * w));
     const T tau = t - (t - T(0.5)) * w * k;
     // |(1 - tau) a + tau b|^2 = 1 - 2 tau (1 - tau) (1 - x) for unit a and b: exactly 1 at tau = 0
-    // and tau = 1, where the scaling then leaves the end point as it is. One division, folded
-    // into the two weights, rather than one for each of the four components.
+    // and tau = 1, where the division then leaves the end point as it is. Four divisions, not one
+    // reciprocal and four multiplications: the sum is ready when the square root is, and a
+    // multiplication after the reciprocal lengthens the chain (Zen 5, g++ 12, a loop of independent
+    // calls: 5.6 ns against 6.2 with the reciprocal folded into the weights, 5.8 with it applied
+    // to the sum).
     const T squared_length = T(1) + (x * T(2) - T(2)) * (tau - tau * tau);
-    const T inverse_length = T(1) / detail::sqrt(squared_length);
-    return a * ((T(1) - tau) * inverse_length) +
-           b * (tau * detail::sign_factor(d) * inverse_length);
+    return (a * (T(1) - tau) + b * (tau * detail::sign_factor(d))) / detail::sqrt(squared_length);
 }
 
 /// Slerp from unit a (t = 0) to unit b (t = 1) along the shorter arc, approximated without
