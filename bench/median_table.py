@@ -32,6 +32,8 @@ ROWS = [
      "transform_pairs/{lib}/motion/double/1024"),
     ("transform_pairs, each point its own 4x4 matrix (Eigen: Isometry3f), n = 1024",
      "transform_pairs/{lib}/matrix/float/1024"),
+    ("rotate_batch, quaternion, n = 64", "rotate_batch/{lib}/quaternion/float/64"),
+    ("rotate_batch, matrix, n = 64", "rotate_batch/{lib}/matrix/float/64"),
     ("rotate_batch, quaternion, n = 1024", "rotate_batch/{lib}/quaternion/float/1024"),
     ("rotate_batch, matrix, n = 1024", "rotate_batch/{lib}/matrix/float/1024"),
     ("rotate_batch, quaternion, struct of arrays, n = 1024",
