@@ -53,10 +53,10 @@ template <class T>
     // squares summing to 1), so one division and four multiplications scale it, rather than
     // normalize's four divisions, which bounded a loop of conversions (to_quaternion_each). Off
     // the precondition, where |q|^2 leaves the normal range, normalize rescales.
-    const T s = squared_norm(q);
-    if (!detail::in_normal_range(s)) return normalize(q.w < T(0) ? -q : q);
-    const T scale = (q.w < T(0) ? T(-1) : T(1)) / detail::sqrt(s);
-    return q * scale;
+    const quaternion<T> w_nonnegative = q.w < T(0) ? -q : q;
+    const T s = squared_norm(w_nonnegative);
+    if (!detail::in_normal_range(s)) return normalize(w_nonnegative);
+    return w_nonnegative * (T(1) / detail::sqrt(s));
 }
 
 /// Default tolerance of try_to_quaternion: sqrt(epsilon), about 3e-4 for float and 1.5e-8 for

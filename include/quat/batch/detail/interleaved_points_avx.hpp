@@ -145,16 +145,14 @@ using float16 = float __attribute__((vector_size(64)));
 }
 
 // The points before the first one whose floats start on a 64-byte boundary of `in` (at most 15:
-// 12 k bytes meet every multiple of 4 modulo 64), or n when there are fewer; 0 when `in` is not
-// 4-byte aligned, since no point of it starts a line. In closed form rather than a search, which
-// cost up to 15 dependent steps a call:
+// 12 k bytes meet every multiple of 4 modulo 64); 0 when `in` is not 4-byte aligned, since no point
+// of it starts a line. In closed form rather than a search, which cost up to 15 dependent steps:
 // 12 k = -offset (mod 64) <=> 3 k = -offset / 4 (mod 16) <=> k = 11 (16 - offset / 4) (mod 16),
 // since 3 * 11 = 1 (mod 16).
-[[nodiscard]] inline std::size_t points_before_line(const float* in, std::size_t n) noexcept {
+[[nodiscard]] inline std::size_t points_before_line(const float* in) noexcept {
     const std::size_t offset = reinterpret_cast<std::uintptr_t>(in) % 64;
     if (offset % 4 != 0) return 0;
-    const std::size_t k = (11 * (16 - offset / 4)) % 16;
-    return k < n ? k : n;
+    return (11 * (16 - offset / 4)) % 16;
 }
 
 // Register R's lanes of column J of m (J = 3: of t) from `entries` (m's rows, then t): lane l
@@ -181,9 +179,10 @@ template <int R, int J, int... L>
 //
 // Out of place, groups may overlap: the first 16 points as they lie, the groups from the input's
 // first 64-byte boundary on (from 1024 points; below, every 16 points), and the last 16, which may
-// write some points again (the same values); so no point is left to a slower loop. In place each group starts 16 points after the last. The coefficients
-// are formed once for all of them: 64 points took 0.44 ns a point with the three runs of groups
-// each forming its own, twice the plain loop. Returns how many points it did.
+// write some points again (the same values); so no point is left to a slower loop. In place each
+// group starts 16 points after the last. The coefficients are formed once for all of them: 64
+// points took 0.44 ns a point with the three runs of groups each forming its own, twice the plain
+// loop. Returns how many points it did.
 template <bool Translate>
 [[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
                                                           const vec3<float>& t, const float* in,
@@ -203,15 +202,15 @@ template <bool Translate>
          row_cycle<2, 2>(entries, lanes)}};
     const float16 offset[3] = {row_cycle<0, 3>(entries, lanes), row_cycle<1, 3>(entries, lanes),
                                row_cycle<2, 3>(entries, lanes)};
-    // The groups start at 0, then (out of place) at the input's first line, every 16 points on,
-    // and last at n - 16. One loop body, not a lambda called per group: in a large translation
-    // unit g++ 12 left such a lambda out of line, reloading the coefficients at every call (64
-    // points in quat_bench took 0.67 ns a point against 0.25 for a plain loop).
-    // From 1024 points on; below, the extra group costs more than the straddling loads save (Zen 5,
-    // input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024 points 148 against
-    // 149, 4096 points 654 against 641).
+    // The groups start at 0, then every 16 points, out of place from the input's first line on
+    // when there are 1024 points or more (below, the extra group costs more than the straddling
+    // loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024
+    // points 148 against 149, 4096 points 654 against 641), and last at n - 16. One loop body, not
+    // a lambda called per group: in a large translation unit g++ 12 left such a lambda out of line,
+    // reloading the coefficients at every call (64 points in quat_bench took 0.67 ns a point
+    // against 0.25 for a plain loop).
     const bool in_place = in == out;
-    const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in, n);
+    const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in);
     for (std::size_t first = 0;;) {
         const float* p = in + 3 * first;
         const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
