@@ -205,17 +205,12 @@ void transform_pairs(benchmark::State& state, long long count) {
     const std::size_t n = static_cast<std::size_t>(count);
     random_source random;
     std::vector<decltype(Rep::template make<Lib>(random_motion(random)))> r;
-    std::vector<typename Lib::vector> in(n), out(n);
+    std::vector<typename Lib::vector> in(n);
     for (std::size_t i = 0; i < n; ++i) {
         r.push_back(Rep::template make<Lib>(random_motion(random)));
         in[i] = Lib::make_vector(random.vector());
     }
-    for (auto _ : state) {
-        for (std::size_t i = 0; i < n; ++i) out[i] = Lib::transform(r[i], in[i]);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    time_pairs(state, r, in, [](const auto& x, const auto& p) { return Lib::transform(x, p); });
 }
 
 template <class T>

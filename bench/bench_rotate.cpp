@@ -29,17 +29,12 @@ void rotate_pairs(benchmark::State& state, long long count) {
     const std::size_t n = static_cast<std::size_t>(count);
     random_source random;
     std::vector<typename Lib::quaternion> qs(n);
-    std::vector<typename Lib::vector> in(n), out(n);
+    std::vector<typename Lib::vector> in(n);
     for (std::size_t i = 0; i < n; ++i) {
         qs[i] = Lib::make_quaternion(random.rotation());
         in[i] = Lib::make_vector(random.vector());
     }
-    for (auto _ : state) {
-        for (std::size_t i = 0; i < n; ++i) out[i] = Lib::rotate(qs[i], in[i]);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    time_pairs(state, qs, in, [](const auto& q, const auto& v) { return Lib::rotate(q, v); });
 }
 
 template <class T>

@@ -221,6 +221,21 @@ void cycle(benchmark::State& state, Make make, Operation f) {
     state.SetItemsProcessed(state.iterations());
 }
 
+/// out[i] = apply(transforms[i], in[i]) over all i per iteration, all independent (throughput):
+/// whatever a library spends on the transform itself is paid per element; items are elements.
+template <class Transforms, class Inputs, class Apply>
+void time_pairs(benchmark::State& state, const Transforms& transforms, const Inputs& in,
+                Apply apply) {
+    const std::size_t n = in.size();
+    Inputs out(n);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = apply(transforms[i], in[i]);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
+
 /// Times the product of `factors` left to right, each product waiting for the previous one: what
 /// users of GLM and Eigen write. Lib::compose and Rep::identity<Lib> as in bench_compose.cpp.
 template <class Lib, class Rep, class Factors>
