@@ -263,6 +263,33 @@ TEMPLATE_TEST_CASE("NaN in one element gives NaN in that element only", "[elemen
     }
 }
 
+TEMPLATE_TEST_CASE("to_quaternion_each off its precondition gives to_quaternion's result",
+                   "[elementwise]", float, double) {
+    using T = TestType;
+    const T inf = std::numeric_limits<T>::infinity(), huge = std::numeric_limits<T>::max() / 4;
+    quat::test::random_rotations random;
+    const std::size_t n = 40;  // two whole groups of 16 in AVX-512 builds, and a tail
+    std::vector<rotation_matrix<T>> m(n);
+    for (auto& r : m) r = quat::to_matrix(random.unit_quaternion<T>());
+    rotation_matrix<T> scaled_up = m[3], scaled_down = m[4];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) scaled_up(r, c) *= huge, scaled_down(r, c) *= T(1e-30);
+    rotation_matrix<T> infinite = m[5];
+    infinite(0, 2) = inf;
+    const rotation_matrix<T> zero{};
+    // A bad matrix in the first group, and one group later left all valid.
+    m[3] = scaled_up, m[4] = scaled_down, m[5] = infinite, m[6] = zero, m[36] = scaled_up;
+    std::vector<quaternion<T>> out(n);
+    quat::to_quaternion_each(m, out);
+    for (std::size_t i = 0; i < n; ++i) {
+        INFO("element " << i);
+        const quaternion<T> expected = quat::to_quaternion(m[i]);
+        const bool expected_nan = std::isnan(quat::dot(expected, expected));
+        CHECK(std::isnan(quat::dot(out[i], out[i])) == expected_nan);
+        if (!expected_nan) CHECK(max_difference(out[i], expected) <= contraction<T>);
+    }
+}
+
 TEMPLATE_TEST_CASE("struct-of-arrays rotate_each in place: the writable views are also the inputs",
                    "[elementwise]", float, double) {
     using T = TestType;

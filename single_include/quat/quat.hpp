@@ -2969,15 +2969,17 @@ template <class T>
 // transform(dq, points, out)), as does a reduction of an array to one value (compose(factors)).
 //
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
-// vectorize them (checked with -fopt-info-vec and objdump); the float array-of-structs rotate_each
-// of AVX and AVX2 builds spells its shuffles out instead (rotate_each_interleaved below), since
-// the compiled loop is bound by its lane-crossing permutes. to_matrix_each and to_quaternion_each
-// run the scalar conversions element by element: vectorized versions (blocks of matrices regrouped
-// through local arrays, a branch-free to_quaternion) measured slower than these loops for SSE2
-// and AVX2 with g++ 12, and 1.2 to 1.6 times faster only with AVX-512 (to_matrix slower there
-// with clang 14): g++ has no cheap way to regroup the nine interleaved entries of a matrix. Where
-// a result is "the scalar one", it may still differ in the last bit where the compiler fuses
-// multiply-adds differently in the two places (-ffp-contract).
+// vectorize them (checked with -fopt-info-vec and objdump); the float array-of-structs kernels of
+// AVX and AVX-512 builds spell their shuffles out instead (detail/interleaved_elements_avx.hpp),
+// since the compiled loops are bound by their lane-crossing permutes. to_matrix_each runs the
+// scalar conversion element by element, and so does to_quaternion_each but for float in AVX-512
+// builds: vectorized through local arrays (blocks of matrices regrouped, a branch-free
+// to_quaternion) both measured slower than these loops for SSE2 and AVX2 with g++ 12 (to_quaternion
+// 7.3 us per 1024 against 4.9 with AVX-512 too), since g++ has no cheap way to regroup the nine
+// interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in registers
+// (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still differ in
+// the last bit where the compiler fuses multiply-adds differently in the two places
+// (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
 // as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
@@ -3088,6 +3090,86 @@ using if_arrays_of = std::enable_if_t<
 
 #endif  // QUAT_DETAIL_CONTAINERS_HPP_INCLUDED
 // ---- end quat/detail/containers.hpp ----
+// ---- begin quat/batch/detail/factored_rotation.hpp ----
+// The arithmetic of the element-wise rotation, rotate_each's, shared by its plain loops and the
+// kernels that vectorize by hand (interleaved_elements_avx.hpp), so every path rounds alike.
+#ifndef QUAT_BATCH_DETAIL_FACTORED_ROTATION_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_FACTORED_ROTATION_HPP_INCLUDED
+
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+// rotate(q, v) is M v with M = I + s (w [u]x + [u]x^2), u = (x, y, z), s = 4 - 2 |q|^2 (2 / |q|^2
+// to first order). Applied without forming M, as v + s (w t + u x t) with t = u x v: 24 operations
+// instead of 45, the same tolerance of |q| near 1, other roundings: over 200000 random pairs it
+// differs from rotate(q, v) by at most 4.2 eps |v| per component (float and double, g++ and clang,
+// SSE2 to AVX-512) and from the exact rotation by 4.2 eps |v|, against 3.3 for rotate(q, v).
+// The arithmetic of rotate_factored on any lanes: a scalar, or a vector of GCC/clang vector
+// extensions for the kernels that vectorize by hand, so every path rounds alike.
+template <class V>
+constexpr void rotate_factored_lanes(V w, V x, V y, V z, V vx, V vy, V vz, V& rx, V& ry,
+                                     V& rz) noexcept {
+    const V n2 = w * w + x * x + y * y + z * z;
+    const V scale = 4 - (n2 + n2);
+    const V tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
+    rx = vx + (tx * w + (y * tz - z * ty)) * scale;
+    ry = vy + (ty * w + (z * tx - x * tz)) * scale;
+    rz = vz + (tz * w + (x * ty - y * tx)) * scale;
+}
+
+template <class T>
+[[nodiscard]] constexpr vec3<T> rotate_factored(const quaternion<T>& q, const vec3<T>& v) noexcept {
+    vec3<T> r{};
+    rotate_factored_lanes(q.w, q.x, q.y, q.z, v.x, v.y, v.z, r.x, r.y, r.z);
+    return r;
+}
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_FACTORED_ROTATION_HPP_INCLUDED
+// ---- end quat/batch/detail/factored_rotation.hpp ----
+// ---- begin quat/batch/detail/interleaved_elements_avx.hpp ----
+// The element-wise batches of float arrays of structs in AVX and AVX-512 builds
+// (batch/elementwise.hpp's rotate_each, compose_each and to_quaternion_each), with the shuffles
+// spelled out in GCC/clang vector extensions, as in interleaved_points_avx.hpp (whose helpers they
+// use), because no compiler finds these arrangements from a plain loop. Each kernel does the
+// elements [0, n - n % 8) or [0, n - n % 16) and returns how many it did; the caller's plain loop
+// does the rest.
+#ifndef QUAT_BATCH_DETAIL_INTERLEAVED_ELEMENTS_AVX_HPP_INCLUDED
+#define QUAT_BATCH_DETAIL_INTERLEAVED_ELEMENTS_AVX_HPP_INCLUDED
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#include <utility>
+
 // ---- begin quat/batch/detail/interleaved_points_avx.hpp ----
 // The array-of-structs rotation of float points in AVX and AVX-512 builds, with the shuffles
 // spelled
@@ -3600,6 +3682,299 @@ template <bool Translate, bool Stream = false>
 
 #endif  // QUAT_BATCH_DETAIL_INTERLEAVED_POINTS_AVX_HPP_INCLUDED
 // ---- end quat/batch/detail/interleaved_points_avx.hpp ----
+
+namespace quat {
+// ---- begin quat/detail/isa_namespace.inc ----
+// Opens quat's instruction-set namespace: included, once for each time it is opened, right after
+// `namespace quat {`, and closed by a plain `}  // inline namespace isa_...`. Not a header (no
+// include guard): the one place the key is spelled out, because quat has no macros beyond its
+// version numbers and QUAT_ASSERT. detail/math.hpp says why every function is keyed and what the key
+// covers.
+#if defined(__AVX512F__)
+inline namespace isa_avx512 {
+#elif defined(__AVX2__) && defined(__FMA__)
+inline namespace isa_avx2_fma {
+#elif defined(__AVX__) && defined(__FMA__)
+inline namespace isa_avx_fma {
+#elif defined(__AVX2__)
+inline namespace isa_avx2 {
+#elif defined(__AVX__)
+inline namespace isa_avx {
+#elif defined(__SSE4_1__)
+inline namespace isa_sse4 {
+#elif defined(__SSE__) || defined(_M_X64)
+inline namespace isa_sse {
+#else
+inline namespace isa_generic {
+#endif
+// ---- end quat/detail/isa_namespace.inc ----
+namespace detail {
+
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+// rotate_each of float elements [0, n - n % 8) in AVX builds, 8 a step, with the shuffles spelled
+// out as in interleaved_points_avx.hpp (whose helpers it uses), and returns how many it did. Each
+// 128-bit lane holds 4 whole elements (elements 0-3 in the low lanes, 4-7 in the high ones), so
+// every shuffle stays in its lane: the quaternions by a 4x4 transpose (8 unpacks), the points in
+// and out by 3 permutes and 6 blends each; 26 shuffles per 8 elements where g++ 12 compiles the
+// plain loop (and GLM's and Eigen's) with 53-54 lane-crossing permutes, the bound of those loops.
+// The arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole
+// before it is written. AVX-512 builds run rotate_each_interleaved_16 below and this kernel for a
+// remaining 8.
+[[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
+                                                         std::size_t n) noexcept {
+    auto load = [](const float* low, const float* high) noexcept {
+        const float4 lower = load4(low);
+        return __builtin_ia32_vinsertf128_ps256(
+            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
+    };
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const float* r = q + 4 * i;
+        const float8 e0 = load(r, r + 16), e1 = load(r + 4, r + 20), e2 = load(r + 8, r + 24),
+                     e3 = load(r + 12, r + 28);
+        // Per lane: t0 = w0 w1 x0 x1, t1 = y0 y1 z0 z1, t2 = w2 w3 x2 x3, t3 = y2 y3 z2 z3.
+        const float8 t0 = __builtin_shufflevector(e0, e1, 0, 8, 1, 9, 4, 12, 5, 13);
+        const float8 t1 = __builtin_shufflevector(e0, e1, 2, 10, 3, 11, 6, 14, 7, 15);
+        const float8 t2 = __builtin_shufflevector(e2, e3, 0, 8, 1, 9, 4, 12, 5, 13);
+        const float8 t3 = __builtin_shufflevector(e2, e3, 2, 10, 3, 11, 6, 14, 7, 15);
+        const float8 w = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+        const float8 x = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+        const float8 y = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+        const float8 z = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+        const float* s = p + 3 * i;
+        const float8 a = load(s, s + 12), b = load(s + 4, s + 16), c = load(s + 8, s + 20);
+        const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
+        const float8 vy = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
+        const float8 vz = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));
+        float8 rx, ry, rz;
+        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
+        const float8 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
+        const float8 ra = blend_2_6(blend_1_5(px, py), pz);
+        const float8 rb = blend_2_6(blend_1_5(py, pz), px);
+        const float8 rc = blend_2_6(blend_1_5(pz, px), py);
+        float* o = out + 3 * i;
+        store4(o, __builtin_ia32_vextractf128_ps256(ra, 0));
+        store4(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
+        store4(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
+        store4(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
+        store4(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
+        store4(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
+    }
+    return i;
+}
+#endif
+#endif
+
+#if defined(__AVX512F__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+// rotate_each of float elements [0, n - n % 16) in AVX-512 builds, 16 a step, and how many it did.
+// A quaternion is one 128-bit lane, so the 4x4 transpose that separates w, x, y and z of 16 of them
+// (4 registers) is 8 in-lane unpacks; it leaves element each_element(l) in lane l, not element l.
+// The points are separated into that same lane order, and their results joined back from it, by
+// two-source permutes (vpermt2ps) of any order: 2 per coordinate each way. 20 shuffles per 16
+// elements, where g++ 12 compiles the plain loop with 4 times as many lane-crossing permutes. The
+// arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole before
+// it is written.
+[[nodiscard]] constexpr int each_element(int lane) noexcept { return lane / 4 + 4 * (lane % 4); }
+[[nodiscard]] constexpr int each_lane(int element) noexcept {
+    return 4 * (element % 4) + element / 4;
+}
+// Float f (0-47) of a group of points, as a shuffle index into the pair (a, b) and then into the
+// pair (that result, c): lanes whose float is in c keep their place in the first step.
+[[nodiscard]] constexpr int first_of_pair(int f) noexcept { return f < 32 ? f : 0; }
+[[nodiscard]] constexpr int second_of_pair(int f, int lane) noexcept {
+    return f < 32 ? lane : f - 16;
+}
+// The lane of output float g's element.
+[[nodiscard]] constexpr int result_lane(int g) noexcept { return each_lane(g / 3); }
+
+// Every third float of the 48 in registers a, b, c, from float K on: lane l gets float 3 n(l) + K,
+// where n(l) = l in natural order and each_element(l) otherwise (two two-source permutes).
+template <int K, bool Natural, int... L>
+[[nodiscard]] inline float16 every_third(float16 a, float16 b, float16 c,
+                                         std::integer_sequence<int, L...>) noexcept {
+    const float16 ab =
+        __builtin_shufflevector(a, b, first_of_pair(3 * (Natural ? L : each_element(L)) + K)...);
+    return __builtin_shufflevector(ab, c,
+                                   second_of_pair(3 * (Natural ? L : each_element(L)) + K, L)...);
+}
+
+// Output register R (floats 16 R ... 16 R + 15 of the group) from the coordinates in lane order.
+template <int R, int... L>
+[[nodiscard]] inline float16 join_coordinates(float16 x, float16 y, float16 z,
+                                              std::integer_sequence<int, L...>) noexcept {
+    const float16 xy =
+        __builtin_shufflevector(x, y,
+                                ((16 * R + L) % 3 == 0   ? result_lane(16 * R + L)
+                                 : (16 * R + L) % 3 == 1 ? 16 + result_lane(16 * R + L)
+                                                         : L)...);
+    return __builtin_shufflevector(xy, z,
+                                   ((16 * R + L) % 3 == 2 ? 16 + result_lane(16 * R + L) : L)...);
+}
+
+// Rows a, b, c, d of the 4x4 matrix in each 128-bit lane, transposed in place: 8 in-lane unpacks.
+// Its own inverse.
+inline void transpose_in_lanes(float16& a, float16& b, float16& c, float16& d) noexcept {
+    const float16 t0 =
+        __builtin_shufflevector(a, b, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
+    const float16 t1 =
+        __builtin_shufflevector(a, b, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
+    const float16 t2 =
+        __builtin_shufflevector(c, d, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
+    const float16 t3 =
+        __builtin_shufflevector(c, d, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
+    b = __builtin_shufflevector(t0, t2, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
+    c = __builtin_shufflevector(t1, t3, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
+}
+// 16 quaternions (64 floats) as w, x, y and z of 16 lanes each, element each_element(l) in lane l,
+// and back: a quaternion is one 128-bit lane, so this is a 4x4 transpose in each.
+[[nodiscard]] inline quaternion<float16> load_quaternions16(const float* q) noexcept {
+    quaternion<float16> r{load16(q), load16(q + 16), load16(q + 32), load16(q + 48)};
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    return r;
+}
+inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    std::memcpy(out, &r.w, sizeof r.w);
+    std::memcpy(out + 16, &r.x, sizeof r.x);
+    std::memcpy(out + 32, &r.y, sizeof r.y);
+    std::memcpy(out + 48, &r.z, sizeof r.z);
+}
+
+// compose_each of float elements [0, n - n % 16) in AVX-512 builds, and how many it did: operator*
+// itself on 16 lanes, between two transposes in and one out (24 in-lane unpacks and 16 multiplies
+// per 16 products, where g++ 12 compiles the plain loop with lane-crossing permutes). Output may be
+// a or b: each group is read whole before it is written.
+[[nodiscard]] inline std::size_t compose_each_interleaved_16(const float* a, const float* b,
+                                                             float* out, std::size_t n) noexcept {
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16)
+        store_quaternions16(out + 4 * i,
+                            load_quaternions16(a + 4 * i) * load_quaternions16(b + 4 * i));
+    return i;
+}
+
+[[nodiscard]] inline std::size_t rotate_each_interleaved_16(const float* q, const float* p,
+                                                            float* out, std::size_t n) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const quaternion<float16> r = load_quaternions16(q + 4 * i);
+        const float16 w = r.w, x = r.x, y = r.y, z = r.z;
+        const float* s = p + 3 * i;
+        const float16 a = load16(s), b = load16(s + 16), c = load16(s + 32);
+        const float16 vx = every_third<0, false>(a, b, c, lanes);
+        const float16 vy = every_third<1, false>(a, b, c, lanes);
+        const float16 vz = every_third<2, false>(a, b, c, lanes);
+        float16 rx, ry, rz;
+        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
+        const float16 ra = join_coordinates<0>(rx, ry, rz, lanes);
+        const float16 rb = join_coordinates<1>(rx, ry, rz, lanes);
+        const float16 rc = join_coordinates<2>(rx, ry, rz, lanes);
+        float* o = out + 3 * i;
+        std::memcpy(o, &ra, sizeof ra);
+        std::memcpy(o + 16, &rb, sizeof rb);
+        std::memcpy(o + 32, &rc, sizeof rc);
+    }
+    return i;
+}
+using int16 = int __attribute__((vector_size(64)));
+
+// Lane l of a where mask lane l is all ones, of b where it is zero (one vpternlogd or blend).
+[[nodiscard]] inline float16 select16(int16 mask, float16 a, float16 b) noexcept {
+    int16 ai, bi;
+    std::memcpy(&ai, &a, sizeof ai);
+    std::memcpy(&bi, &b, sizeof bi);
+    const int16 bits = (mask & ai) | (~mask & bi);
+    float16 r;
+    std::memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
+// The correctly rounded square root of each lane (vsqrtps): a loop of __builtin_sqrtf stays scalar,
+// since each call may set errno; g++ and clang name the builtin differently.
+[[nodiscard]] inline float16 sqrt16(float16 x) noexcept {
+    constexpr int current_rounding = 4;  // _MM_FROUND_CUR_DIRECTION
+#if defined(__clang__)
+    return __builtin_ia32_sqrtps512(x, current_rounding);
+#else
+    return __builtin_ia32_sqrtps512_mask(x, x, static_cast<short>(-1), current_rounding);
+#endif
+}
+
+// to_quaternion_each of float matrices [0, n - n % 16) in AVX-512 builds, 16 a step, and how many
+// it did: to_quaternion's arithmetic on 16 lanes, its branches turned into selects. The scalar
+// loop is branchy (which of four cases, then the sign of w), and a branch taken at random costs
+// more than the conversion: over 1024 random rotations it took 3.0 or 5.0 ns a matrix with what the
+// predictor had learnt, as GLM's quat_cast does; this kernel takes neither branch. The 9 entries of
+// 16 matrices (9 registers) are separated in two rounds of every_third (rows of 3, then every third
+// row): 36 permutes; the quaternions leave through store_quaternions16. A group with a squared
+// norm outside the normal range (not a rotation: zero, NaN, huge) is converted by to_quaternion
+// itself, element by element, so results equal the scalar ones whatever the input.
+[[nodiscard]] inline std::size_t to_quaternion_each_interleaved_16(const rotation_matrix<float>* m,
+                                                                   quaternion<float>* out,
+                                                                   std::size_t n) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const float* s = &m[i](0, 0);
+        // Column c of rows 16 g ... 16 g + 15 (row 3 e + r is row r of matrix e).
+        float16 column[3][3];
+        for (int g = 0; g < 3; ++g) {
+            const float16 a = load16(s + 48 * g), b = load16(s + 48 * g + 16),
+                          c = load16(s + 48 * g + 32);
+            column[g][0] = every_third<0, true>(a, b, c, lanes);
+            column[g][1] = every_third<1, true>(a, b, c, lanes);
+            column[g][2] = every_third<2, true>(a, b, c, lanes);
+        }
+        auto entry = [&](auto row, int c) noexcept {
+            return every_third<decltype(row)::value, false>(column[0][c], column[1][c],
+                                                            column[2][c], lanes);
+        };
+        const std::integral_constant<int, 0> r0;
+        const std::integral_constant<int, 1> r1;
+        const std::integral_constant<int, 2> r2;
+        const float16 m00 = entry(r0, 0), m01 = entry(r0, 1), m02 = entry(r0, 2);
+        const float16 m10 = entry(r1, 0), m11 = entry(r1, 1), m12 = entry(r1, 2);
+        const float16 m20 = entry(r2, 0), m21 = entry(r2, 1), m22 = entry(r2, 2);
+        // to_quaternion's four cases, chosen by the same comparisons in the same order.
+        const float16 trace = m00 + m11 + m22;
+        const int16 first = (trace >= m00) & (trace >= m11) & (trace >= m22);
+        const int16 second = (m00 >= m11) & (m00 >= m22);
+        const int16 third = m11 >= m22;
+        auto pick = [&](float16 a, float16 b, float16 c, float16 d) noexcept {
+            return select16(first, a, select16(second, b, select16(third, c, d)));
+        };
+        const float16 wx = m21 - m12, wy = m02 - m20, wz = m10 - m01;
+        const float16 xy = m01 + m10, xz = m02 + m20, yz = m12 + m21;
+        const quaternion<float16> q{
+            pick(1 + trace, wx, wy, wz), pick(wx, 1 + m00 - m11 - m22, xy, xz),
+            pick(wy, xy, 1 - m00 + m11 - m22, yz), pick(wz, xz, yz, 1 - m00 - m11 + m22)};
+        const float16 squared = squared_norm(q);
+        const int16 normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
+        bool all_normal = true;
+        for (int l = 0; l < 16; ++l) all_normal = all_normal && normal[l] != 0;
+        if (!all_normal) {
+            for (std::size_t j = i; j < i + 16; ++j) out[j] = to_quaternion(m[j]);
+            continue;
+        }
+        const float16 scale = 1 / sqrt16(squared);
+        store_quaternions16(&out[i].w, q * select16(q.w < 0, -scale, scale));
+    }
+    return i;
+}
+#endif
+#endif
+
+}  // namespace detail
+}  // inline namespace isa_...
+}  // namespace quat
+
+#endif  // QUAT_BATCH_DETAIL_INTERLEAVED_ELEMENTS_AVX_HPP_INCLUDED
+// ---- end quat/batch/detail/interleaved_elements_avx.hpp ----
 // ---- begin quat/batch/detail/overlap.hpp ----
 // Whether two arrays overlap: the aliasing preconditions of the functions over many elements
 // (batch/rotations.hpp, batch/elementwise.hpp, batch/rigid_motions.hpp), checked by QUAT_ASSERT in
@@ -3886,31 +4261,6 @@ inline namespace isa_generic {
 // ---- end quat/detail/isa_namespace.inc ----
 namespace detail {
 
-// rotate(q, v) is M v with M = I + s (w [u]x + [u]x^2), u = (x, y, z), s = 4 - 2 |q|^2 (2 / |q|^2
-// to first order). Applied without forming M, as v + s (w t + u x t) with t = u x v: 24 operations
-// instead of 45, the same tolerance of |q| near 1, other roundings: over 200000 random pairs it
-// differs from rotate(q, v) by at most 4.2 eps |v| per component (float and double, g++ and clang,
-// SSE2 to AVX-512) and from the exact rotation by 4.2 eps |v|, against 3.3 for rotate(q, v).
-// The arithmetic of rotate_factored on any lanes: a scalar, or a vector of GCC/clang vector
-// extensions for the kernels that vectorize by hand, so every path rounds alike.
-template <class V>
-constexpr void rotate_factored_lanes(V w, V x, V y, V z, V vx, V vy, V vz, V& rx, V& ry,
-                                     V& rz) noexcept {
-    const V n2 = w * w + x * x + y * y + z * z;
-    const V scale = 4 - (n2 + n2);
-    const V tx = y * vz - z * vy, ty = z * vx - x * vz, tz = x * vy - y * vx;
-    rx = vx + (tx * w + (y * tz - z * ty)) * scale;
-    ry = vy + (ty * w + (z * tx - x * tz)) * scale;
-    rz = vz + (tz * w + (x * ty - y * tx)) * scale;
-}
-
-template <class T>
-[[nodiscard]] constexpr vec3<T> rotate_factored(const quaternion<T>& q, const vec3<T>& v) noexcept {
-    vec3<T> r{};
-    rotate_factored_lanes(q.w, q.x, q.y, q.z, v.x, v.y, v.z, r.x, r.y, r.z);
-    return r;
-}
-
 // The rotation of one element: rotate_factored for float and double, whose loops vectorize; for
 // other scalars (long double, user types) the arithmetic of rotate(q, v), whose results they get.
 // Neither checks |q| (rotate's debug check stays out of the loops).
@@ -4057,179 +4407,6 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
         }
     }
 }
-
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-// rotate_each of float elements [0, n - n % 8) in AVX builds, 8 a step, with the shuffles spelled
-// out as in interleaved_points_avx.hpp (whose helpers it uses), and returns how many it did. Each
-// 128-bit lane holds 4 whole elements (elements 0-3 in the low lanes, 4-7 in the high ones), so
-// every shuffle stays in its lane: the quaternions by a 4x4 transpose (8 unpacks), the points in
-// and out by 3 permutes and 6 blends each; 26 shuffles per 8 elements where g++ 12 compiles the
-// plain loop (and GLM's and Eigen's) with 53-54 lane-crossing permutes, the bound of those loops.
-// The arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole
-// before it is written. AVX-512 builds run rotate_each_interleaved_16 below and this kernel for a
-// remaining 8.
-[[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
-                                                         std::size_t n) noexcept {
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const float* r = q + 4 * i;
-        const float8 e0 = load(r, r + 16), e1 = load(r + 4, r + 20), e2 = load(r + 8, r + 24),
-                     e3 = load(r + 12, r + 28);
-        // Per lane: t0 = w0 w1 x0 x1, t1 = y0 y1 z0 z1, t2 = w2 w3 x2 x3, t3 = y2 y3 z2 z3.
-        const float8 t0 = __builtin_shufflevector(e0, e1, 0, 8, 1, 9, 4, 12, 5, 13);
-        const float8 t1 = __builtin_shufflevector(e0, e1, 2, 10, 3, 11, 6, 14, 7, 15);
-        const float8 t2 = __builtin_shufflevector(e2, e3, 0, 8, 1, 9, 4, 12, 5, 13);
-        const float8 t3 = __builtin_shufflevector(e2, e3, 2, 10, 3, 11, 6, 14, 7, 15);
-        const float8 w = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
-        const float8 x = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
-        const float8 y = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
-        const float8 z = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
-        const float* s = p + 3 * i;
-        const float8 a = load(s, s + 12), b = load(s + 4, s + 16), c = load(s + 8, s + 20);
-        const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
-        const float8 vy = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
-        const float8 vz = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));
-        float8 rx, ry, rz;
-        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
-        const float8 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
-        const float8 ra = blend_2_6(blend_1_5(px, py), pz);
-        const float8 rb = blend_2_6(blend_1_5(py, pz), px);
-        const float8 rc = blend_2_6(blend_1_5(pz, px), py);
-        float* o = out + 3 * i;
-        store4(o, __builtin_ia32_vextractf128_ps256(ra, 0));
-        store4(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
-        store4(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
-        store4(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
-        store4(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
-        store4(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
-    }
-    return i;
-}
-#endif
-#endif
-
-#if defined(__AVX512F__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-// rotate_each of float elements [0, n - n % 16) in AVX-512 builds, 16 a step, and how many it did.
-// A quaternion is one 128-bit lane, so the 4x4 transpose that separates w, x, y and z of 16 of them
-// (4 registers) is 8 in-lane unpacks; it leaves element each_element(l) in lane l, not element l.
-// The points are separated into that same lane order, and their results joined back from it, by
-// two-source permutes (vpermt2ps) of any order: 2 per coordinate each way. 20 shuffles per 16
-// elements, where g++ 12 compiles the plain loop with 4 times as many lane-crossing permutes. The
-// arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole before
-// it is written.
-[[nodiscard]] constexpr int each_element(int lane) noexcept { return lane / 4 + 4 * (lane % 4); }
-[[nodiscard]] constexpr int each_lane(int element) noexcept {
-    return 4 * (element % 4) + element / 4;
-}
-// Float f (0-47) of a group of points, as a shuffle index into the pair (a, b) and then into the
-// pair (that result, c): lanes whose float is in c keep their place in the first step.
-[[nodiscard]] constexpr int first_of_pair(int f) noexcept { return f < 32 ? f : 0; }
-[[nodiscard]] constexpr int second_of_pair(int f, int lane) noexcept {
-    return f < 32 ? lane : f - 16;
-}
-// Coordinate k of lane l's point, and the lane of output float g's element.
-[[nodiscard]] constexpr int point_float(int lane, int k) noexcept {
-    return 3 * each_element(lane) + k;
-}
-[[nodiscard]] constexpr int result_lane(int g) noexcept { return each_lane(g / 3); }
-
-// Coordinate K of the 16 points in registers a, b, c, in each_element's lane order.
-template <int K, int... L>
-[[nodiscard]] inline float16 gather_coordinate(float16 a, float16 b, float16 c,
-                                               std::integer_sequence<int, L...>) noexcept {
-    const float16 ab = __builtin_shufflevector(a, b, first_of_pair(point_float(L, K))...);
-    return __builtin_shufflevector(ab, c, second_of_pair(point_float(L, K), L)...);
-}
-// Output register R (floats 16 R ... 16 R + 15 of the group) from the coordinates in lane order.
-template <int R, int... L>
-[[nodiscard]] inline float16 join_coordinates(float16 x, float16 y, float16 z,
-                                              std::integer_sequence<int, L...>) noexcept {
-    const float16 xy =
-        __builtin_shufflevector(x, y,
-                                ((16 * R + L) % 3 == 0   ? result_lane(16 * R + L)
-                                 : (16 * R + L) % 3 == 1 ? 16 + result_lane(16 * R + L)
-                                                         : L)...);
-    return __builtin_shufflevector(xy, z,
-                                   ((16 * R + L) % 3 == 2 ? 16 + result_lane(16 * R + L) : L)...);
-}
-
-// Rows a, b, c, d of the 4x4 matrix in each 128-bit lane, transposed in place: 8 in-lane unpacks.
-// Its own inverse.
-inline void transpose_in_lanes(float16& a, float16& b, float16& c, float16& d) noexcept {
-    const float16 t0 =
-        __builtin_shufflevector(a, b, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
-    const float16 t1 =
-        __builtin_shufflevector(a, b, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
-    const float16 t2 =
-        __builtin_shufflevector(c, d, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
-    const float16 t3 =
-        __builtin_shufflevector(c, d, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
-    a = __builtin_shufflevector(t0, t2, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
-    b = __builtin_shufflevector(t0, t2, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
-    c = __builtin_shufflevector(t1, t3, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
-    d = __builtin_shufflevector(t1, t3, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
-}
-// 16 quaternions (64 floats) as w, x, y and z of 16 lanes each, element each_element(l) in lane l,
-// and back: a quaternion is one 128-bit lane, so this is a 4x4 transpose in each.
-[[nodiscard]] inline quaternion<float16> load_quaternions16(const float* q) noexcept {
-    quaternion<float16> r{load16(q), load16(q + 16), load16(q + 32), load16(q + 48)};
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    return r;
-}
-inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    std::memcpy(out, &r.w, sizeof r.w);
-    std::memcpy(out + 16, &r.x, sizeof r.x);
-    std::memcpy(out + 32, &r.y, sizeof r.y);
-    std::memcpy(out + 48, &r.z, sizeof r.z);
-}
-
-// compose_each of float elements [0, n - n % 16) in AVX-512 builds, and how many it did: operator*
-// itself on 16 lanes, between two transposes in and one out (24 in-lane unpacks and 16 multiplies
-// per 16 products, where g++ 12 compiles the plain loop with lane-crossing permutes). Output may be
-// a or b: each group is read whole before it is written.
-[[nodiscard]] inline std::size_t compose_each_interleaved_16(const float* a, const float* b,
-                                                             float* out, std::size_t n) noexcept {
-    std::size_t i = 0;
-    for (; i + 16 <= n; i += 16)
-        store_quaternions16(out + 4 * i,
-                            load_quaternions16(a + 4 * i) * load_quaternions16(b + 4 * i));
-    return i;
-}
-
-[[nodiscard]] inline std::size_t rotate_each_interleaved_16(const float* q, const float* p,
-                                                            float* out, std::size_t n) noexcept {
-    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
-    std::size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
-        const quaternion<float16> r = load_quaternions16(q + 4 * i);
-        const float16 w = r.w, x = r.x, y = r.y, z = r.z;
-        const float* s = p + 3 * i;
-        const float16 a = load16(s), b = load16(s + 16), c = load16(s + 32);
-        const float16 vx = gather_coordinate<0>(a, b, c, lanes);
-        const float16 vy = gather_coordinate<1>(a, b, c, lanes);
-        const float16 vz = gather_coordinate<2>(a, b, c, lanes);
-        float16 rx, ry, rz;
-        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
-        const float16 ra = join_coordinates<0>(rx, ry, rz, lanes);
-        const float16 rb = join_coordinates<1>(rx, ry, rz, lanes);
-        const float16 rc = join_coordinates<2>(rx, ry, rz, lanes);
-        float* o = out + 3 * i;
-        std::memcpy(o, &ra, sizeof ra);
-        std::memcpy(o + 16, &rb, sizeof rb);
-        std::memcpy(o + 32, &rc, sizeof rc);
-    }
-    return i;
-}
-#endif
-#endif
 
 template <class T>
 void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3<T>* output,
@@ -4383,7 +4560,18 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
     QUAT_ASSERT(detail::disjoint(m, count * sizeof(rotation_matrix<T>), output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
-    for (std::size_t i = 0; i < count; ++i) output[i] = to_quaternion(m[i]);
+    std::size_t done = 0;
+#if defined(__AVX512F__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
+                          sizeof(quaternion<float>) == 4 * sizeof(float),
+                      "packed matrices and quaternions");
+        if (count >= 16) done = detail::to_quaternion_each_interleaved_16(m, output, count);
+    }
+#endif
+#endif
+    for (std::size_t i = done; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 
 /// Container form of to_quaternion_each. Precondition: size(output) >= size(m) (QUAT_ASSERT);
