@@ -3712,6 +3712,51 @@ namespace detail {
 
 #if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
+// Rows a, b, c, d of the 4x4 matrix in each 128-bit lane, transposed in place: 8 in-lane unpacks.
+// Its own inverse. On 4 quaternions a lane (one a row), it separates w, x, y and z.
+inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexcept {
+    // Per lane: t0 = a0 b0 a1 b1, t1 = a2 b2 a3 b3, t2 = c0 d0 c1 d1, t3 = c2 d2 c3 d3.
+    const float8 t0 = __builtin_shufflevector(a, b, 0, 8, 1, 9, 4, 12, 5, 13);
+    const float8 t1 = __builtin_shufflevector(a, b, 2, 10, 3, 11, 6, 14, 7, 15);
+    const float8 t2 = __builtin_shufflevector(c, d, 0, 8, 1, 9, 4, 12, 5, 13);
+    const float8 t3 = __builtin_shufflevector(c, d, 2, 10, 3, 11, 6, 14, 7, 15);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    b = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    c = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+}
+
+[[nodiscard]] inline float8 load8(const float* p) noexcept {
+    float8 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
+// itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
+// in whatever lane order: a and b alike, and the transpose back restores it): 24 unpacks and 16
+// multiplies per 8 products. The plain loop, as g++ 12 compiles it at -march=x86-64-v3, took as
+// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (harness, CPU time). Output may
+// be a or b: each group is read whole before it is written.
+[[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
+                                                          float* out, std::size_t n) noexcept {
+    auto load = [](const float* q) noexcept {
+        quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
+        transpose_in_lanes(r.w, r.x, r.y, r.z);
+        return r;
+    };
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        quaternion<float8> r = load(a + 4 * i) * load(b + 4 * i);
+        transpose_in_lanes(r.w, r.x, r.y, r.z);
+        std::memcpy(out + 4 * i, &r.w, sizeof r.w);
+        std::memcpy(out + 4 * i + 8, &r.x, sizeof r.x);
+        std::memcpy(out + 4 * i + 16, &r.y, sizeof r.y);
+        std::memcpy(out + 4 * i + 24, &r.z, sizeof r.z);
+    }
+    return i;
+}
+
 // rotate_each of float elements [0, n - n % 8) in AVX builds, 8 a step, with the shuffles spelled
 // out as in interleaved_points_avx.hpp (whose helpers it uses), and returns how many it did. Each
 // 128-bit lane holds 4 whole elements (elements 0-3 in the low lanes, 4-7 in the high ones), so
@@ -3731,17 +3776,9 @@ namespace detail {
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* r = q + 4 * i;
-        const float8 e0 = load(r, r + 16), e1 = load(r + 4, r + 20), e2 = load(r + 8, r + 24),
-                     e3 = load(r + 12, r + 28);
-        // Per lane: t0 = w0 w1 x0 x1, t1 = y0 y1 z0 z1, t2 = w2 w3 x2 x3, t3 = y2 y3 z2 z3.
-        const float8 t0 = __builtin_shufflevector(e0, e1, 0, 8, 1, 9, 4, 12, 5, 13);
-        const float8 t1 = __builtin_shufflevector(e0, e1, 2, 10, 3, 11, 6, 14, 7, 15);
-        const float8 t2 = __builtin_shufflevector(e2, e3, 0, 8, 1, 9, 4, 12, 5, 13);
-        const float8 t3 = __builtin_shufflevector(e2, e3, 2, 10, 3, 11, 6, 14, 7, 15);
-        const float8 w = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
-        const float8 x = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
-        const float8 y = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
-        const float8 z = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+        float8 w = load(r, r + 16), x = load(r + 4, r + 20), y = load(r + 8, r + 24),
+               z = load(r + 12, r + 28);
+        transpose_in_lanes(w, x, y, z);
         const float* s = p + 3 * i;
         const float8 a = load(s, s + 12), b = load(s + 4, s + 16), c = load(s + 8, s + 20);
         const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
@@ -4503,12 +4540,17 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
                                              count * sizeof(quaternion<T>)),
                 "quat::compose_each: output partially overlaps an input");
     std::size_t done = 0;
-#if defined(__AVX512F__) && defined(__has_builtin)
+#if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(quaternion<float>) == 4 * sizeof(float), "packed quaternions");
+#if defined(__AVX512F__)
         if (count >= 16)
             done = detail::compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, count);
+#endif
+        if (count - done >= 8)
+            done += detail::compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w,
+                                                     count - done);
     }
 #endif
 #endif

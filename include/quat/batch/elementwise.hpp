@@ -295,12 +295,17 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
                                              count * sizeof(quaternion<T>)),
                 "quat::compose_each: output partially overlaps an input");
     std::size_t done = 0;
-#if defined(__AVX512F__) && defined(__has_builtin)
+#if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(quaternion<float>) == 4 * sizeof(float), "packed quaternions");
+#if defined(__AVX512F__)
         if (count >= 16)
             done = detail::compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, count);
+#endif
+        if (count - done >= 8)
+            done += detail::compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w,
+                                                     count - done);
     }
 #endif
 #endif
