@@ -255,6 +255,20 @@ using int16 = int __attribute__((vector_size(64)));
 #endif
 }
 
+// Entry (R, c) of 16 matrices from the columns of their rows (column[g][c]: column c of rows
+// 16 g ... 16 g + 15, row 3 e + r being row r of matrix e), element each_element(l) in lane l.
+template <int R>
+[[nodiscard]] inline float16 matrix_entry(const float16 (&column)[3][3], int c) noexcept {
+    return every_third<R, false>(column[0][c], column[1][c], column[2][c],
+                                 std::make_integer_sequence<int, 16>{});
+}
+
+// a, b, c or d: the first whose case holds, d where none does (to_quaternion's if-else chain).
+[[nodiscard]] inline float16 select_case(const int16 (&cases)[3], float16 a, float16 b, float16 c,
+                                         float16 d) noexcept {
+    return select16(cases[0], a, select16(cases[1], b, select16(cases[2], c, d)));
+}
+
 // to_quaternion_each of float matrices [0, n - n % 16) in AVX-512 builds, 16 a step, and how many
 // it did: to_quaternion's arithmetic on 16 lanes, its branches turned into selects. The scalar
 // loop is branchy (which of four cases, then the sign of w), and a branch taken at random costs
@@ -280,34 +294,27 @@ using int16 = int __attribute__((vector_size(64)));
             column[g][1] = every_third<1, true>(a, b, c, lanes);
             column[g][2] = every_third<2, true>(a, b, c, lanes);
         }
-        auto entry = [&](auto row, int c) noexcept {
-            return every_third<decltype(row)::value, false>(column[0][c], column[1][c],
-                                                            column[2][c], lanes);
-        };
-        const std::integral_constant<int, 0> r0;
-        const std::integral_constant<int, 1> r1;
-        const std::integral_constant<int, 2> r2;
-        const float16 m00 = entry(r0, 0), m01 = entry(r0, 1), m02 = entry(r0, 2);
-        const float16 m10 = entry(r1, 0), m11 = entry(r1, 1), m12 = entry(r1, 2);
-        const float16 m20 = entry(r2, 0), m21 = entry(r2, 1), m22 = entry(r2, 2);
+        const float16 m00 = matrix_entry<0>(column, 0), m01 = matrix_entry<0>(column, 1),
+                      m02 = matrix_entry<0>(column, 2);
+        const float16 m10 = matrix_entry<1>(column, 0), m11 = matrix_entry<1>(column, 1),
+                      m12 = matrix_entry<1>(column, 2);
+        const float16 m20 = matrix_entry<2>(column, 0), m21 = matrix_entry<2>(column, 1),
+                      m22 = matrix_entry<2>(column, 2);
         // to_quaternion's four cases, chosen by the same comparisons in the same order.
         const float16 trace = m00 + m11 + m22;
-        const int16 first = (trace >= m00) & (trace >= m11) & (trace >= m22);
-        const int16 second = (m00 >= m11) & (m00 >= m22);
-        const int16 third = m11 >= m22;
-        auto pick = [&](float16 a, float16 b, float16 c, float16 d) noexcept {
-            return select16(first, a, select16(second, b, select16(third, c, d)));
-        };
+        const int16 cases[3] = {(trace >= m00) & (trace >= m11) & (trace >= m22),
+                                (m00 >= m11) & (m00 >= m22), m11 >= m22};
         const float16 wx = m21 - m12, wy = m02 - m20, wz = m10 - m01;
         const float16 xy = m01 + m10, xz = m02 + m20, yz = m12 + m21;
-        const quaternion<float16> q{
-            pick(1 + trace, wx, wy, wz), pick(wx, 1 + m00 - m11 - m22, xy, xz),
-            pick(wy, xy, 1 - m00 + m11 - m22, yz), pick(wz, xz, yz, 1 - m00 - m11 + m22)};
+        const quaternion<float16> q{select_case(cases, 1 + trace, wx, wy, wz),
+                                    select_case(cases, wx, 1 + m00 - m11 - m22, xy, xz),
+                                    select_case(cases, wy, xy, 1 - m00 + m11 - m22, yz),
+                                    select_case(cases, wz, xz, yz, 1 - m00 - m11 + m22)};
         const float16 squared = squared_norm(q);
         const int16 normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
-        bool all_normal = true;
-        for (int l = 0; l < 16; ++l) all_normal = all_normal && normal[l] != 0;
-        if (!all_normal) {
+        int abnormal = 0;  // a reduction of the lanes, without a branch per lane
+        for (int l = 0; l < 16; ++l) abnormal |= ~normal[l];
+        if (abnormal != 0) {
             for (std::size_t j = i; j < i + 16; ++j) out[j] = to_quaternion(m[j]);
             continue;
         }
