@@ -2975,10 +2975,10 @@ template <class T>
 // scalar conversion element by element, and so does to_quaternion_each but for float in AVX-512
 // builds: vectorized through local arrays (blocks of matrices regrouped, a branch-free
 // to_quaternion) both measured slower than these loops for SSE2 and AVX2 with g++ 12 (to_quaternion
-// 7.3 us per 1024 against 4.9 with AVX-512 too, on a Zen 4), since g++ has no cheap way to regroup the nine
-// interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in registers
-// (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still differ in
-// the last bit where the compiler fuses multiply-adds differently in the two places
+// 7.3 us per 1024 against 4.9 with AVX-512 too, on a Zen 4), since g++ has no cheap way to regroup
+// the nine interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in
+// registers (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still
+// differ in the last bit where the compiler fuses multiply-adds differently in the two places
 // (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
@@ -3736,8 +3736,8 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
 // itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
 // in whatever lane order: a and b alike, and the transpose back restores it): 24 unpacks and 16
 // multiplies per 8 products. The plain loop, as g++ 12 compiles it at -march=x86-64-v3, took as
-// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time). Output may
-// be a or b: each group is read whole before it is written.
+// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time).
+// Output may be a or b: each group is read whole before it is written.
 [[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
                                                           float* out, std::size_t n) noexcept {
     auto load = [](const float* q) noexcept {

@@ -15,10 +15,10 @@
 // scalar conversion element by element, and so does to_quaternion_each but for float in AVX-512
 // builds: vectorized through local arrays (blocks of matrices regrouped, a branch-free
 // to_quaternion) both measured slower than these loops for SSE2 and AVX2 with g++ 12 (to_quaternion
-// 7.3 us per 1024 against 4.9 with AVX-512 too, on a Zen 4), since g++ has no cheap way to regroup the nine
-// interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in registers
-// (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still differ in
-// the last bit where the compiler fuses multiply-adds differently in the two places
+// 7.3 us per 1024 against 4.9 with AVX-512 too, on a Zen 4), since g++ has no cheap way to regroup
+// the nine interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in
+// registers (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still
+// differ in the last bit where the compiler fuses multiply-adds differently in the two places
 // (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),

@@ -49,8 +49,8 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
 // itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
 // in whatever lane order: a and b alike, and the transpose back restores it): 24 unpacks and 16
 // multiplies per 8 products. The plain loop, as g++ 12 compiles it at -march=x86-64-v3, took as
-// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time). Output may
-// be a or b: each group is read whole before it is written.
+// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time).
+// Output may be a or b: each group is read whole before it is written.
 [[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
                                                           float* out, std::size_t n) noexcept {
     auto load = [](const float* q) noexcept {
