@@ -12,14 +12,14 @@
 // vectorize them (checked with -fopt-info-vec and objdump); the float array-of-structs kernels of
 // AVX and AVX-512 builds spell their shuffles out instead (detail/interleaved_elements_avx.hpp),
 // since the compiled loops are bound by their lane-crossing permutes. to_matrix_each runs the
-// scalar conversion element by element, and so does to_quaternion_each but for float in AVX-512
-// builds: vectorized through local arrays (blocks of matrices regrouped, a branch-free
-// to_quaternion) both measured slower than these loops for SSE2 and AVX2 with g++ 12 (to_quaternion
-// 7.3 us per 1024 against 4.9 with AVX-512 too, on a Zen 4), since g++ has no cheap way to regroup
-// the nine interleaved entries of a matrix; to_quaternion_each's AVX-512 kernel regroups them in
-// registers (2.1 us against 4.9, GLM's loop 3.8). Where a result is "the scalar one", it may still
-// differ in the last bit where the compiler fuses multiply-adds differently in the two places
-// (-ffp-contract).
+// scalar conversion element by element. to_quaternion_each does too but for float in AVX and
+// AVX-512 builds, where its kernels regroup the nine interleaved entries of 8 or 16 matrices in
+// registers and convert without a branch: the scalar loop branches four ways at random (4.9 ns a
+// matrix over 1024 random rotations at -march=x86-64-v3 on a Zen 4, against 3.6 for GLM's
+// quat_cast loop), the kernels took 2.0 (AVX) and 2.1 (AVX-512). Regrouped through local arrays
+// instead, g++ 12 vectorized the conversion slower than the scalar loop (7.3 against 4.9, AVX-512).
+// Where a result is "the scalar one", it may still differ in the last bit where the compiler fuses
+// multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
 // as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
@@ -358,13 +358,17 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
     std::size_t done = 0;
-#if defined(__AVX512F__) && defined(__has_builtin)
+#if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
         static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
                           sizeof(quaternion<float>) == 4 * sizeof(float),
                       "packed matrices and quaternions");
+#if defined(__AVX512F__)
         if (count >= 16) done = detail::to_quaternion_each_interleaved_16(m, output, count);
+#endif
+        if (count - done >= 8)
+            done += detail::to_quaternion_each_interleaved(m + done, output + done, count - done);
     }
 #endif
 #endif

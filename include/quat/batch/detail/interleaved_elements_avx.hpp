@@ -70,6 +70,131 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
     return i;
 }
 
+// Lane l of a where mask lane l is all ones, of b where it is zero (a blend).
+template <class V, class Mask>
+[[nodiscard]] inline V select_lanes(Mask mask, V a, V b) noexcept {
+    static_assert(sizeof(Mask) == sizeof(V), "one mask lane per lane");
+    Mask ai, bi;
+    std::memcpy(&ai, &a, sizeof ai);
+    std::memcpy(&bi, &b, sizeof bi);
+    const Mask bits = (mask & ai) | (~mask & bi);
+    V r;
+    std::memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
+// The correctly rounded square root of each lane (vsqrtps): a loop of __builtin_sqrtf stays scalar,
+// since each call may set errno.
+[[nodiscard]] inline float8 sqrt_lanes(float8 x) noexcept { return __builtin_ia32_sqrtps256(x); }
+#if defined(__AVX512F__)
+[[nodiscard]] inline float16 sqrt_lanes(float16 x) noexcept {
+    constexpr int current_rounding = 4;  // _MM_FROUND_CUR_DIRECTION
+#if defined(__clang__)                   // g++ and clang name the builtin differently
+    return __builtin_ia32_sqrtps512(x, current_rounding);
+#else
+    return __builtin_ia32_sqrtps512_mask(x, x, static_cast<short>(-1), current_rounding);
+#endif
+}
+#endif
+
+// a, b, c or d: the first whose case holds, d where none does (to_quaternion's if-else chain).
+template <class V, class Mask>
+[[nodiscard]] inline V select_case(const Mask (&cases)[3], V a, V b, V c, V d) noexcept {
+    return select_lanes(cases[0], a, select_lanes(cases[1], b, select_lanes(cases[2], c, d)));
+}
+
+// to_quaternion of the matrices whose row-major entries are the lanes of e[0] ... e[8], into q,
+// its branches turned into selects: the same four cases, chosen by the same comparisons in the
+// same order, and the same arithmetic. False (q unspecified) when some lane's squared norm is
+// outside the normal range (not a rotation: zero, NaN, huge), whose matrices the caller converts
+// with to_quaternion itself, so that results equal the scalar ones whatever the input.
+template <class V>
+[[nodiscard]] inline bool quaternions_of_matrices(const V (&e)[9], quaternion<V>& q) noexcept {
+    const V m00 = e[0], m01 = e[1], m02 = e[2], m10 = e[3], m11 = e[4], m12 = e[5], m20 = e[6],
+            m21 = e[7], m22 = e[8];
+    const V trace = m00 + m11 + m22;
+    using Mask = decltype(trace < trace);
+    const Mask cases[3] = {(trace >= m00) & (trace >= m11) & (trace >= m22),
+                           (m00 >= m11) & (m00 >= m22), m11 >= m22};
+    const V wx = m21 - m12, wy = m02 - m20, wz = m10 - m01;
+    const V xy = m01 + m10, xz = m02 + m20, yz = m12 + m21;
+    q = {select_case(cases, 1 + trace, wx, wy, wz),
+         select_case(cases, wx, 1 + m00 - m11 - m22, xy, xz),
+         select_case(cases, wy, xy, 1 - m00 + m11 - m22, yz),
+         select_case(cases, wz, xz, yz, 1 - m00 - m11 + m22)};
+    const V squared = squared_norm(q);
+    const Mask normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
+    int abnormal = 0;  // a reduction of the lanes, without a branch per lane
+    for (std::size_t l = 0; l < sizeof(V) / sizeof(float); ++l) abnormal |= ~normal[l];
+    if (abnormal != 0) return false;
+    const V scale = 1 / sqrt_lanes(squared);
+    q = q * select_lanes(q.w < 0, -scale, scale);
+    return true;
+}
+
+// Entry C (row-major) of 8 matrices, two groups of 4 whose 36 floats each lie in 9 registers, the
+// first group in the low 128-bit lanes and the second in the high ones: matrix k's entry (float
+// 9 k + C of its group) lies at position (k + C) % 4 of register (9 k + C) / 4, four registers with
+// four different positions, so 3 blends and one in-lane permute (none where C % 4 == 0) put it in
+// lane k.
+template <int C, int... L>
+[[nodiscard]] inline float8 matrix_entry8(const float8 (&r)[9],
+                                          std::integer_sequence<int, L...>) noexcept {
+    constexpr int p0 = C % 4, p1 = (1 + C) % 4, p2 = (2 + C) % 4, p3 = (3 + C) % 4;
+    const float8 first =
+        __builtin_shufflevector(r[C / 4], r[(9 + C) / 4], (L % 4 == p1 ? 8 + L : L)...);
+    const float8 second =
+        __builtin_shufflevector(r[(18 + C) / 4], r[(27 + C) / 4], (L % 4 == p3 ? 8 + L : L)...);
+    const float8 blended =
+        __builtin_shufflevector(first, second, (L % 4 == p2 || L % 4 == p3 ? 8 + L : L)...);
+    static_cast<void>(p0);
+    return __builtin_shufflevector(blended, blended, (L - L % 4 + (L % 4 + C) % 4)...);
+}
+
+// to_quaternion_each of float matrices [0, n - n % 8) in AVX builds, 8 a step, and how many it did:
+// the AVX-512 kernel's conversion (below) on 8 lanes, the entries separated by matrix_entry8 (27
+// blends and 6 permutes, all in-lane), the quaternions joined by an in-lane transpose. On a Zen 4
+// at -march=x86-64-v3 the scalar loop took 4.9 ns a matrix over 1024 random rotations, against 3.6
+// for GLM's quat_cast loop: both branch four ways at random.
+[[nodiscard]] inline std::size_t to_quaternion_each_interleaved(const rotation_matrix<float>* m,
+                                                                quaternion<float>* out,
+                                                                std::size_t n) noexcept {
+    auto load = [](const float* low, const float* high) noexcept {
+        const float4 lower = load4(low);
+        return __builtin_ia32_vinsertf128_ps256(
+            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
+    };
+    constexpr auto lanes = std::make_integer_sequence<int, 8>{};
+    std::size_t i = 0;
+    // Bounded by `whole` rather than i + 8 <= n: with that, g++ 12 warned
+    // (-Waggressive-loop-optimizations) on the caller's scalar tail for a constant count of 1024.
+    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+        const float* s = &m[i](0, 0);
+        float8 r[9];
+        for (int j = 0; j < 9; ++j) r[j] = load(s + 4 * j, s + 36 + 4 * j);
+        const float8 entries[9] = {
+            matrix_entry8<0>(r, lanes), matrix_entry8<1>(r, lanes), matrix_entry8<2>(r, lanes),
+            matrix_entry8<3>(r, lanes), matrix_entry8<4>(r, lanes), matrix_entry8<5>(r, lanes),
+            matrix_entry8<6>(r, lanes), matrix_entry8<7>(r, lanes), matrix_entry8<8>(r, lanes)};
+        quaternion<float8> q;
+        if (!quaternions_of_matrices(entries, q)) {
+            for (std::size_t j = i; j < i + 8; ++j) out[j] = to_quaternion(m[j]);
+            continue;
+        }
+        transpose_in_lanes(q.w, q.x, q.y, q.z);  // lane 0 of q.w: quaternion 0, lane 1: 4, ...
+        float* o = &out[i].w;
+        store4(o, __builtin_ia32_vextractf128_ps256(q.w, 0));
+        store4(o + 4, __builtin_ia32_vextractf128_ps256(q.x, 0));
+        store4(o + 8, __builtin_ia32_vextractf128_ps256(q.y, 0));
+        store4(o + 12, __builtin_ia32_vextractf128_ps256(q.z, 0));
+        store4(o + 16, __builtin_ia32_vextractf128_ps256(q.w, 1));
+        store4(o + 20, __builtin_ia32_vextractf128_ps256(q.x, 1));
+        store4(o + 24, __builtin_ia32_vextractf128_ps256(q.y, 1));
+        store4(o + 28, __builtin_ia32_vextractf128_ps256(q.z, 1));
+    }
+    return i;
+}
+
 // rotate_each of float elements [0, n - n % 8) in AVX builds, 8 a step, with the shuffles spelled
 // out as in interleaved_points_avx.hpp (whose helpers it uses), and returns how many it did. Each
 // 128-bit lane holds 4 whole elements (elements 0-3 in the low lanes, 4-7 in the high ones), so
@@ -231,30 +356,6 @@ inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
     }
     return i;
 }
-using int16 = int __attribute__((vector_size(64)));
-
-// Lane l of a where mask lane l is all ones, of b where it is zero (one vpternlogd or blend).
-[[nodiscard]] inline float16 select16(int16 mask, float16 a, float16 b) noexcept {
-    int16 ai, bi;
-    std::memcpy(&ai, &a, sizeof ai);
-    std::memcpy(&bi, &b, sizeof bi);
-    const int16 bits = (mask & ai) | (~mask & bi);
-    float16 r;
-    std::memcpy(&r, &bits, sizeof r);
-    return r;
-}
-
-// The correctly rounded square root of each lane (vsqrtps): a loop of __builtin_sqrtf stays scalar,
-// since each call may set errno; g++ and clang name the builtin differently.
-[[nodiscard]] inline float16 sqrt16(float16 x) noexcept {
-    constexpr int current_rounding = 4;  // _MM_FROUND_CUR_DIRECTION
-#if defined(__clang__)
-    return __builtin_ia32_sqrtps512(x, current_rounding);
-#else
-    return __builtin_ia32_sqrtps512_mask(x, x, static_cast<short>(-1), current_rounding);
-#endif
-}
-
 // Entry (R, c) of 16 matrices from the columns of their rows (column[g][c]: column c of rows
 // 16 g ... 16 g + 15, row 3 e + r being row r of matrix e), element each_element(l) in lane l.
 template <int R>
@@ -263,27 +364,21 @@ template <int R>
                                  std::make_integer_sequence<int, 16>{});
 }
 
-// a, b, c or d: the first whose case holds, d where none does (to_quaternion's if-else chain).
-[[nodiscard]] inline float16 select_case(const int16 (&cases)[3], float16 a, float16 b, float16 c,
-                                         float16 d) noexcept {
-    return select16(cases[0], a, select16(cases[1], b, select16(cases[2], c, d)));
-}
-
 // to_quaternion_each of float matrices [0, n - n % 16) in AVX-512 builds, 16 a step, and how many
-// it did: to_quaternion's arithmetic on 16 lanes, its branches turned into selects. The scalar
-// loop is branchy (which of four cases, then the sign of w), and a branch taken at random costs
-// more than the conversion: over 1024 random rotations it took 3.0 or 5.0 ns a matrix with what the
-// predictor had learnt, as GLM's quat_cast does; this kernel takes neither branch. The 9 entries of
-// 16 matrices (9 registers) are separated in two rounds of every_third (rows of 3, then every third
-// row): 36 permutes; the quaternions leave through store_quaternions16. A group with a squared
-// norm outside the normal range (not a rotation: zero, NaN, huge) is converted by to_quaternion
-// itself, element by element, so results equal the scalar ones whatever the input.
+// it did: to_quaternion's arithmetic on 16 lanes, its branches turned into selects. The scalar loop
+// is branchy (which of four cases, then the sign of w), and a branch taken at random costs more
+// than the conversion: over 1024 random rotations it took 3.0 or 5.0 ns a matrix (Zen 5) with what
+// the predictor had learnt, as GLM's quat_cast does; this kernel takes neither branch. The 9
+// entries of 16 matrices (9 registers) are separated in two rounds of every_third (rows of 3, then
+// every third row): 36 permutes; the quaternions leave through store_quaternions16. A group with a
+// squared norm outside the normal range (not a rotation: zero, NaN, huge) is converted by
+// to_quaternion itself, element by element, so results equal the scalar ones whatever the input.
 [[nodiscard]] inline std::size_t to_quaternion_each_interleaved_16(const rotation_matrix<float>* m,
                                                                    quaternion<float>* out,
                                                                    std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
     std::size_t i = 0;
-    for (; i + 16 <= n; i += 16) {
+    for (const std::size_t whole = n - n % 16; i < whole; i += 16) {
         const float* s = &m[i](0, 0);
         // Column c of rows 16 g ... 16 g + 15 (row 3 e + r is row r of matrix e).
         float16 column[3][3];
@@ -294,32 +389,16 @@ template <int R>
             column[g][1] = every_third<1, true>(a, b, c, lanes);
             column[g][2] = every_third<2, true>(a, b, c, lanes);
         }
-        const float16 m00 = matrix_entry<0>(column, 0), m01 = matrix_entry<0>(column, 1),
-                      m02 = matrix_entry<0>(column, 2);
-        const float16 m10 = matrix_entry<1>(column, 0), m11 = matrix_entry<1>(column, 1),
-                      m12 = matrix_entry<1>(column, 2);
-        const float16 m20 = matrix_entry<2>(column, 0), m21 = matrix_entry<2>(column, 1),
-                      m22 = matrix_entry<2>(column, 2);
-        // to_quaternion's four cases, chosen by the same comparisons in the same order.
-        const float16 trace = m00 + m11 + m22;
-        const int16 cases[3] = {(trace >= m00) & (trace >= m11) & (trace >= m22),
-                                (m00 >= m11) & (m00 >= m22), m11 >= m22};
-        const float16 wx = m21 - m12, wy = m02 - m20, wz = m10 - m01;
-        const float16 xy = m01 + m10, xz = m02 + m20, yz = m12 + m21;
-        const quaternion<float16> q{select_case(cases, 1 + trace, wx, wy, wz),
-                                    select_case(cases, wx, 1 + m00 - m11 - m22, xy, xz),
-                                    select_case(cases, wy, xy, 1 - m00 + m11 - m22, yz),
-                                    select_case(cases, wz, xz, yz, 1 - m00 - m11 + m22)};
-        const float16 squared = squared_norm(q);
-        const int16 normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
-        int abnormal = 0;  // a reduction of the lanes, without a branch per lane
-        for (int l = 0; l < 16; ++l) abnormal |= ~normal[l];
-        if (abnormal != 0) {
+        const float16 entries[9] = {
+            matrix_entry<0>(column, 0), matrix_entry<0>(column, 1), matrix_entry<0>(column, 2),
+            matrix_entry<1>(column, 0), matrix_entry<1>(column, 1), matrix_entry<1>(column, 2),
+            matrix_entry<2>(column, 0), matrix_entry<2>(column, 1), matrix_entry<2>(column, 2)};
+        quaternion<float16> q;
+        if (!quaternions_of_matrices(entries, q)) {
             for (std::size_t j = i; j < i + 16; ++j) out[j] = to_quaternion(m[j]);
             continue;
         }
-        const float16 scale = 1 / sqrt16(squared);
-        store_quaternions16(&out[i].w, q * select16(q.w < 0, -scale, scale));
+        store_quaternions16(&out[i].w, q);
     }
     return i;
 }
