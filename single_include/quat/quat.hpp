@@ -3432,6 +3432,15 @@ using float8 = float __attribute__((vector_size(32)));
     return v;
 }
 inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
+
+// 8 floats from two places: 4 at low (the low 128-bit lane) and 4 at high. The high half by the
+// vinsertf128 builtin, which takes it straight from memory (a shuffle of two loaded halves costs a
+// port-5 uop more per register).
+[[nodiscard]] inline float8 load_halves(const float* low, const float* high) noexcept {
+    const float4 lower = load4(low);
+    return __builtin_ia32_vinsertf128_ps256(
+        __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
+}
 // A plain store, or a non-temporal one (p aligned to 16 bytes) when Stream.
 template <bool Stream>
 inline void put4(float* p, float4 v) noexcept {
@@ -3480,18 +3489,12 @@ template <bool Translate, bool Stream = false>
                  m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
                  m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
     const float8 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
-    // The high half by the vinsertf128 builtin, which takes it straight from memory (a shuffle of
-    // two loaded halves costs a port-5 uop more per register).
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* p = in + 3 * i;
         // Per lane (points 0-3 low, 4-7 high): a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3.
-        const float8 a = load(p, p + 12), b = load(p + 4, p + 16), c = load(p + 8, p + 20);
+        const float8 a = load_halves(p, p + 12), b = load_halves(p + 4, p + 16),
+                     c = load_halves(p + 8, p + 20);
         // The blends gather a coordinate in a rotated order (x0 x3 x2 x1, y1 y0 y3 y2,
         // z2 z1 z0 z3); the permutes put it in order, and later back.
         const float8 x = swap_1_3(blend_1_5(blend_2_6(a, b), c));
@@ -3846,11 +3849,6 @@ template <int C, int... L>
 [[nodiscard]] inline std::size_t to_quaternion_each_interleaved(const rotation_matrix<float>* m,
                                                                 quaternion<float>* out,
                                                                 std::size_t n) noexcept {
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
     // Bounded by `whole` rather than i + 8 <= n: with that, g++ 12 warned
@@ -3858,7 +3856,7 @@ template <int C, int... L>
     for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
         const float* s = &m[i](0, 0);
         float8 r[9];
-        for (int j = 0; j < 9; ++j) r[j] = load(s + 4 * j, s + 36 + 4 * j);
+        for (int j = 0; j < 9; ++j) r[j] = load_halves(s + 4 * j, s + 36 + 4 * j);
         const float8 entries[9] = {
             matrix_entry8<0>(r, lanes), matrix_entry8<1>(r, lanes), matrix_entry8<2>(r, lanes),
             matrix_entry8<3>(r, lanes), matrix_entry8<4>(r, lanes), matrix_entry8<5>(r, lanes),
@@ -3893,19 +3891,15 @@ template <int C, int... L>
 // remaining 8.
 [[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
                                                          std::size_t n) noexcept {
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* r = q + 4 * i;
-        float8 w = load(r, r + 16), x = load(r + 4, r + 20), y = load(r + 8, r + 24),
-               z = load(r + 12, r + 28);
+        float8 w = load_halves(r, r + 16), x = load_halves(r + 4, r + 20),
+               y = load_halves(r + 8, r + 24), z = load_halves(r + 12, r + 28);
         transpose_in_lanes(w, x, y, z);
         const float* s = p + 3 * i;
-        const float8 a = load(s, s + 12), b = load(s + 4, s + 16), c = load(s + 8, s + 20);
+        const float8 a = load_halves(s, s + 12), b = load_halves(s + 4, s + 16),
+                     c = load_halves(s + 8, s + 20);
         const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
         const float8 vy = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
         const float8 vz = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));

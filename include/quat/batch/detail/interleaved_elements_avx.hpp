@@ -159,11 +159,6 @@ template <int C, int... L>
 [[nodiscard]] inline std::size_t to_quaternion_each_interleaved(const rotation_matrix<float>* m,
                                                                 quaternion<float>* out,
                                                                 std::size_t n) noexcept {
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
     // Bounded by `whole` rather than i + 8 <= n: with that, g++ 12 warned
@@ -171,7 +166,7 @@ template <int C, int... L>
     for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
         const float* s = &m[i](0, 0);
         float8 r[9];
-        for (int j = 0; j < 9; ++j) r[j] = load(s + 4 * j, s + 36 + 4 * j);
+        for (int j = 0; j < 9; ++j) r[j] = load_halves(s + 4 * j, s + 36 + 4 * j);
         const float8 entries[9] = {
             matrix_entry8<0>(r, lanes), matrix_entry8<1>(r, lanes), matrix_entry8<2>(r, lanes),
             matrix_entry8<3>(r, lanes), matrix_entry8<4>(r, lanes), matrix_entry8<5>(r, lanes),
@@ -206,19 +201,15 @@ template <int C, int... L>
 // remaining 8.
 [[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
                                                          std::size_t n) noexcept {
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* r = q + 4 * i;
-        float8 w = load(r, r + 16), x = load(r + 4, r + 20), y = load(r + 8, r + 24),
-               z = load(r + 12, r + 28);
+        float8 w = load_halves(r, r + 16), x = load_halves(r + 4, r + 20),
+               y = load_halves(r + 8, r + 24), z = load_halves(r + 12, r + 28);
         transpose_in_lanes(w, x, y, z);
         const float* s = p + 3 * i;
-        const float8 a = load(s, s + 12), b = load(s + 4, s + 16), c = load(s + 8, s + 20);
+        const float8 a = load_halves(s, s + 12), b = load_halves(s + 4, s + 16),
+                     c = load_halves(s + 8, s + 20);
         const float8 vx = swap_1_3(blend_1_5(blend_2_6(a, b), c));
         const float8 vy = swap_pairs(blend_2_6(blend_0_3_4_7(a, b), c));
         const float8 vz = swap_0_2(blend_0_3_4_7(blend_1_5(a, b), c));

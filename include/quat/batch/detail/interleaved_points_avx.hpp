@@ -43,6 +43,15 @@ using float8 = float __attribute__((vector_size(32)));
     return v;
 }
 inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
+
+// 8 floats from two places: 4 at low (the low 128-bit lane) and 4 at high. The high half by the
+// vinsertf128 builtin, which takes it straight from memory (a shuffle of two loaded halves costs a
+// port-5 uop more per register).
+[[nodiscard]] inline float8 load_halves(const float* low, const float* high) noexcept {
+    const float4 lower = load4(low);
+    return __builtin_ia32_vinsertf128_ps256(
+        __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
+}
 // A plain store, or a non-temporal one (p aligned to 16 bytes) when Stream.
 template <bool Stream>
 inline void put4(float* p, float4 v) noexcept {
@@ -91,18 +100,12 @@ template <bool Translate, bool Stream = false>
                  m10 = splat(m(1, 0)), m11 = splat(m(1, 1)), m12 = splat(m(1, 2)),
                  m20 = splat(m(2, 0)), m21 = splat(m(2, 1)), m22 = splat(m(2, 2));
     const float8 tx = splat(t.x), ty = splat(t.y), tz = splat(t.z);
-    // The high half by the vinsertf128 builtin, which takes it straight from memory (a shuffle of
-    // two loaded halves costs a port-5 uop more per register).
-    auto load = [](const float* low, const float* high) noexcept {
-        const float4 lower = load4(low);
-        return __builtin_ia32_vinsertf128_ps256(
-            __builtin_shufflevector(lower, lower, 0, 1, 2, 3, -1, -1, -1, -1), load4(high), 1);
-    };
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         const float* p = in + 3 * i;
         // Per lane (points 0-3 low, 4-7 high): a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3.
-        const float8 a = load(p, p + 12), b = load(p + 4, p + 16), c = load(p + 8, p + 20);
+        const float8 a = load_halves(p, p + 12), b = load_halves(p + 4, p + 16),
+                     c = load_halves(p + 8, p + 20);
         // The blends gather a coordinate in a rotated order (x0 x3 x2 x1, y1 y0 y3 y2,
         // z2 z1 z0 z3); the permutes put it in order, and later back.
         const float8 x = swap_1_3(blend_1_5(blend_2_6(a, b), c));
