@@ -11,15 +11,16 @@
 // For float and double the rotate_each and compose_each loops are written so that g++ and clang
 // vectorize them (checked with -fopt-info-vec and objdump); the float array-of-structs kernels of
 // AVX and AVX-512 builds spell their shuffles out instead (detail/interleaved_elements_avx.hpp),
-// since the compiled loops are bound by their lane-crossing permutes. to_matrix_each runs the
-// scalar conversion element by element. to_quaternion_each does too but for float in AVX and
-// AVX-512 builds, where its kernels regroup the nine interleaved entries of 8 or 16 matrices in
-// registers and convert without a branch: the scalar loop branches four ways at random (4.9 ns a
-// matrix over 1024 random rotations at -march=x86-64-v3 on a Zen 4, against 3.6 for GLM's
-// quat_cast loop), the kernels took 2.0 (AVX) and 2.1 (AVX-512). Regrouped through local arrays
-// instead, g++ 12 vectorized the conversion slower than the scalar loop (7.3 against 4.9, AVX-512).
-// Where a result is "the scalar one", it may still differ in the last bit where the compiler fuses
-// multiply-adds differently in the two places (-ffp-contract).
+// since the compiled loops are bound by their lane-crossing permutes. So do the conversions
+// to_matrix_each and to_quaternion_each for float in AVX and AVX-512 builds, whose kernels regroup
+// the nine interleaved entries of 8 or 16 matrices in registers; elsewhere they run the scalar
+// conversions element by element. On a Zen 4, 1024 random rotations: to_matrix 1.37 us against
+// 2.3 to 2.4 for the scalar loop and Eigen's, 2.5 for GLM's; to_quaternion, which the kernels run
+// without a branch, 2.0 (AVX) and 2.1 (AVX-512) against 4.9 for the scalar loop, which branches
+// four ways at random, and 3.6 for GLM's quat_cast loop (-march=x86-64-v3). Regrouped through
+// local arrays instead, g++ 12 vectorized to_quaternion slower than the scalar loop (7.3 against
+// 4.9, AVX-512). Where a result is "the scalar one", it may still differ in the last bit where the
+// compiler fuses multiply-adds differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
 // as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
@@ -333,7 +334,18 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
     QUAT_ASSERT(detail::disjoint(q, count * sizeof(quaternion<T>), output,
                                  count * sizeof(rotation_matrix<T>)),
                 "quat::to_matrix_each: output overlaps the input");
-    for (std::size_t i = 0; i < count; ++i) {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
+                          sizeof(quaternion<float>) == 4 * sizeof(float),
+                      "packed matrices and quaternions");
+        if (count >= 8) done = detail::to_matrix_each_interleaved(q, output, count);
+    }
+#endif
+#endif
+    for (std::size_t i = done; i < count; ++i) {
         const quaternion<T> r = q[i];
         output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
     }

@@ -190,6 +190,62 @@ template <int C, int... L>
     return i;
 }
 
+// Output register J of 8 matrices (floats 4 J ... 4 J + 3 of each group of 4, the first group in
+// the low 128-bit lane) from their entries: float f = 4 J + p of a group is entry f % 9 of its
+// matrix f / 9, four different entries, so 3 in-lane two-source shuffles join them. The inverse of
+// matrix_entry8.
+template <int J, int... L>
+[[nodiscard]] inline float8 matrix_floats8(const float8 (&e)[9],
+                                           std::integer_sequence<int, L...>) noexcept {
+    constexpr int c0 = (4 * J) % 9, c1 = (4 * J + 1) % 9, c2 = (4 * J + 2) % 9,
+                  c3 = (4 * J + 3) % 9;
+    // Lane l = 4 h + p: group h, position p; its matrix (4 J + p) / 9 is lane 4 h + that of e[c_p].
+    const float8 first = __builtin_shufflevector(e[c0], e[c1],
+                                                 (L % 4 == 0   ? L - L % 4 + (4 * J) / 9
+                                                  : L % 4 == 1 ? 8 + L - L % 4 + (4 * J + 1) / 9
+                                                               : -1)...);
+    const float8 second = __builtin_shufflevector(e[c2], e[c3],
+                                                  (L % 4 == 2   ? L - L % 4 + (4 * J + 2) / 9
+                                                   : L % 4 == 3 ? 8 + L - L % 4 + (4 * J + 3) / 9
+                                                                : -1)...);
+    return __builtin_shufflevector(first, second, (L % 4 < 2 ? L : 8 + L)...);
+}
+
+// to_matrix_each of float quaternions [0, n - n % 8) in AVX builds, 8 a step, and how many it did:
+// the quaternions separated by an in-lane transpose (quaternions 0-3 in the low lanes, 4-7 in the
+// high ones), detail::scaled_matrix's arithmetic term for term on 8 lanes, and the 9 entries joined
+// into the two groups' 72 floats by matrix_floats8 (27 in-lane shuffles). The compiled loop stores
+// the matrices float by float: 2.35 ns a matrix at x86-64-v3 on a Zen 4, level with GLM's and
+// Eigen's loops (1.05, 0.97).
+[[nodiscard]] inline std::size_t to_matrix_each_interleaved(const quaternion<float>* q,
+                                                            rotation_matrix<float>* out,
+                                                            std::size_t n) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 8>{};
+    std::size_t i = 0;
+    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+        const float* r = &q[i].w;
+        float8 w = load_halves(r, r + 16), x = load_halves(r + 4, r + 20),
+               y = load_halves(r + 8, r + 24), z = load_halves(r + 12, r + 28);
+        transpose_in_lanes(w, x, y, z);
+        const float8 xs = x + x, ys = y + y, zs = z + z;
+        const float8 xx = x * xs, yy = y * ys, zz = z * zs;
+        const float8 xy = x * ys, xz = x * zs, yz = y * zs;
+        const float8 wx = w * xs, wy = w * ys, wz = w * zs;
+        const float8 e[9] = {1 - (yy + zz), xy - wz, xz + wy, xy + wz,      1 - (xx + zz),
+                             yz - wx,       xz - wy, yz + wx, 1 - (xx + yy)};
+        const float8 floats[9] = {
+            matrix_floats8<0>(e, lanes), matrix_floats8<1>(e, lanes), matrix_floats8<2>(e, lanes),
+            matrix_floats8<3>(e, lanes), matrix_floats8<4>(e, lanes), matrix_floats8<5>(e, lanes),
+            matrix_floats8<6>(e, lanes), matrix_floats8<7>(e, lanes), matrix_floats8<8>(e, lanes)};
+        float* o = &out[i](0, 0);
+        for (int j = 0; j < 9; ++j) {
+            store4(o + 4 * j, __builtin_ia32_vextractf128_ps256(floats[j], 0));
+            store4(o + 36 + 4 * j, __builtin_ia32_vextractf128_ps256(floats[j], 1));
+        }
+    }
+    return i;
+}
+
 // rotate_each of float elements [0, n - n % 8) in AVX builds, 8 a step, with the shuffles spelled
 // out as in interleaved_points_avx.hpp (whose helpers it uses), and returns how many it did. Each
 // 128-bit lane holds 4 whole elements (elements 0-3 in the low lanes, 4-7 in the high ones), so
