@@ -233,7 +233,7 @@ void transform_batch(benchmark::State& state, long long count) {
     // page faults would otherwise be timed (the 4M-point runs take only a few iterations).
     std::copy(in.begin(), in.end(), out.begin());
     for (auto _ : state) {
-        Lib::transform_batch(r, in.data(), out.data(), n);
+        Lib::transform_batch(fresh(r), in.data(), out.data(), n);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -253,7 +253,7 @@ void transform_batch_soa(benchmark::State& state, long long count) {
         x[i] = T(v.x), y[i] = T(v.y), z[i] = T(v.z);
     }
     for (auto _ : state) {
-        quat::transform(dq, quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
+        quat::transform(fresh(dq), quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
                         quat::soa_points<T>{ox.data(), oy.data(), oz.data(), n});
         benchmark::DoNotOptimize(ox.data());
         benchmark::ClobberMemory();

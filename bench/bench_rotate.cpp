@@ -54,7 +54,7 @@ void rotate_batch(benchmark::State& state, long long count) {
     // page faults would otherwise be timed (the 4M-point runs take only a few iterations).
     std::copy(in.begin(), in.end(), out.begin());
     for (auto _ : state) {
-        Lib::rotate_batch(r, in.data(), out.data(), n);
+        Lib::rotate_batch(fresh(r), in.data(), out.data(), n);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -74,7 +74,7 @@ void rotate_batch_soa(benchmark::State& state, long long count) {
         x[i] = T(v.x), y[i] = T(v.y), z[i] = T(v.z);
     }
     for (auto _ : state) {
-        quat::rotate(q, quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
+        quat::rotate(fresh(q), quat::soa_points<const T>{x.data(), y.data(), z.data(), n},
                      quat::soa_points<T>{ox.data(), oy.data(), oz.data(), n});
         benchmark::DoNotOptimize(ox.data());
         benchmark::ClobberMemory();
