@@ -5593,14 +5593,16 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
             m12 = m(1, 2), m20 = m(2, 0), m21 = m(2, 1), m22 = m(2, 2);
     const T tx = t.x, ty = t.y, tz = t.z;
     // Point i is read before it is written and no iteration touches another's point, so the
-    // in-place call is safe with vectorization; tell the compiler, saving its overlap check.
+    // in-place call is safe with vectorization; tell the compiler, saving its overlap check. The
+    // index counts the rest from 0: from done, g++ 12 warned of an overflowing iteration when n
+    // is the constant 1024 (-Waggressive-loop-optimizations, x86-64-v3).
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)
 #pragma GCC ivdep
 #endif
-    for (std::size_t i = done; i < n; ++i) {
-        const T x = input[i].x, y = input[i].y, z = input[i].z;
+    for (std::size_t i = 0, rest = n - done; i < rest; ++i) {
+        const T x = input[done + i].x, y = input[done + i].y, z = input[done + i].z;
         T ox = m00 * x + m01 * y + m02 * z, oy = m10 * x + m11 * y + m12 * z,
           oz = m20 * x + m21 * y + m22 * z;
         if constexpr (Translate) {
@@ -5608,7 +5610,7 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
             oy += ty;
             oz += tz;
         }
-        output[i] = vec3<T>{ox, oy, oz};
+        output[done + i] = vec3<T>{ox, oy, oz};
     }
 }
 
