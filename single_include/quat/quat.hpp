@@ -3745,6 +3745,20 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
     std::memcpy(&v, p, sizeof v);
     return v;
 }
+// 8 quaternions (32 floats) as w, x, y and z of 8 lanes each, in whatever lane order (the store
+// restores it), and back.
+[[nodiscard]] inline quaternion<float8> load_quaternions8(const float* q) noexcept {
+    quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    return r;
+}
+inline void store_quaternions8(float* out, quaternion<float8> r) noexcept {
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    std::memcpy(out, &r.w, sizeof r.w);
+    std::memcpy(out + 8, &r.x, sizeof r.x);
+    std::memcpy(out + 16, &r.y, sizeof r.y);
+    std::memcpy(out + 24, &r.z, sizeof r.z);
+}
 
 // compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
 // itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
@@ -3754,20 +3768,10 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
 // Output may be a or b: each group is read whole before it is written.
 [[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
                                                           float* out, std::size_t n) noexcept {
-    auto load = [](const float* q) noexcept {
-        quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
-        transpose_in_lanes(r.w, r.x, r.y, r.z);
-        return r;
-    };
     std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        quaternion<float8> r = load(a + 4 * i) * load(b + 4 * i);
-        transpose_in_lanes(r.w, r.x, r.y, r.z);
-        std::memcpy(out + 4 * i, &r.w, sizeof r.w);
-        std::memcpy(out + 4 * i + 8, &r.x, sizeof r.x);
-        std::memcpy(out + 4 * i + 16, &r.y, sizeof r.y);
-        std::memcpy(out + 4 * i + 24, &r.z, sizeof r.z);
-    }
+    for (; i + 8 <= n; i += 8)
+        store_quaternions8(out + 4 * i,
+                           load_quaternions8(a + 4 * i) * load_quaternions8(b + 4 * i));
     return i;
 }
 
@@ -4152,6 +4156,89 @@ template <int R>
 }
 #endif
 #endif
+
+// The leading elements that the kernels above do where the build has them (AVX, g++ 12 or clang;
+// 16 a step with AVX-512, then 8), and how many: 0 elsewhere and for other scalars. The callers'
+// plain loops do the rest. The kernels read quaternions, points and matrices as packed floats.
+static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
+                  sizeof(vec3<float>) == 3 * sizeof(float) &&
+                  sizeof(rotation_matrix<float>) == 9 * sizeof(float),
+              "packed quaternions, points and matrices");
+
+template <class T>
+[[nodiscard]] inline std::size_t compose_each_kernels([[maybe_unused]] const quaternion<T>* a,
+                                                      [[maybe_unused]] const quaternion<T>* b,
+                                                      [[maybe_unused]] quaternion<T>* output,
+                                                      [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16) done = compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, n);
+#endif
+        if (n - done >= 8)
+            done += compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w, n - done);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t rotate_each_kernels(
+    [[maybe_unused]] const quaternion<T>* rotations, [[maybe_unused]] const vec3<T>* points,
+    [[maybe_unused]] vec3<T>* output, [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16)
+            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, n);
+#endif
+        if (n - done >= 8)
+            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
+                                            n - done);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t to_matrix_each_kernels([[maybe_unused]] const quaternion<T>* q,
+                                                        [[maybe_unused]] rotation_matrix<T>* output,
+                                                        [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+        if (n >= 8) done = to_matrix_each_interleaved(q, output, n);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t to_quaternion_each_kernels(
+    [[maybe_unused]] const rotation_matrix<T>* m, [[maybe_unused]] quaternion<T>* output,
+    [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16) done = to_quaternion_each_interleaved_16(m, output, n);
+#endif
+        if (n - done >= 8)
+            done += to_quaternion_each_interleaved(m + done, output + done, n - done);
+    }
+#endif
+#endif
+    return done;
+}
 
 }  // namespace detail
 }  // inline namespace isa_...
@@ -4599,23 +4686,7 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
     // elements they measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against
     // 13.8-14.5 ms; GLM's loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
 #if defined(__AVX__)
-    std::size_t done = 0;
-#if defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
-                          sizeof(vec3<float>) == 3 * sizeof(float),
-                      "packed quaternions and points");
-#if defined(__AVX512F__)
-        if (count >= 16)
-            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, count);
-#endif
-        if (count - done >= 8)
-            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
-                                            count - done);
-    }
-#endif
-#endif
+    const std::size_t done = rotate_each_kernels(rotations, points, output, count);
     rotate_each_loop(rotations + done, points + done, output + done, count - done);
 #else
     rotate_each_blocks(rotations, points, output, count);
@@ -4686,21 +4757,7 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
                     detail::same_or_disjoint(b, count * sizeof(quaternion<T>), output,
                                              count * sizeof(quaternion<T>)),
                 "quat::compose_each: output partially overlaps an input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(quaternion<float>) == 4 * sizeof(float), "packed quaternions");
-#if defined(__AVX512F__)
-        if (count >= 16)
-            done = detail::compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, count);
-#endif
-        if (count - done >= 8)
-            done += detail::compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w,
-                                                     count - done);
-    }
-#endif
-#endif
+    const std::size_t done = detail::compose_each_kernels(a, b, output, count);
     detail::compose_each_loop(a, b, output, count, done);
 }
 
@@ -4725,17 +4782,7 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
     QUAT_ASSERT(detail::disjoint(q, count * sizeof(quaternion<T>), output,
                                  count * sizeof(rotation_matrix<T>)),
                 "quat::to_matrix_each: output overlaps the input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
-                          sizeof(quaternion<float>) == 4 * sizeof(float),
-                      "packed matrices and quaternions");
-        if (count >= 8) done = detail::to_matrix_each_interleaved(q, output, count);
-    }
-#endif
-#endif
+    const std::size_t done = detail::to_matrix_each_kernels(q, output, count);
     for (std::size_t i = done; i < count; ++i) {
         const quaternion<T> r = q[i];
         output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
@@ -4760,21 +4807,7 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
     QUAT_ASSERT(detail::disjoint(m, count * sizeof(rotation_matrix<T>), output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
-                          sizeof(quaternion<float>) == 4 * sizeof(float),
-                      "packed matrices and quaternions");
-#if defined(__AVX512F__)
-        if (count >= 16) done = detail::to_quaternion_each_interleaved_16(m, output, count);
-#endif
-        if (count - done >= 8)
-            done += detail::to_quaternion_each_interleaved(m + done, output + done, count - done);
-    }
-#endif
-#endif
+    const std::size_t done = detail::to_quaternion_each_kernels(m, output, count);
     for (std::size_t i = done; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 

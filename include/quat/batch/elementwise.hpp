@@ -208,23 +208,7 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
     // elements they measured the same as plain stores in AVX-512 builds (13.9-14.1 ms against
     // 13.8-14.5 ms; GLM's loop 13.3-13.7, memcpy of the same bytes 11.7-12.9) and slower with AVX2.
 #if defined(__AVX__)
-    std::size_t done = 0;
-#if defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
-                          sizeof(vec3<float>) == 3 * sizeof(float),
-                      "packed quaternions and points");
-#if defined(__AVX512F__)
-        if (count >= 16)
-            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, count);
-#endif
-        if (count - done >= 8)
-            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
-                                            count - done);
-    }
-#endif
-#endif
+    const std::size_t done = rotate_each_kernels(rotations, points, output, count);
     rotate_each_loop(rotations + done, points + done, output + done, count - done);
 #else
     rotate_each_blocks(rotations, points, output, count);
@@ -295,21 +279,7 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
                     detail::same_or_disjoint(b, count * sizeof(quaternion<T>), output,
                                              count * sizeof(quaternion<T>)),
                 "quat::compose_each: output partially overlaps an input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(quaternion<float>) == 4 * sizeof(float), "packed quaternions");
-#if defined(__AVX512F__)
-        if (count >= 16)
-            done = detail::compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, count);
-#endif
-        if (count - done >= 8)
-            done += detail::compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w,
-                                                     count - done);
-    }
-#endif
-#endif
+    const std::size_t done = detail::compose_each_kernels(a, b, output, count);
     detail::compose_each_loop(a, b, output, count, done);
 }
 
@@ -334,17 +304,7 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
     QUAT_ASSERT(detail::disjoint(q, count * sizeof(quaternion<T>), output,
                                  count * sizeof(rotation_matrix<T>)),
                 "quat::to_matrix_each: output overlaps the input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
-                          sizeof(quaternion<float>) == 4 * sizeof(float),
-                      "packed matrices and quaternions");
-        if (count >= 8) done = detail::to_matrix_each_interleaved(q, output, count);
-    }
-#endif
-#endif
+    const std::size_t done = detail::to_matrix_each_kernels(q, output, count);
     for (std::size_t i = done; i < count; ++i) {
         const quaternion<T> r = q[i];
         output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
@@ -369,21 +329,7 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
     QUAT_ASSERT(detail::disjoint(m, count * sizeof(rotation_matrix<T>), output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
-    std::size_t done = 0;
-#if defined(__AVX__) && defined(__has_builtin)
-#if __has_builtin(__builtin_shufflevector)
-    if constexpr (std::is_same_v<T, float>) {
-        static_assert(sizeof(rotation_matrix<float>) == 9 * sizeof(float) &&
-                          sizeof(quaternion<float>) == 4 * sizeof(float),
-                      "packed matrices and quaternions");
-#if defined(__AVX512F__)
-        if (count >= 16) done = detail::to_quaternion_each_interleaved_16(m, output, count);
-#endif
-        if (count - done >= 8)
-            done += detail::to_quaternion_each_interleaved(m + done, output + done, count - done);
-    }
-#endif
-#endif
+    const std::size_t done = detail::to_quaternion_each_kernels(m, output, count);
     for (std::size_t i = done; i < count; ++i) output[i] = to_quaternion(m[i]);
 }
 

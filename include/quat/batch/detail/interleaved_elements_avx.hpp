@@ -44,6 +44,20 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
     std::memcpy(&v, p, sizeof v);
     return v;
 }
+// 8 quaternions (32 floats) as w, x, y and z of 8 lanes each, in whatever lane order (the store
+// restores it), and back.
+[[nodiscard]] inline quaternion<float8> load_quaternions8(const float* q) noexcept {
+    quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    return r;
+}
+inline void store_quaternions8(float* out, quaternion<float8> r) noexcept {
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    std::memcpy(out, &r.w, sizeof r.w);
+    std::memcpy(out + 8, &r.x, sizeof r.x);
+    std::memcpy(out + 16, &r.y, sizeof r.y);
+    std::memcpy(out + 24, &r.z, sizeof r.z);
+}
 
 // compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
 // itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
@@ -53,20 +67,10 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
 // Output may be a or b: each group is read whole before it is written.
 [[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
                                                           float* out, std::size_t n) noexcept {
-    auto load = [](const float* q) noexcept {
-        quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
-        transpose_in_lanes(r.w, r.x, r.y, r.z);
-        return r;
-    };
     std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        quaternion<float8> r = load(a + 4 * i) * load(b + 4 * i);
-        transpose_in_lanes(r.w, r.x, r.y, r.z);
-        std::memcpy(out + 4 * i, &r.w, sizeof r.w);
-        std::memcpy(out + 4 * i + 8, &r.x, sizeof r.x);
-        std::memcpy(out + 4 * i + 16, &r.y, sizeof r.y);
-        std::memcpy(out + 4 * i + 24, &r.z, sizeof r.z);
-    }
+    for (; i + 8 <= n; i += 8)
+        store_quaternions8(out + 4 * i,
+                           load_quaternions8(a + 4 * i) * load_quaternions8(b + 4 * i));
     return i;
 }
 
@@ -451,6 +455,89 @@ template <int R>
 }
 #endif
 #endif
+
+// The leading elements that the kernels above do where the build has them (AVX, g++ 12 or clang;
+// 16 a step with AVX-512, then 8), and how many: 0 elsewhere and for other scalars. The callers'
+// plain loops do the rest. The kernels read quaternions, points and matrices as packed floats.
+static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
+                  sizeof(vec3<float>) == 3 * sizeof(float) &&
+                  sizeof(rotation_matrix<float>) == 9 * sizeof(float),
+              "packed quaternions, points and matrices");
+
+template <class T>
+[[nodiscard]] inline std::size_t compose_each_kernels([[maybe_unused]] const quaternion<T>* a,
+                                                      [[maybe_unused]] const quaternion<T>* b,
+                                                      [[maybe_unused]] quaternion<T>* output,
+                                                      [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16) done = compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, n);
+#endif
+        if (n - done >= 8)
+            done += compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w, n - done);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t rotate_each_kernels(
+    [[maybe_unused]] const quaternion<T>* rotations, [[maybe_unused]] const vec3<T>* points,
+    [[maybe_unused]] vec3<T>* output, [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16)
+            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, n);
+#endif
+        if (n - done >= 8)
+            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
+                                            n - done);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t to_matrix_each_kernels([[maybe_unused]] const quaternion<T>* q,
+                                                        [[maybe_unused]] rotation_matrix<T>* output,
+                                                        [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+        if (n >= 8) done = to_matrix_each_interleaved(q, output, n);
+    }
+#endif
+#endif
+    return done;
+}
+
+template <class T>
+[[nodiscard]] inline std::size_t to_quaternion_each_kernels(
+    [[maybe_unused]] const rotation_matrix<T>* m, [[maybe_unused]] quaternion<T>* output,
+    [[maybe_unused]] std::size_t n) noexcept {
+    std::size_t done = 0;
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float>) {
+#if defined(__AVX512F__)
+        if (n >= 16) done = to_quaternion_each_interleaved_16(m, output, n);
+#endif
+        if (n - done >= 8)
+            done += to_quaternion_each_interleaved(m + done, output + done, n - done);
+    }
+#endif
+#endif
+    return done;
+}
 
 }  // namespace detail
 }  // inline namespace isa_...
