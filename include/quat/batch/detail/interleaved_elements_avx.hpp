@@ -38,25 +38,51 @@ inline void transpose_in_lanes(float8& a, float8& b, float8& c, float8& d) noexc
     c = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
     d = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
 }
+#if defined(__AVX512F__)
+// The same on four 128-bit lanes.
+inline void transpose_in_lanes(float16& a, float16& b, float16& c, float16& d) noexcept {
+    const float16 t0 =
+        __builtin_shufflevector(a, b, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
+    const float16 t1 =
+        __builtin_shufflevector(a, b, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
+    const float16 t2 =
+        __builtin_shufflevector(c, d, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
+    const float16 t3 =
+        __builtin_shufflevector(c, d, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
+    b = __builtin_shufflevector(t0, t2, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
+    c = __builtin_shufflevector(t1, t3, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
+}
+#endif
 
 [[nodiscard]] inline float8 load8(const float* p) noexcept {
     float8 v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-// 8 quaternions (32 floats) as w, x, y and z of 8 lanes each, in whatever lane order (the store
-// restores it), and back.
-[[nodiscard]] inline quaternion<float8> load_quaternions8(const float* q) noexcept {
-    quaternion<float8> r{load8(q), load8(q + 8), load8(q + 16), load8(q + 24)};
+// As many quaternions as V has lanes (8 or 16), as w, x, y and z of V each, element
+// each_element(l) in lane l (16 lanes; with 8, whatever order), and back: a quaternion is one
+// 128-bit lane, so this is a 4x4 transpose in each.
+template <class V>
+[[nodiscard]] inline quaternion<V> load_quaternions(const float* q) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
+    quaternion<V> r;
+    std::memcpy(&r.w, q, sizeof r.w);
+    std::memcpy(&r.x, q + lanes, sizeof r.x);
+    std::memcpy(&r.y, q + 2 * lanes, sizeof r.y);
+    std::memcpy(&r.z, q + 3 * lanes, sizeof r.z);
     transpose_in_lanes(r.w, r.x, r.y, r.z);
     return r;
 }
-inline void store_quaternions8(float* out, quaternion<float8> r) noexcept {
+template <class V>
+inline void store_quaternions(float* out, quaternion<V> r) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
     transpose_in_lanes(r.w, r.x, r.y, r.z);
     std::memcpy(out, &r.w, sizeof r.w);
-    std::memcpy(out + 8, &r.x, sizeof r.x);
-    std::memcpy(out + 16, &r.y, sizeof r.y);
-    std::memcpy(out + 24, &r.z, sizeof r.z);
+    std::memcpy(out + lanes, &r.x, sizeof r.x);
+    std::memcpy(out + 2 * lanes, &r.y, sizeof r.y);
+    std::memcpy(out + 3 * lanes, &r.z, sizeof r.z);
 }
 
 // compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
@@ -69,8 +95,8 @@ inline void store_quaternions8(float* out, quaternion<float8> r) noexcept {
                                                           float* out, std::size_t n) noexcept {
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8)
-        store_quaternions8(out + 4 * i,
-                           load_quaternions8(a + 4 * i) * load_quaternions8(b + 4 * i));
+        store_quaternions(
+            out + 4 * i, load_quaternions<float8>(a + 4 * i) * load_quaternions<float8>(b + 4 * i));
     return i;
 }
 
@@ -339,37 +365,6 @@ template <int R, int... L>
                                    ((16 * R + L) % 3 == 2 ? 16 + result_lane(16 * R + L) : L)...);
 }
 
-// Rows a, b, c, d of the 4x4 matrix in each 128-bit lane, transposed in place: 8 in-lane unpacks.
-// Its own inverse.
-inline void transpose_in_lanes(float16& a, float16& b, float16& c, float16& d) noexcept {
-    const float16 t0 =
-        __builtin_shufflevector(a, b, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
-    const float16 t1 =
-        __builtin_shufflevector(a, b, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
-    const float16 t2 =
-        __builtin_shufflevector(c, d, 0, 16, 1, 17, 4, 20, 5, 21, 8, 24, 9, 25, 12, 28, 13, 29);
-    const float16 t3 =
-        __builtin_shufflevector(c, d, 2, 18, 3, 19, 6, 22, 7, 23, 10, 26, 11, 27, 14, 30, 15, 31);
-    a = __builtin_shufflevector(t0, t2, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
-    b = __builtin_shufflevector(t0, t2, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
-    c = __builtin_shufflevector(t1, t3, 0, 1, 16, 17, 4, 5, 20, 21, 8, 9, 24, 25, 12, 13, 28, 29);
-    d = __builtin_shufflevector(t1, t3, 2, 3, 18, 19, 6, 7, 22, 23, 10, 11, 26, 27, 14, 15, 30, 31);
-}
-// 16 quaternions (64 floats) as w, x, y and z of 16 lanes each, element each_element(l) in lane l,
-// and back: a quaternion is one 128-bit lane, so this is a 4x4 transpose in each.
-[[nodiscard]] inline quaternion<float16> load_quaternions16(const float* q) noexcept {
-    quaternion<float16> r{load16(q), load16(q + 16), load16(q + 32), load16(q + 48)};
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    return r;
-}
-inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    std::memcpy(out, &r.w, sizeof r.w);
-    std::memcpy(out + 16, &r.x, sizeof r.x);
-    std::memcpy(out + 32, &r.y, sizeof r.y);
-    std::memcpy(out + 48, &r.z, sizeof r.z);
-}
-
 // compose_each of float elements [0, n - n % 16) in AVX-512 builds, and how many it did: operator*
 // itself on 16 lanes, between two transposes in and one out (24 in-lane unpacks and 16 multiplies
 // per 16 products, where g++ 12 compiles the plain loop with lane-crossing permutes). Output may be
@@ -378,8 +373,8 @@ inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
                                                              float* out, std::size_t n) noexcept {
     std::size_t i = 0;
     for (; i + 16 <= n; i += 16)
-        store_quaternions16(out + 4 * i,
-                            load_quaternions16(a + 4 * i) * load_quaternions16(b + 4 * i));
+        store_quaternions(out + 4 * i, load_quaternions<float16>(a + 4 * i) *
+                                           load_quaternions<float16>(b + 4 * i));
     return i;
 }
 
@@ -388,7 +383,7 @@ inline void store_quaternions16(float* out, quaternion<float16> r) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
     std::size_t i = 0;
     for (; i + 16 <= n; i += 16) {
-        const quaternion<float16> r = load_quaternions16(q + 4 * i);
+        const quaternion<float16> r = load_quaternions<float16>(q + 4 * i);
         const float16 w = r.w, x = r.x, y = r.y, z = r.z;
         const float* s = p + 3 * i;
         const float16 a = load16(s), b = load16(s + 16), c = load16(s + 32);
@@ -421,7 +416,7 @@ template <int R>
 // than the conversion: over 1024 random rotations it took 3.0 or 5.0 ns a matrix (Zen 5) with what
 // the predictor had learnt, as GLM's quat_cast does; this kernel takes neither branch. The 9
 // entries of 16 matrices (9 registers) are separated in two rounds of every_third (rows of 3, then
-// every third row): 36 permutes; the quaternions leave through store_quaternions16. A group with a
+// every third row): 36 permutes; the quaternions leave through store_quaternions. A group with a
 // squared norm outside the normal range (not a rotation: zero, NaN, huge) is converted by
 // to_quaternion itself, element by element, so results equal the scalar ones whatever the input.
 [[nodiscard]] inline std::size_t to_quaternion_each_interleaved_16(const rotation_matrix<float>* m,
@@ -449,7 +444,7 @@ template <int R>
             for (std::size_t j = i; j < i + 16; ++j) out[j] = to_quaternion(m[j]);
             continue;
         }
-        store_quaternions16(&out[i].w, q);
+        store_quaternions(&out[i].w, q);
     }
     return i;
 }
