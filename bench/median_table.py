@@ -8,7 +8,7 @@ With --levels, a comment line per column names its CPU (quat_bench's context, fr
 compiler, flags and the commit measured (git describe when quat_bench was built): a column whose
 commit is not the current code's is to be measured again or removed.
 Cells are ns per item (point, product, call or value) from items_per_second, as `--table` prints
-them, the median over every repetition in every file (`--table` writes 5 repetitions per run);
+them, the median over every repetition in every file (`--table` writes 7 repetitions per run);
 "copy floor" rows are the fastest of the copies' medians (memcpy, plain loop, streaming copy);
 ratio = other / quat (> 1: quat faster). With --levels, one column per build (instruction-set
 level), each cell "quat ns (GLM / quat, Eigen / quat)". Python 3 standard library only.

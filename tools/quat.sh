@@ -2,7 +2,7 @@
 # The README's two commands.
 #   bash tools/quat.sh bench   build quat_bench for this machine (preset release-native, -march=native)
 #                              and print the benchmark comparison table, naming the instruction set:
-#                              each cell the median of 5 repetitions run in random interleaved order,
+#                              each cell the median of 7 repetitions run in random interleaved order,
 #                              with their spread, so one disturbed run on a shared machine cannot
 #                              flip a verdict (quat_bench --table's defaults; a few minutes); last,
 #                              the README's headline rows measured here beside the README's own
