@@ -3892,9 +3892,7 @@ template <int C, int... L>
                                                                 std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
-    // Bounded by `whole` rather than i + 8 <= n: with that, g++ 12 warned
-    // (-Waggressive-loop-optimizations) on the caller's scalar tail for a constant count of 1024.
-    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+    for (; i + 8 <= n; i += 8) {
         const float* s = &m[i](0, 0);
         float8 r[9];
         for (int j = 0; j < 9; ++j) r[j] = load_halves(s + 4 * j, s + 36 + 4 * j);
@@ -3953,7 +3951,7 @@ template <int J, int... L>
                                                             std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
-    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+    for (; i + 8 <= n; i += 8) {
         const float* r = &q[i].w;
         float8 w = load_halves(r, r + 16), x = load_halves(r + 4, r + 20),
                y = load_halves(r + 8, r + 24), z = load_halves(r + 12, r + 28);
@@ -4125,7 +4123,7 @@ template <int R>
                                                                    std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
     std::size_t i = 0;
-    for (const std::size_t whole = n - n % 16; i < whole; i += 16) {
+    for (; i + 16 <= n; i += 16) {
         const float* s = &m[i](0, 0);
         // Column c of rows 16 g ... 16 g + 15 (row 3 e + r is row r of matrix e).
         float16 column[3][3];
@@ -4778,9 +4776,10 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
                                  count * sizeof(rotation_matrix<T>)),
                 "quat::to_matrix_each: output overlaps the input");
     const std::size_t done = detail::to_matrix_each_kernels(q, output, count);
-    for (std::size_t i = done; i < count; ++i) {
-        const quaternion<T> r = q[i];
-        output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
+    // The rest counted from 0, as detail::transform_block's tail, for the same g++ warning.
+    for (std::size_t i = 0, rest = count - done; i < rest; ++i) {
+        const quaternion<T> r = q[done + i];
+        output[done + i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
     }
 }
 
@@ -4803,7 +4802,8 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
     const std::size_t done = detail::to_quaternion_each_kernels(m, output, count);
-    for (std::size_t i = done; i < count; ++i) output[i] = to_quaternion(m[i]);
+    for (std::size_t i = 0, rest = count - done; i < rest; ++i)
+        output[done + i] = to_quaternion(m[done + i]);
 }
 
 /// Container form of to_quaternion_each. Precondition: size(output) >= size(m) (QUAT_ASSERT);

@@ -305,9 +305,10 @@ void to_matrix_each(const quaternion<T>* q, rotation_matrix<T>* output,
                                  count * sizeof(rotation_matrix<T>)),
                 "quat::to_matrix_each: output overlaps the input");
     const std::size_t done = detail::to_matrix_each_kernels(q, output, count);
-    for (std::size_t i = done; i < count; ++i) {
-        const quaternion<T> r = q[i];
-        output[i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
+    // The rest counted from 0, as detail::transform_block's tail, for the same g++ warning.
+    for (std::size_t i = 0, rest = count - done; i < rest; ++i) {
+        const quaternion<T> r = q[done + i];
+        output[done + i] = detail::scaled_matrix(r, r.x + r.x, r.y + r.y, r.z + r.z);
     }
 }
 
@@ -330,7 +331,8 @@ void to_quaternion_each(const rotation_matrix<T>* m, quaternion<T>* output,
                                  count * sizeof(quaternion<T>)),
                 "quat::to_quaternion_each: output overlaps the input");
     const std::size_t done = detail::to_quaternion_each_kernels(m, output, count);
-    for (std::size_t i = done; i < count; ++i) output[i] = to_quaternion(m[i]);
+    for (std::size_t i = 0, rest = count - done; i < rest; ++i)
+        output[done + i] = to_quaternion(m[done + i]);
 }
 
 /// Container form of to_quaternion_each. Precondition: size(output) >= size(m) (QUAT_ASSERT);

@@ -191,9 +191,7 @@ template <int C, int... L>
                                                                 std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
-    // Bounded by `whole` rather than i + 8 <= n: with that, g++ 12 warned
-    // (-Waggressive-loop-optimizations) on the caller's scalar tail for a constant count of 1024.
-    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+    for (; i + 8 <= n; i += 8) {
         const float* s = &m[i](0, 0);
         float8 r[9];
         for (int j = 0; j < 9; ++j) r[j] = load_halves(s + 4 * j, s + 36 + 4 * j);
@@ -252,7 +250,7 @@ template <int J, int... L>
                                                             std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 8>{};
     std::size_t i = 0;
-    for (const std::size_t whole = n - n % 8; i < whole; i += 8) {
+    for (; i + 8 <= n; i += 8) {
         const float* r = &q[i].w;
         float8 w = load_halves(r, r + 16), x = load_halves(r + 4, r + 20),
                y = load_halves(r + 8, r + 24), z = load_halves(r + 12, r + 28);
@@ -424,7 +422,7 @@ template <int R>
                                                                    std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
     std::size_t i = 0;
-    for (const std::size_t whole = n - n % 16; i < whole; i += 16) {
+    for (; i + 16 <= n; i += 16) {
         const float* s = &m[i](0, 0);
         // Column c of rows 16 g ... 16 g + 15 (row 3 e + r is row r of matrix e).
         float16 column[3][3];
