@@ -75,7 +75,8 @@ struct lib_quat {
     static quaternion make_quaternion(const quat::quatd& q) {
         return {T(q.w), T(q.x), T(q.y), T(q.z)};
     }
-    static matrix make_matrix(const quat::quatd& q) { return quat::to_matrix(make_quaternion(q)); }
+    static matrix make_matrix(const quat::quatd& q) { return to_matrix(make_quaternion(q)); }
+    static matrix to_matrix(const quaternion& q) { return quat::to_matrix(q); }
     static vector make_vector(const quat::vec3<double>& v) { return {T(v.x), T(v.y), T(v.z)}; }
     static vector rotate(const quaternion& q, const vector& v) { return quat::rotate(q, v); }
     static vector rotate(const matrix& m, const vector& v) { return quat::rotate(m, v); }
@@ -108,7 +109,8 @@ struct lib_glm {
     static quaternion make_quaternion(const quat::quatd& q) {
         return quaternion(T(q.w), T(q.x), T(q.y), T(q.z));
     }
-    static matrix make_matrix(const quat::quatd& q) { return glm::mat3_cast(make_quaternion(q)); }
+    static matrix make_matrix(const quat::quatd& q) { return to_matrix(make_quaternion(q)); }
+    static matrix to_matrix(const quaternion& q) { return glm::mat3_cast(q); }
     static vector make_vector(const quat::vec3<double>& v) {
         return vector(T(v.x), T(v.y), T(v.z));
     }
@@ -145,9 +147,8 @@ struct lib_eigen {
     static quaternion make_quaternion(const quat::quatd& q) {
         return quaternion(T(q.w), T(q.x), T(q.y), T(q.z));
     }
-    static matrix make_matrix(const quat::quatd& q) {
-        return make_quaternion(q).toRotationMatrix();
-    }
+    static matrix make_matrix(const quat::quatd& q) { return to_matrix(make_quaternion(q)); }
+    static matrix to_matrix(const quaternion& q) { return q.toRotationMatrix(); }
     static vector make_vector(const quat::vec3<double>& v) {
         return vector(T(v.x), T(v.y), T(v.z));
     }

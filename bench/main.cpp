@@ -235,6 +235,19 @@ void print_targets(const std::vector<measurement>& all) {
                        ratio(peer, ours), 1.0, true);
         }
     }
+    // The same job for every library: rotating by a quaternion (the peers' quaternion loops, or
+    // their matrix formed once and their matrix loop), and by a ready matrix.
+    for (const char* n : {"64", "1024"}) {
+        const std::string size = n;
+        target("rotate_batch " + size + " quaternion: peers from a quaternion / quat",
+               ratio(best_peer(all, "rotate_batch", {"quaternion", "quaternion_via_matrix"}, size),
+                     find(all, "rotate_batch/quat/quaternion/float/" + size)),
+               1.0, true);
+        target("rotate_batch " + size + " matrix: best(glm, eigen) / quat",
+               ratio(best_peer(all, "rotate_batch", {"matrix"}, size),
+                     find(all, "rotate_batch/quat/matrix/float/" + size)),
+               1.0, true);
+    }
     // Per-element batches: the array-of-structs form at its shuffle bound (about 1.6x by the uop
     // count in docs/performance.md), the struct-of-arrays form, which needs no shuffles, twice the
     // peers' array-of-structs loops.

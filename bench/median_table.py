@@ -34,8 +34,12 @@ ROWS = [
      "transform_pairs/{lib}/matrix/float/1024"),
     ("rotate_batch, quaternion, n = 64", "rotate_batch/{lib}/quaternion/float/64"),
     ("rotate_batch, matrix, n = 64", "rotate_batch/{lib}/matrix/float/64"),
+    ("rotate_batch, quaternion via its matrix (GLM: mat3_cast, Eigen: toRotationMatrix, then the "
+     "matrix loop), n = 64", "rotate_batch/{lib}/quaternion_via_matrix/float/64"),
     ("rotate_batch, quaternion, n = 1024", "rotate_batch/{lib}/quaternion/float/1024"),
     ("rotate_batch, matrix, n = 1024", "rotate_batch/{lib}/matrix/float/1024"),
+    ("rotate_batch, quaternion via its matrix, n = 1024",
+     "rotate_batch/{lib}/quaternion_via_matrix/float/1024"),
     ("rotate_batch, quaternion, struct of arrays, n = 1024",
      "rotate_batch/{lib}/quaternion_soa/float/1024"),
     ("rotate_batch, quaternion, n = 4194304", "rotate_batch/{lib}/quaternion/float/4194304"),
