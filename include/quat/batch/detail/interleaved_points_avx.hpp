@@ -272,6 +272,18 @@ template <bool Translate>
 #endif  // __has_builtin(__builtin_shufflevector)
 #endif  // __AVX__ && __has_builtin
 
+// Whether the kernels above are in this build, and so can stream their results straight from
+// their registers (transform_interleaved_floats with Stream).
+#if defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+inline constexpr bool has_streaming_kernel = true;
+#else
+inline constexpr bool has_streaming_kernel = false;
+#endif
+#else
+inline constexpr bool has_streaming_kernel = false;
+#endif
+
 // Rotates (and translates when Translate) the leading points of `in` (three floats each) into
 // `out` with the kernels above where the build has them (AVX, g++ 12 or clang), and returns how
 // many it did, leaving fewer than 8 to the caller (AVX-512 builds do all of n >= 16 points out of

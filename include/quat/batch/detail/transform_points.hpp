@@ -81,10 +81,10 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
 
 // Writes the points with non-temporal stores. The first points (at most 15) are stored plainly
 // up to a 64-byte boundary of the output, so that no cache line is written partly by plain and
-// partly by non-temporal stores. AVX builds then stream straight from the shuffling kernel
-// (interleaved_points_avx.hpp); the rest (all of it in SSE builds) is computed block by block
-// into a local buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole
-// lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
+// partly by non-temporal stores. Then the AVX kernels stream straight from their registers
+// (interleaved_points_avx.hpp); the rest (the last few points, or all of them for a build without
+// the kernels, which transform_points does not stream) is computed block by block into a local
+// buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
 // a Zen 4 (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks
 // 3.5-3.8, streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
 template <bool Translate>
@@ -206,16 +206,19 @@ template <bool Translate, class T>
 void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T>* input,
                       vec3<T>* output, std::size_t count) noexcept {
     // Where input and output together exceed the last-level cache (streaming_threshold_bytes),
-    // the points go through a buffer and non-temporal stores, in every x86 build. Zen 4 with a
-    // 32 MiB L3 (g++ 12, 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms against
-    // 3.9-4.1 plain, streaming copy 3.2-3.8. With a fixed 16 MiB threshold instead: on a Xeon with
-    // a 480 MiB L3 streaming won at every level (SSE2 5.7 ms against 6.6, AVX2 4.7-4.9 against
-    // 5.2-6.0), on a Zen 5 only with AVX-512.
-    // The size is compared with the constant minimum first and the cache size read out of line
-    // (transform_large), so that a small batch's path makes no call that returns and g++ sets up
-    // no frame for it.
+    // the AVX kernels write the points with non-temporal stores. Zen 4 with a 32 MiB L3 (g++ 12,
+    // 4M points = 48 MiB each way, medians of 9): streamed 3.5-3.9 ms against 3.9-4.1 plain,
+    // streaming copy 3.2-3.8. Builds without them (SSE2 to SSE4.2) store plainly at any size: a
+    // block computed into a buffer and streamed afterwards does not overlap its arithmetic with
+    // the memory writes, and on the Zen 4 it took 4.0 ms against 3.5 plain (GLM's loop 3.4-3.6;
+    // transform 4.6 against 3.8), where a Xeon with a 480 MiB L3 had measured it 1.16x ahead of
+    // plain for earlier code (5.7 ms against 6.6); plain runs level with the peers' loops on both.
+    // A 4-point SSE kernel with the shuffles spelled out (17 shufps a group) streamed 4.1 ms and
+    // ran 0.79x the plain loop in cache. The size is compared with the constant minimum first and
+    // the cache size read out of line (transform_large), so that a small batch's path makes no
+    // call that returns and g++ sets up no frame for it.
     if constexpr (std::is_same_v<T, float>) {
-        if (has_streaming_stores && count * sizeof(vec3<float>) >= minimum_streaming_bytes) {
+        if (has_streaming_kernel && count * sizeof(vec3<float>) >= minimum_streaming_bytes) {
             transform_large<Translate>(m, t, input, output, count);
             return;
         }
