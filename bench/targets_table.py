@@ -4,16 +4,21 @@
 Usage: python3 bench/targets_table.py LEVEL=run1.txt,run2.txt,run3.txt [LEVEL=...]
   each run from: quat_bench --table [--benchmark_filter=...] > runN.txt
 One column per level: the median of the runs' ratios, the runs in parentheses, and the verdict of
-the median against the goal. A floor is the fastest copy of each run, whichever it was. A target
-a run did not measure (filtered out) is left out of that column; a target no level measured is
-left out of the table. Python 3 standard library only.
+the median against that level's goal (named in the cell where it differs from the goal column's;
+a goal set for AVX2 and AVX-512 only is marked so in a build without AVX2, not missed). A floor
+is the fastest copy of each run, whichever it was. A target a run did not measure (filtered out)
+is left out of that column; a target no level measured is left out of the table. Python 3
+standard library only.
 """
 import re
 import statistics
 import sys
 
 # "  rotate_batch 1024 quaternion: quat / floor (memcpy)   1.48  (goal <= 1.20)  MISSED"
-LINE = re.compile(r"^  (?P<name>.+?)\s+(?P<ratio>\d+\.\d+)\s+\(goal (?P<op>[<>]=) (?P<goal>\d+\.\d+)\)")
+LINE = re.compile(r"^  (?P<name>.+?)\s+(?P<ratio>\d+\.\d+)\s+\(goal (?P<op>[<>]=) (?P<goal>\d+\.\d+)\)"
+                  r"\s*(?P<verdict>.*)$")
+# The verdict a build without AVX2 prints for a goal set for AVX2 and AVX-512 only.
+WIDE_ONLY = "(AVX2/AVX-512 goal)"
 
 
 def read_targets(path):
@@ -24,7 +29,8 @@ def read_targets(path):
             if match:
                 # A run names the copy that was fastest in it: "floor (memcpy)", "floor (stream)".
                 name = re.sub(r"floor \([a-z_]+\)", "floor", match["name"])
-                targets[name] = (float(match["ratio"]), match["op"], match["goal"])
+                targets[name] = (float(match["ratio"]), match["op"], match["goal"],
+                                 match["verdict"].strip() == WIDE_ONLY)
     return targets
 
 
@@ -51,9 +57,13 @@ def main():
                 cells += ["", ""]
                 continue
             median = statistics.median(ratios)
-            met = median <= float(goal[2]) if goal[1] == "<=" else median >= float(goal[2])
+            own = next(run[name] for run in runs if name in run)  # this level's goal
+            met = median <= float(own[2]) if own[1] == "<=" else median >= float(own[2])
+            verdict = "met" if met else WIDE_ONLY if own[3] else "missed"
+            if own[1:3] != goal[1:3]:
+                verdict += f" (goal {'≤' if own[1] == '<=' else '≥'} {own[2]})"
             runs_text = ", ".join(f"{r:.2f}" for r in ratios)
-            cells += [f"{median:.2f} ({runs_text})", "met" if met else "missed"]
+            cells += [f"{median:.2f} ({runs_text})", verdict]
         symbol = "≤" if goal[1] == "<=" else "≥"
         print(f"| {name} | {symbol} {goal[2]} | " + " | ".join(cells) + " |")
 
