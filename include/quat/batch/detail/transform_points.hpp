@@ -84,9 +84,10 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const vec3<T
 // partly by non-temporal stores. Then the AVX kernels stream straight from their registers
 // (interleaved_points_avx.hpp); the rest (the last few points, or all of them for a build without
 // the kernels, which transform_points does not stream) is computed block by block into a local
-// buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole lines. The points are one float array (vec3<float> is three floats with no padding). Measured on
-// a Zen 4 (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks
-// 3.5-3.8, streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
+// buffer, which is streamed to memory: blocks of 16 points are 192 bytes, three whole lines. The
+// points are one float array (vec3<float> is three floats with no padding). Measured on a Zen 4
+// (4M points, g++ 12, medians of 11): unaligned blocks 4.3-6.3 ms, aligned blocks 3.5-3.8,
+// streamed from the kernel 3.2-3.5; a streaming copy of the same bytes 3.2-3.4.
 template <bool Translate>
 void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
                          const vec3<float>* input, vec3<float>* output,
