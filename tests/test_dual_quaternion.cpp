@@ -256,6 +256,35 @@ TEMPLATE_TEST_CASE("dq * p is transform(dq, p), bit for bit, and GLM's tdualquat
     static_assert(shift * vec3<double>{1, -2, 3} == vec3<double>{5, 3, 9});
 }
 
+TEMPLATE_TEST_CASE(
+    "transform(dq, p) is rotate(real, p) + translation_of(dq), bit for bit, and "
+    "stays finite where R p pulls a translation past max() back",
+    "[dual_quaternion][edge]", float, double) {
+    using T = TestType;
+    using limits = std::numeric_limits<T>;
+    quat::test::random_rotations random;
+    for (int i = 0; i < 2000; ++i) {
+        // A real part up to a few eps off unit, as normalize leaves it.
+        dual_quaternion<T> dq = random.rigid_motion<T>();
+        dq.real = dq.real * (T(1) + T(random.uniform<double>(-4, 4)) * limits::epsilon());
+        const vec3<T> p = random.vector<T>(3.0);
+        CHECK(
+            same_bits(quat::transform(dq, p), quat::rotate(dq.real, p) + quat::translation_of(dq)));
+    }
+    // t = 2 dual real* has x = 2^(max_exponent), one binade past max(), which translation_of
+    // clamps to max(). p = -max() brings the point back: R p + t = 2^(max_exponent) - max() is
+    // exact, and transform gives it, where rotate + translation_of would give 0.
+    const T half_t = std::ldexp(T(1), limits::max_exponent - 1);
+    const dual_quaternion<T> far{quaternion<T>::identity(), quaternion<T>{0, half_t, 0, 0}};
+    CHECK(quat::translation_of(far).x == limits::max());
+    const vec3<T> moved = quat::transform(far, vec3<T>{-limits::max(), T(1), T(-2)});
+    CHECK(moved.x == std::ldexp(T(1), limits::max_exponent - limits::digits));
+    CHECK(moved.y == T(1));
+    CHECK(moved.z == T(-2));
+    // Past max() for real: infinite, with the sign of the overflow.
+    CHECK(quat::transform(far, vec3<T>{limits::max(), 0, 0}).x == limits::infinity());
+}
+
 TEMPLATE_TEST_CASE("a pure rotation and a pure translation are the long forms with zero parts",
                    "[dual_quaternion][first-use]", float, double) {
     using T = TestType;

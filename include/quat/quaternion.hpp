@@ -264,18 +264,20 @@ template <class T>
 namespace detail {
 
 /// The matrix of q with the vector part's factor 2 already applied by the caller: entries
-/// 1 - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
-/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order. Matrix is the 3x3
+/// one - (y ys + z zs), x ys - w zs, ... where (xs, ys, zs) = s (x, y, z). s = 2 gives the rotation
+/// matrix of a unit q (to_matrix); rotate passes s = 2 / |q|^2 to first order. one = 1/2 with s
+/// halved gives that matrix halved exactly (transform of a dual quaternion). Matrix is the 3x3
 /// type to build, rotation_matrix or, for a Jacobian block (so3::adjoint), matrix3: the same
 /// entries, built in place.
 template <template <class> class Matrix = rotation_matrix, class T>
-[[nodiscard]] constexpr Matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys, T zs) noexcept {
+[[nodiscard]] constexpr Matrix<T> scaled_matrix(const quaternion<T>& q, T xs, T ys, T zs,
+                                                T one = T(1)) noexcept {
     const T xx = q.x * xs, yy = q.y * ys, zz = q.z * zs;
     const T xy = q.x * ys, xz = q.x * zs, yz = q.y * zs;
     const T wx = q.w * xs, wy = q.w * ys, wz = q.w * zs;
-    return {{{T(1) - (yy + zz), xy - wz, xz + wy},
-             {xy + wz, T(1) - (xx + zz), yz - wx},
-             {xz - wy, yz + wx, T(1) - (xx + yy)}}};
+    return {{{one - (yy + zz), xy - wz, xz + wy},
+             {xy + wz, one - (xx + zz), yz - wx},
+             {xz - wy, yz + wx, one - (xx + yy)}}};
 }
 
 /// rotate(q, v) without its debug check of |q|: for loops that check once per call, or not at all.
