@@ -1,5 +1,5 @@
 // The arithmetic of the element-wise rotation, rotate_each's, shared by its plain loops and the
-// kernels that vectorize by hand (interleaved_elements_avx.hpp), so every path rounds alike.
+// kernels that vectorize by hand (interleaved_elements.hpp), so every path rounds alike.
 #ifndef QUAT_BATCH_DETAIL_FACTORED_ROTATION_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_FACTORED_ROTATION_HPP_INCLUDED
 

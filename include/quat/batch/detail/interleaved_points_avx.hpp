@@ -25,6 +25,7 @@
 
 #include "../../rotation_matrix.hpp"
 #include "../../vec3.hpp"
+#include "sse_lanes.hpp"
 #include "streaming_store.hpp"
 
 namespace quat {
@@ -34,15 +35,7 @@ namespace detail {
 #if defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
 
-using float4 = float __attribute__((vector_size(16)));
 using float8 = float __attribute__((vector_size(32)));
-
-[[nodiscard]] inline float4 load4(const float* p) noexcept {
-    float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-inline void store4(float* p, float4 v) noexcept { std::memcpy(p, &v, sizeof v); }
 
 // 8 floats from two places: 4 at low (the low 128-bit lane) and 4 at high. The high half by the
 // vinsertf128 builtin, which takes it straight from memory (a shuffle of two loaded halves costs a
