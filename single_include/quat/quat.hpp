@@ -3207,6 +3207,7 @@ template <class T>
 #ifndef QUAT_BATCH_DETAIL_SSE_LANES_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_SSE_LANES_HPP_INCLUDED
 
+#include <cstddef>
 #include <cstring>
 
 namespace quat {
@@ -3259,6 +3260,21 @@ template <class V, class Mask>
     V r;
     std::memcpy(&r, &bits, sizeof r);
     return r;
+}
+
+// Whether every lane of a comparison's mask is set: a reduction without a branch per lane, by one
+// movmskps on 4 lanes (g++ 12 extracts and ands them one by one: 9 instructions in place of 2).
+template <class Mask>
+[[nodiscard]] inline bool all_lanes(Mask mask) noexcept {
+    if constexpr (sizeof(Mask) == sizeof(float4)) {
+        float4 bits;
+        std::memcpy(&bits, &mask, sizeof bits);
+        return __builtin_ia32_movmskps(bits) == 0xF;
+    } else {
+        int clear = 0;
+        for (std::size_t l = 0; l < sizeof(Mask) / sizeof(mask[0]); ++l) clear |= ~mask[l];
+        return clear == 0;
+    }
 }
 
 // The correctly rounded square root of each lane (sqrtps): a loop of __builtin_sqrtf stays scalar,
@@ -3850,9 +3866,7 @@ template <class V>
          select_case(cases, wz, xz, yz, 1 - m00 - m11 + m22)};
     const V squared = squared_norm(q);
     const Mask normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
-    int abnormal = 0;  // a reduction of the lanes, without a branch per lane
-    for (std::size_t l = 0; l < sizeof(V) / sizeof(float); ++l) abnormal |= ~normal[l];
-    if (abnormal != 0) return false;
+    if (!all_lanes(normal)) return false;
     const V scale = 1 / sqrt_lanes(squared);
     q = q * select_lanes(q.w < 0, -scale, scale);
     return true;

@@ -69,9 +69,7 @@ template <class V>
          select_case(cases, wz, xz, yz, 1 - m00 - m11 + m22)};
     const V squared = squared_norm(q);
     const Mask normal = (squared >= smallest_normal<float>()) & (squared <= largest<float>());
-    int abnormal = 0;  // a reduction of the lanes, without a branch per lane
-    for (std::size_t l = 0; l < sizeof(V) / sizeof(float); ++l) abnormal |= ~normal[l];
-    if (abnormal != 0) return false;
+    if (!all_lanes(normal)) return false;
     const V scale = 1 / sqrt_lanes(squared);
     q = q * select_lanes(q.w < 0, -scale, scale);
     return true;

@@ -4,6 +4,7 @@
 #ifndef QUAT_BATCH_DETAIL_SSE_LANES_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_SSE_LANES_HPP_INCLUDED
 
+#include <cstddef>
 #include <cstring>
 
 namespace quat {
@@ -33,6 +34,21 @@ template <class V, class Mask>
     V r;
     std::memcpy(&r, &bits, sizeof r);
     return r;
+}
+
+// Whether every lane of a comparison's mask is set: a reduction without a branch per lane, by one
+// movmskps on 4 lanes (g++ 12 extracts and ands them one by one: 9 instructions in place of 2).
+template <class Mask>
+[[nodiscard]] inline bool all_lanes(Mask mask) noexcept {
+    if constexpr (sizeof(Mask) == sizeof(float4)) {
+        float4 bits;
+        std::memcpy(&bits, &mask, sizeof bits);
+        return __builtin_ia32_movmskps(bits) == 0xF;
+    } else {
+        int clear = 0;
+        for (std::size_t l = 0; l < sizeof(Mask) / sizeof(mask[0]); ++l) clear |= ~mask[l];
+        return clear == 0;
+    }
 }
 
 // The correctly rounded square root of each lane (sqrtps): a loop of __builtin_sqrtf stays scalar,
