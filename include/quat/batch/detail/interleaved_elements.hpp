@@ -101,7 +101,7 @@ template <int C>
     for (; i + 4 <= n; i += 4) {
         const float* s = &m[i](0, 0);
         float4 r[9];
-        for (int j = 0; j < 9; ++j) r[j] = load4(s + 4 * j);
+        for (std::size_t j = 0; j < 9; ++j) r[j] = load4(s + 4 * j);
         const float4 entries[9] = {matrix_entry4<0>(r), matrix_entry4<1>(r), matrix_entry4<2>(r),
                                    matrix_entry4<3>(r), matrix_entry4<4>(r), matrix_entry4<5>(r),
                                    matrix_entry4<6>(r), matrix_entry4<7>(r), matrix_entry4<8>(r)};
