@@ -213,8 +213,9 @@ template <class T>
 
 /// R p + t: moves the point p by the unit dual quaternion dq, with rotate(real, p)'s accuracy for
 /// a real part a few eps off unit. Overflows only where R p + t does, even for a translation
-/// component near max(). Precondition: |real| = 1 and dot(real, dual) = 0, as normalize returns
-/// them (|real| is checked in debug builds).
+/// component near max(); a result component below 2 min() (subnormal halves) is a multiple of
+/// 2 denorm_min(). Precondition: |real| = 1 and dot(real, dual) = 0, as normalize returns them
+/// (|real| is checked in debug builds).
 template <class T>
 [[nodiscard]] constexpr vec3<T> transform(const dual_quaternion<T>& dq, const vec3<T>& p) noexcept {
     QUAT_ASSERT(detail::is_near_unit(dq.real),
