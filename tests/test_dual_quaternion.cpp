@@ -283,6 +283,15 @@ TEMPLATE_TEST_CASE(
     CHECK(moved.z == T(-2));
     // Past max() for real: infinite, with the sign of the overflow.
     CHECK(quat::transform(far, vec3<T>{limits::max(), 0, 0}).x == limits::infinity());
+    // Subnormal results: the halved sum keeps multiples of denorm_min, so the result is a multiple
+    // of 2 denorm_min, within denorm_min of the exact one.
+    const dual_quaternion<T> identity = dual_quaternion<T>::identity();
+    for (int k = 1; k < 10; ++k) {
+        const T tiny = limits::denorm_min() * T(k);
+        const T moved_x = quat::transform(identity, vec3<T>{tiny, T(0), T(0)}).x;
+        CHECK(std::fmod(moved_x, 2 * limits::denorm_min()) == 0);
+        CHECK(std::fabs(moved_x - tiny) <= limits::denorm_min());
+    }
 }
 
 TEMPLATE_TEST_CASE("a pure rotation and a pure translation are the long forms with zero parts",
