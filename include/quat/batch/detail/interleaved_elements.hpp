@@ -92,8 +92,8 @@ template <int C>
 // many it did: the AVX kernels' conversion on 4 lanes, the entries separated by matrix_entry4 (27
 // shuffles), the quaternions joined by a 4x4 transpose (8 unpacks). g++ 12 leaves to_quaternion's
 // four-way branch in the plain loop, which random rotations mispredict: at plain x86-64 on a Zen
-// 4, 5.0 ns a matrix over 1024 of them, against 3.8 for GLM's quat_cast loop and 3.6 for this
-// kernel (harness, medians of 9).
+// 4, 4.90 ns a matrix over 1024 of them, against 3.78 for this kernel and 3.74 for GLM's
+// quat_cast loop (quat_bench, medians of 3 runs); SSE2 has no blend, so each select is three.
 [[nodiscard]] inline std::size_t to_quaternion_each_interleaved_4(const rotation_matrix<float>* m,
                                                                   quaternion<float>* out,
                                                                   std::size_t n) noexcept {
