@@ -88,6 +88,19 @@ template <int C>
     return __builtin_shufflevector(first, second, 0, 2, 4, 6);
 }
 
+// Rows a, b, c, d of a 4x4 matrix, transposed in place: 8 unpacks (transpose_in_lanes below does
+// the same in each 128-bit lane of wider registers).
+inline void transpose_4x4(float4& a, float4& b, float4& c, float4& d) noexcept {
+    const float4 t0 = __builtin_shufflevector(a, b, 0, 4, 1, 5);
+    const float4 t1 = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+    const float4 t2 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+    const float4 t3 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    b = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    c = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
+
 // to_quaternion_each of float matrices [0, n - n % 4) in SSE2 builds without AVX, 4 a step, and how
 // many it did: the AVX kernels' conversion on 4 lanes, the entries separated by matrix_entry4 (27
 // shuffles), the quaternions joined by a 4x4 transpose (8 unpacks). g++ 12 leaves to_quaternion's
@@ -110,15 +123,12 @@ template <int C>
             for (std::size_t j = i; j < i + 4; ++j) out[j] = to_quaternion(m[j]);
             continue;
         }
-        const float4 wx01 = __builtin_shufflevector(q.w, q.x, 0, 4, 1, 5);
-        const float4 wx23 = __builtin_shufflevector(q.w, q.x, 2, 6, 3, 7);
-        const float4 yz01 = __builtin_shufflevector(q.y, q.z, 0, 4, 1, 5);
-        const float4 yz23 = __builtin_shufflevector(q.y, q.z, 2, 6, 3, 7);
+        transpose_4x4(q.w, q.x, q.y, q.z);  // q.w: quaternion 0, q.x: quaternion 1, ...
         float* o = &out[i].w;
-        store4(o, __builtin_shufflevector(wx01, yz01, 0, 1, 4, 5));
-        store4(o + 4, __builtin_shufflevector(wx01, yz01, 2, 3, 6, 7));
-        store4(o + 8, __builtin_shufflevector(wx23, yz23, 0, 1, 4, 5));
-        store4(o + 12, __builtin_shufflevector(wx23, yz23, 2, 3, 6, 7));
+        store4(o, q.w);
+        store4(o + 4, q.x);
+        store4(o + 8, q.y);
+        store4(o + 12, q.z);
     }
     return i;
 }
