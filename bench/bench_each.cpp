@@ -183,19 +183,25 @@ void to_quaternion_each(benchmark::State& state, long long size) {
     count(state, n, 13 * sizeof(T));
 }
 
+// The sizes the requirement names: one short batch (call overhead and the tail), one in
+// L1/L2, one far beyond L3 (memory bound).
+const std::vector<long long> each_sizes = {64, 1024, 4194304};
+
 template <class Lib>
 void register_library() {
     const char* type = type_name<typename Lib::scalar>;
-    for (const long long n : {1024LL, 4194304LL})  // in L1/L2, and far beyond L3
+    for (const long long n : each_sizes) {
         benchmark::RegisterBenchmark(name("rotate_each", Lib::name, "quaternion", type, n).c_str(),
                                      rotate_each<Lib>, n);
-    constexpr long long n = 1024;
-    benchmark::RegisterBenchmark(name("compose_each", Lib::name, "quaternion", type, n).c_str(),
-                                 compose_each<Lib>, n);
-    benchmark::RegisterBenchmark(name("to_matrix_each", Lib::name, "quaternion", type, n).c_str(),
-                                 to_matrix_each<Lib>, n);
-    benchmark::RegisterBenchmark(name("to_quaternion_each", Lib::name, "matrix", type, n).c_str(),
-                                 to_quaternion_each<Lib>, n);
+        benchmark::RegisterBenchmark(name("compose_each", Lib::name, "quaternion", type, n).c_str(),
+                                     compose_each<Lib>, n);
+        benchmark::RegisterBenchmark(
+            name("to_matrix_each", Lib::name, "quaternion", type, n).c_str(), to_matrix_each<Lib>,
+            n);
+        benchmark::RegisterBenchmark(
+            name("to_quaternion_each", Lib::name, "matrix", type, n).c_str(),
+            to_quaternion_each<Lib>, n);
+    }
 }
 
 }  // namespace
@@ -205,13 +211,15 @@ void register_each() {
     register_library<each_quat<T>>();
     register_library<each_glm<T>>();
     register_library<each_eigen<T>>();
-    for (const long long n : {1024LL, 4194304LL})
+    for (const long long n : each_sizes)
         benchmark::RegisterBenchmark(
             name("rotate_each", "quat", "quaternion_soa", "float", n).c_str(), rotate_each_soa<T>,
             n);
     // The memory floor of rotate_each: it reads 28 bytes (float) and writes 12 per element. A copy
     // reads and writes equal amounts, so these copy 20 bytes per element, moving the same 40.
-    register_copy_floors("rotate_each", 5, 10 * sizeof(T), {1024, 4194304});
+    register_copy_floors("rotate_each", 5, 10 * sizeof(T), each_sizes);
+    // compose_each reads 32 bytes and writes 16 per element: a copy of 24 moves the same 48.
+    register_copy_floors("compose_each", 6, 12 * sizeof(T), each_sizes);
 }
 
 }  // namespace bench

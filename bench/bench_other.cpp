@@ -233,8 +233,9 @@ void register_interpolation_for() {
         name("normalize", L::name, "quaternion", type).c_str(), [](benchmark::State& s) {
             interpolate<L>(s, [](const Q& a, const Q&, T) { return L::normalize(a); });
         });
-    benchmark::RegisterBenchmark(name("slerp_batch", L::name, "quaternion", type, 1024).c_str(),
-                                 slerp_batch<L>, 1024);
+    for (const long long n : {64LL, 1024LL, 4194304LL})
+        benchmark::RegisterBenchmark(name("slerp_batch", L::name, "quaternion", type, n).c_str(),
+                                     slerp_batch<L>, n);
     if constexpr (std::is_same_v<L, lib_quat<T>>) register_slerp_fast_family<T>();
 }
 

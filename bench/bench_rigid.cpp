@@ -362,7 +362,8 @@ void register_rigid() {
     register_single_points<rigid_eigen>();
     using T = float;  // the rigid-motion targets are float
     const char* type = type_name<T>;
-    const std::vector<long long> sizes = {1024, 4194304};  // in L1/L2, and far beyond L3
+    // One short batch (call overhead and the tail), one in L1/L2, one far beyond L3.
+    const std::vector<long long> sizes = {64, 1024, 4194304};
     constexpr long long k = 1024;
     // quat's rigid_chain entry for dual quaternions is its compose(span), registered below; the
     // sequential loop runs as rigid_chain_sequential, as chain and chain_sequential do for

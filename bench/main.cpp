@@ -263,6 +263,32 @@ void print_targets(const std::vector<measurement>& all) {
                        true, true);
         }
     }
+    // The requirement of every batch and per-element entry point: at least as fast as the fastest
+    // peer loop for the same job, at 64 elements (the call and the tail), 1024 (in cache) and 4M
+    // (beyond the last-level cache); struct-of-arrays forms against the peers' arrays of structs.
+    struct job {
+        const char* operation;
+        const char* representation;
+        std::vector<std::string> peers;  // the peers' representations doing the same job
+    };
+    const job jobs[] = {{"rotate_each", "quaternion", {"quaternion"}},
+                        {"rotate_each", "quaternion_soa", {"quaternion"}},
+                        {"compose_each", "quaternion", {"quaternion"}},
+                        {"compose_each", "quaternion_soa", {"quaternion"}},
+                        {"to_matrix_each", "quaternion", {"quaternion"}},
+                        {"to_quaternion_each", "matrix", {"matrix"}},
+                        {"slerp_batch", "quaternion", {"quaternion"}},
+                        {"transform_batch", "dual_quaternion", {"dual_quaternion", "matrix"}}};
+    for (const job& j : jobs)
+        for (const char* n : {"64", "1024", "4194304"}) {
+            const std::string op = j.operation, size = n;
+            // transform_batch's 1024 and 4M rows are above, with their floors.
+            if (op == "transform_batch" && size != "64") continue;
+            const double ours = find(all, op + "/quat/" + j.representation + "/float/" + size);
+            if (!(ours > 0)) continue;
+            target(op + " " + size + " " + j.representation + ": best(glm, eigen) / quat",
+                   ratio(best_peer(all, op, j.peers, size), ours), 1.0, true);
+        }
     const double chain = find(all, "chain/quat/quaternion/float/1024");
     target("chain 1024: glm / quat compose(span)",
            ratio(find(all, "chain/glm/quaternion/float/1024"), chain), 1.5, true);
