@@ -75,6 +75,26 @@ T length(const vec3<T>& v) {
     return std::sqrt(quat::squared_norm(v));
 }
 
+/// A copy of quaternions as four component arrays, for the struct-of-arrays forms.
+template <class T>
+struct component_arrays {
+    std::vector<T> w, x, y, z;
+
+    explicit component_arrays(const std::vector<quaternion<T>>& q)
+        : w(q.size()), x(q.size()), y(q.size()), z(q.size()) {
+        for (std::size_t i = 0; i < q.size(); ++i)
+            w[i] = q[i].w, x[i] = q[i].x, y[i] = q[i].y, z[i] = q[i].z;
+    }
+    soa_quaternions<T> view() { return {w.data(), x.data(), y.data(), z.data(), w.size()}; }
+    soa_quaternions<const T> view() const {
+        return {w.data(), x.data(), y.data(), z.data(), w.size()};
+    }
+    quaternion<T> operator[](std::size_t i) const { return {w[i], x[i], y[i], z[i]}; }
+    bool operator==(const component_arrays& o) const {
+        return w == o.w && x == o.x && y == o.y && z == o.z;
+    }
+};
+
 /// Largest component difference of a and b in units of eps |v| (|v| at least 1).
 template <class T>
 T relative_error(const vec3<T>& a, const vec3<T>& b, const vec3<T>& v) {
@@ -134,6 +154,59 @@ TEMPLATE_TEST_CASE("rotate_each of struct of arrays equals the array-of-structs 
         for (std::size_t i = 0; i < n; ++i)
             CHECK(vec3<T>{px[i], py[i], pz[i]} == vec3<T>{ox[i], oy[i], oz[i]});
     }
+}
+
+TEMPLATE_TEST_CASE("compose_each of struct of arrays is a[i] * b[i] at every count, also in place",
+                   "[elementwise]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    std::vector<std::size_t> sizes = counts();
+    sizes.push_back(1001);  // many whole vectors and a tail
+    for (const std::size_t n : sizes) {
+        INFO("count " << n);
+        const std::vector<quaternion<T>> qa = random_rotations<T>(random, n);
+        const std::vector<quaternion<T>> qb = random_rotations<T>(random, n);
+        const component_arrays<T> a(qa), b(qb);
+        component_arrays<T> out{std::vector<quaternion<T>>(n)};
+        quat::compose_each(a.view(), b.view(), out.view());
+        // operator*'s arithmetic: equal up to how the compiler fuses multiply-adds.
+        for (std::size_t i = 0; i < n; ++i)
+            CHECK(max_difference(out[i], qa[i] * qb[i]) <= contraction<T>);
+        component_arrays<T> in_a = a, in_b = b, squares = a, expected = out;
+        quat::compose_each(in_a.view(), b.view(), in_a.view());  // output == a
+        quat::compose_each(a.view(), in_b.view(), in_b.view());  // output == b
+        CHECK(in_a == out);
+        CHECK(in_b == out);
+        quat::compose_each(a.view(), a.view(), expected.view());
+        quat::compose_each(squares.view(), squares.view(), squares.view());  // output == a == b
+        CHECK(squares == expected);
+    }
+}
+
+TEMPLATE_TEST_CASE("compose_each of struct of arrays takes non-unit quaternions and writable views",
+                   "[elementwise]", float, double) {
+    using T = TestType;
+    quat::test::random_rotations random;
+    const std::size_t n = 37;  // whole vectors of 4, 8 and 16 lanes, and a tail
+    std::vector<quaternion<T>> qa(n), qb(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        qa[i] = random.unit_quaternion<T>() * random.uniform<T>(0.01, 100);
+        qb[i] = random.unit_quaternion<T>() * random.uniform<T>(0.01, 100);
+    }
+    qa[2] = {0, 0, 0, 0};
+    qb[33] = {-3, 0, 0, 0};
+    // soa_quaternions<T> everywhere: the inputs convert to soa_quaternions<const T>.
+    component_arrays<T> a(qa), b(qb), out{std::vector<quaternion<T>>(n)};
+    quat::compose_each(a.view(), b.view(), out.view());
+    for (std::size_t i = 0; i < n; ++i) {
+        INFO("element " << i);
+        // The rounding of each product term scales with |a| |b|.
+        CHECK(max_difference(out[i], qa[i] * qb[i]) <=
+              contraction<T> * quat::norm(qa[i]) * quat::norm(qb[i]));
+    }
+    CHECK(out[2] == quaternion<T>{0, 0, 0, 0});
+    quat::compose_each(a.view(), b.view(), a.view());  // compose_each(x, y, x)
+    CHECK(a == out);
 }
 
 TEMPLATE_TEST_CASE("compose_each is a[i] * b[i], also in place", "[elementwise]", float, double) {
