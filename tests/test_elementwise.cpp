@@ -156,6 +156,94 @@ TEMPLATE_TEST_CASE("rotate_each of struct of arrays equals the array-of-structs 
     }
 }
 
+TEST_CASE(
+    "rotate_each beyond the streaming threshold (non-temporal stores on x86) gives rotate's "
+    "results, in both layouts and in place",
+    "[elementwise]") {
+    quat::test::random_rotations random;
+    const std::size_t n =
+        quat::detail::streaming_threshold_bytes() / sizeof(vec3<float>) + 77;  // odd tail
+    const std::vector<quaternion<float>> q = random_rotations<float>(random, n);
+    const std::vector<vec3<float>> p = random_points<float>(random, n);
+    std::vector<vec3<float>> out(n);
+    quat::rotate_each(q, p, out);
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(relative_error(out[i], quat::rotate(q[i], p[i]), p[i]) <=
+              rotate_each_vs_rotate<float> / eps<float>))
+            ++mismatches;
+    CHECK(mismatches == 0);
+    std::vector<vec3<float>> same = p;
+    quat::rotate_each(q, same, same);
+    CHECK(same == out);
+
+    const component_arrays<float> rotations(q);
+    std::vector<float> px(n), py(n), pz(n), ox(n), oy(n), oz(n);
+    for (std::size_t i = 0; i < n; ++i) px[i] = p[i].x, py[i] = p[i].y, pz[i] = p[i].z;
+    quat::rotate_each(rotations.view(), soa_points<const float>{px.data(), py.data(), pz.data(), n},
+                      soa_points<float>{ox.data(), oy.data(), oz.data(), n});
+    mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(relative_error(vec3<float>{ox[i], oy[i], oz[i]}, out[i], p[i]) <=
+              soa_vs_aos<float> / eps<float>))
+            ++mismatches;
+    CHECK(mismatches == 0);
+    quat::rotate_each(rotations.view(), soa_points<const float>{px.data(), py.data(), pz.data(), n},
+                      soa_points<float>{px.data(), py.data(), pz.data(), n});
+    CHECK((px == ox && py == oy && pz == oz));
+}
+
+#if defined(__AVX__)
+TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, every short tail",
+          "[elementwise]") {
+    // The streaming paths (called directly here, whatever this machine's threshold) store plainly
+    // up to a 64-byte boundary of the output, then stream; the struct-of-arrays one streams only
+    // where all three output arrays are on a line there, and stores plainly otherwise.
+    quat::test::random_rotations random;
+    const std::vector<quaternion<float>> q = random_rotations<float>(random, 3000);
+    const std::vector<vec3<float>> p = random_points<float>(random, 3000);
+    const component_arrays<float> rotations(q);
+    std::vector<float> px(3000), py(3000), pz(3000);
+    for (std::size_t i = 0; i < 3000; ++i) px[i] = p[i].x, py[i] = p[i].y, pz[i] = p[i].z;
+    const float sentinel = 9;
+    for (std::size_t offset = 0; offset < 16; ++offset) {
+        for (const std::size_t count : {0u, 1u, 7u, 8u, 15u, 16u, 17u, 31u, 33u, 257u, 2999u}) {
+            INFO("offset " << offset << ", " << count << " elements");
+            std::vector<vec3<float>> buffer(3100, vec3<float>{sentinel, sentinel, sentinel});
+            vec3<float>* out = buffer.data() + offset;
+            quat::detail::rotate_each_streaming(q.data(), p.data(), out, count);
+            std::size_t mismatches = 0;
+            for (std::size_t i = 0; i < count; ++i)
+                if (!(relative_error(out[i], quat::rotate(q[i], p[i]), p[i]) <=
+                      rotate_each_vs_rotate<float> / eps<float>))
+                    ++mismatches;
+            CHECK(mismatches == 0);
+            CHECK(out[count].x == sentinel);  // nothing written past the end
+            // y and z one float further from a line than x, or as far: both branches.
+            for (const std::size_t skew : {0u, 1u}) {
+                std::vector<float> ox(3100, sentinel), oy(3100, sentinel), oz(3100, sentinel);
+                const soa_points<float> soa_out{ox.data() + 3 * offset,
+                                                oy.data() + 3 * offset + skew,
+                                                oz.data() + 3 * offset + skew, count};
+                quat::detail::rotate_each_soa_streaming(
+                    soa_quaternions<const float>{rotations.w.data(), rotations.x.data(),
+                                                 rotations.y.data(), rotations.z.data(), count},
+                    soa_points<const float>{px.data(), py.data(), pz.data(), count}, soa_out);
+                mismatches = 0;
+                for (std::size_t i = 0; i < count; ++i)
+                    if (!(relative_error(vec3<float>{soa_out.x[i], soa_out.y[i], soa_out.z[i]},
+                                         quat::rotate(q[i], p[i]),
+                                         p[i]) <= rotate_each_vs_rotate<float> / eps<float>))
+                        ++mismatches;
+                CHECK(mismatches == 0);
+                CHECK((soa_out.x[count] == sentinel && soa_out.y[count] == sentinel &&
+                       soa_out.z[count] == sentinel));
+            }
+        }
+    }
+}
+#endif
+
 TEMPLATE_TEST_CASE("compose_each of struct of arrays is a[i] * b[i] at every count, also in place",
                    "[elementwise]", float, double) {
     using T = TestType;

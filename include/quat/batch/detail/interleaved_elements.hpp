@@ -333,7 +333,9 @@ template <int J, int... L>
 // plain loop (and GLM's and Eigen's) with 53-54 lane-crossing permutes, the bound of those loops.
 // The arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole
 // before it is written. AVX-512 builds run rotate_each_interleaved_16 below and this kernel for a
-// remaining 8.
+// remaining 8. With Stream (out aligned to 16 bytes) the stores are non-temporal, in address order
+// as interleaved_points_avx.hpp's transform_interleaved writes them.
+template <bool Stream = false>
 [[nodiscard]] inline std::size_t rotate_each_interleaved(const float* q, const float* p, float* out,
                                                          std::size_t n) noexcept {
     std::size_t i = 0;
@@ -355,12 +357,12 @@ template <int J, int... L>
         const float8 rb = blend_2_6(blend_1_5(py, pz), px);
         const float8 rc = blend_2_6(blend_1_5(pz, px), py);
         float* o = out + 3 * i;
-        store4(o, __builtin_ia32_vextractf128_ps256(ra, 0));
-        store4(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
-        store4(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
-        store4(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
-        store4(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
-        store4(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
+        put4<Stream>(o, __builtin_ia32_vextractf128_ps256(ra, 0));
+        put4<Stream>(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
+        put4<Stream>(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
+        put4<Stream>(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
+        put4<Stream>(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
+        put4<Stream>(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
     }
     return i;
 }
@@ -376,7 +378,8 @@ template <int J, int... L>
 // two-source permutes (vpermt2ps) of any order: 2 per coordinate each way. 20 shuffles per 16
 // elements, where g++ 12 compiles the plain loop with 4 times as many lane-crossing permutes. The
 // arithmetic is rotate_factored's, term for term. out == p is safe: each group is read whole before
-// it is written.
+// it is written. With Stream (out aligned to 64 bytes) each register of results is one
+// non-temporal store of a whole cache line.
 [[nodiscard]] constexpr int each_element(int lane) noexcept { return lane / 4 + 4 * (lane % 4); }
 [[nodiscard]] constexpr int each_lane(int element) noexcept {
     return 4 * (element % 4) + element / 4;
@@ -427,6 +430,7 @@ template <int R, int... L>
     return i;
 }
 
+template <bool Stream = false>
 [[nodiscard]] inline std::size_t rotate_each_interleaved_16(const float* q, const float* p,
                                                             float* out, std::size_t n) noexcept {
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
@@ -445,9 +449,16 @@ template <int R, int... L>
         const float16 rb = join_coordinates<1>(rx, ry, rz, lanes);
         const float16 rc = join_coordinates<2>(rx, ry, rz, lanes);
         float* o = out + 3 * i;
-        std::memcpy(o, &ra, sizeof ra);
-        std::memcpy(o + 16, &rb, sizeof rb);
-        std::memcpy(o + 32, &rc, sizeof rc);
+        if constexpr (Stream) {
+            static_assert(stream_width == 16, "one non-temporal store per register");
+            stream_vector(o, reinterpret_cast<const float*>(&ra));
+            stream_vector(o + 16, reinterpret_cast<const float*>(&rb));
+            stream_vector(o + 32, reinterpret_cast<const float*>(&rc));
+        } else {
+            std::memcpy(o, &ra, sizeof ra);
+            std::memcpy(o + 16, &rb, sizeof rb);
+            std::memcpy(o + 32, &rc, sizeof rc);
+        }
     }
     return i;
 }
@@ -528,7 +539,8 @@ template <class T>
     return done;
 }
 
-template <class T>
+// With Stream (output aligned to 64 bytes) the stores are non-temporal.
+template <bool Stream = false, class T>
 [[nodiscard]] inline std::size_t rotate_each_kernels(
     [[maybe_unused]] const quaternion<T>* rotations, [[maybe_unused]] const vec3<T>* points,
     [[maybe_unused]] vec3<T>* output, [[maybe_unused]] std::size_t n) noexcept {
@@ -537,12 +549,13 @@ template <class T>
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
 #if defined(__AVX512F__)
-        if (n >= 16)
-            done = rotate_each_interleaved_16(&rotations[0].w, &points[0].x, &output[0].x, n);
+        if (n >= 16 && (!Stream || stream_width == 16))
+            done =
+                rotate_each_interleaved_16<Stream>(&rotations[0].w, &points[0].x, &output[0].x, n);
 #endif
         if (n - done >= 8)
-            done += rotate_each_interleaved(&rotations[done].w, &points[done].x, &output[done].x,
-                                            n - done);
+            done += rotate_each_interleaved<Stream>(&rotations[done].w, &points[done].x,
+                                                    &output[done].x, n - done);
     }
 #endif
 #endif
