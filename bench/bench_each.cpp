@@ -1,5 +1,5 @@
-// Per-element batches (quat/batch/elementwise.hpp): rotate_each (point i by rotation i),
-// compose_each (a[i] * b[i]; both also over struct-of-arrays views), to_matrix_each and
+// Per-element batches (quat/batch/elementwise.hpp): rotate_each (point i by rotation i; arrays of
+// structs and struct of arrays), compose_each (a[i] * b[i]), to_matrix_each and
 // to_quaternion_each. GLM and Eigen run the loops their users write, out[i] = q[i] * p[i] and so
 // on, which g++ vectorizes too. One iteration is a whole batch; items are elements.
 #include <algorithm>
@@ -137,30 +137,6 @@ void rotate_each_soa(benchmark::State& state, long long size) {
     count(state, n, 10 * sizeof(T));
 }
 
-// quat's struct-of-arrays form over the same products.
-template <class T>
-void compose_each_soa(benchmark::State& state, long long size) {
-    const std::size_t n = static_cast<std::size_t>(size);
-    random_source random;
-    std::vector<T> a[4], b[4], out[4];
-    for (auto* arrays : {a, b})
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto q = lib_quat<T>::make_quaternion(random.rotation());
-            const T components[4] = {q.w, q.x, q.y, q.z};
-            for (int c = 0; c < 4; ++c) arrays[c].push_back(components[c]);
-        }
-    for (int c = 0; c < 4; ++c) out[c] = a[c];
-    auto view = [n](std::vector<T>(&v)[4]) {
-        return quat::soa_quaternions<T>{v[0].data(), v[1].data(), v[2].data(), v[3].data(), n};
-    };
-    for (auto _ : state) {
-        quat::compose_each(view(a), view(b), view(out));
-        benchmark::DoNotOptimize(out[0].data());
-        benchmark::ClobberMemory();
-    }
-    count(state, n, 12 * sizeof(T));
-}
-
 template <class Lib>
 void compose_each(benchmark::State& state, long long size) {
     using T = typename Lib::scalar;
@@ -235,14 +211,10 @@ void register_each() {
     register_library<each_quat<T>>();
     register_library<each_glm<T>>();
     register_library<each_eigen<T>>();
-    for (const long long n : each_sizes) {
+    for (const long long n : each_sizes)
         benchmark::RegisterBenchmark(
             name("rotate_each", "quat", "quaternion_soa", "float", n).c_str(), rotate_each_soa<T>,
             n);
-        benchmark::RegisterBenchmark(
-            name("compose_each", "quat", "quaternion_soa", "float", n).c_str(), compose_each_soa<T>,
-            n);
-    }
     // The memory floor of rotate_each: it reads 28 bytes (float) and writes 12 per element. A copy
     // reads and writes equal amounts, so these copy 20 bytes per element, moving the same 40.
     register_copy_floors("rotate_each", 5, 10 * sizeof(T), each_sizes);

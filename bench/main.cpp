@@ -274,7 +274,6 @@ void print_targets(const std::vector<measurement>& all) {
     const job jobs[] = {{"rotate_each", "quaternion", {"quaternion"}},
                         {"rotate_each", "quaternion_soa", {"quaternion"}},
                         {"compose_each", "quaternion", {"quaternion"}},
-                        {"compose_each", "quaternion_soa", {"quaternion"}},
                         {"to_matrix_each", "quaternion", {"quaternion"}},
                         {"to_quaternion_each", "matrix", {"matrix"}},
                         {"slerp_batch", "quaternion", {"quaternion"}},

@@ -85,13 +85,8 @@ struct component_arrays {
         for (std::size_t i = 0; i < q.size(); ++i)
             w[i] = q[i].w, x[i] = q[i].x, y[i] = q[i].y, z[i] = q[i].z;
     }
-    soa_quaternions<T> view() { return {w.data(), x.data(), y.data(), z.data(), w.size()}; }
     soa_quaternions<const T> view() const {
         return {w.data(), x.data(), y.data(), z.data(), w.size()};
-    }
-    quaternion<T> operator[](std::size_t i) const { return {w[i], x[i], y[i], z[i]}; }
-    bool operator==(const component_arrays& o) const {
-        return w == o.w && x == o.x && y == o.y && z == o.z;
     }
 };
 
@@ -243,59 +238,6 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
     }
 }
 #endif
-
-TEMPLATE_TEST_CASE("compose_each of struct of arrays is a[i] * b[i] at every count, also in place",
-                   "[elementwise]", float, double) {
-    using T = TestType;
-    quat::test::random_rotations random;
-    std::vector<std::size_t> sizes = counts();
-    sizes.push_back(1001);  // many whole vectors and a tail
-    for (const std::size_t n : sizes) {
-        INFO("count " << n);
-        const std::vector<quaternion<T>> qa = random_rotations<T>(random, n);
-        const std::vector<quaternion<T>> qb = random_rotations<T>(random, n);
-        const component_arrays<T> a(qa), b(qb);
-        component_arrays<T> out{std::vector<quaternion<T>>(n)};
-        quat::compose_each(a.view(), b.view(), out.view());
-        // operator*'s arithmetic: equal up to how the compiler fuses multiply-adds.
-        for (std::size_t i = 0; i < n; ++i)
-            CHECK(max_difference(out[i], qa[i] * qb[i]) <= contraction<T>);
-        component_arrays<T> in_a = a, in_b = b, squares = a, expected = out;
-        quat::compose_each(in_a.view(), b.view(), in_a.view());  // output == a
-        quat::compose_each(a.view(), in_b.view(), in_b.view());  // output == b
-        CHECK(in_a == out);
-        CHECK(in_b == out);
-        quat::compose_each(a.view(), a.view(), expected.view());
-        quat::compose_each(squares.view(), squares.view(), squares.view());  // output == a == b
-        CHECK(squares == expected);
-    }
-}
-
-TEMPLATE_TEST_CASE("compose_each of struct of arrays takes non-unit quaternions and writable views",
-                   "[elementwise]", float, double) {
-    using T = TestType;
-    quat::test::random_rotations random;
-    const std::size_t n = 37;  // whole vectors of 4, 8 and 16 lanes, and a tail
-    std::vector<quaternion<T>> qa(n), qb(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        qa[i] = random.unit_quaternion<T>() * random.uniform<T>(0.01, 100);
-        qb[i] = random.unit_quaternion<T>() * random.uniform<T>(0.01, 100);
-    }
-    qa[2] = {0, 0, 0, 0};
-    qb[33] = {-3, 0, 0, 0};
-    // soa_quaternions<T> everywhere: the inputs convert to soa_quaternions<const T>.
-    component_arrays<T> a(qa), b(qb), out{std::vector<quaternion<T>>(n)};
-    quat::compose_each(a.view(), b.view(), out.view());
-    for (std::size_t i = 0; i < n; ++i) {
-        INFO("element " << i);
-        // The rounding of each product term scales with |a| |b|.
-        CHECK(max_difference(out[i], qa[i] * qb[i]) <=
-              contraction<T> * quat::norm(qa[i]) * quat::norm(qb[i]));
-    }
-    CHECK(out[2] == quaternion<T>{0, 0, 0, 0});
-    quat::compose_each(a.view(), b.view(), a.view());  // compose_each(x, y, x)
-    CHECK(a == out);
-}
 
 TEMPLATE_TEST_CASE("compose_each is a[i] * b[i], also in place", "[elementwise]", float, double) {
     using T = TestType;

@@ -2986,12 +2986,12 @@ template <class T>
 // differently in the two places (-ffp-contract).
 //
 // Arrays are passed as pointer + count or as contiguous containers (data() and size(), C arrays),
-// as in batch/rotations.hpp, or to rotate_each and compose_each as batch/soa.hpp's struct-of-arrays
-// views, whose loops need no shuffles. Aliasing: an output may be exactly an input of its own type
-// (in place) or overlap no input; it may never overlap an input of another type. A partial overlap
-// is a precondition violation: QUAT_ASSERT reports it in debug builds (a constant number of
-// pointer range comparisons per call); with NDEBUG the values written are unspecified. Like all of
-// quat's functions they live in the instruction-set namespace (detail/math.hpp).
+// as in batch/rotations.hpp; the struct-of-arrays views are batch/soa.hpp's. Aliasing: an output
+// may be exactly an input of its own type (in place) or overlap no input; it may never overlap an
+// input of another type. A partial overlap is a precondition violation: QUAT_ASSERT reports it in
+// debug builds (a constant number of pointer range comparisons per call); with NDEBUG the values
+// written are unspecified. Like all of quat's functions they live in the instruction-set
+// namespace (detail/math.hpp).
 #ifndef QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 #define QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 
@@ -4567,7 +4567,7 @@ template <class T>
 // Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
 // component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
 // them are in batch/rotations.hpp (rotate), batch/rigid_motions.hpp (transform) and
-// batch/elementwise.hpp (rotate_each, compose_each).
+// batch/elementwise.hpp (rotate_each).
 //
 // The view types are the same under every instruction set, so they stay outside the instruction-set
 // namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
@@ -4643,29 +4643,18 @@ inline namespace isa_generic {
 namespace detail {
 
 // The aliasing rule of the struct-of-arrays forms: each output array is one of the input arrays or
-// overlaps none of them; every array holds `count` elements. The arrays come as plain arrays, not
-// braced lists: std::initializer_list's members are the standard library's inline functions, not
+// overlaps none of them; every array holds `count` elements. The inputs come as a plain array, not
+// a braced list: std::initializer_list's members are the standard library's inline functions, not
 // keyed by instruction set.
-template <class T, std::size_t N, std::size_t M>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], T* const (&outputs)[M],
+template <class T, std::size_t N>
+[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
                                         std::size_t count) noexcept {
     const std::size_t bytes = count * sizeof(T);
+    const T* const outputs[] = {output.x, output.y, output.z};
     for (const T* out : outputs)
         for (const T* in : inputs)
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
-}
-template <class T, std::size_t N>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
-                                        std::size_t count) noexcept {
-    T* const outputs[] = {output.x, output.y, output.z};
-    return soa_same_or_disjoint(inputs, outputs, count);
-}
-template <class T, std::size_t N>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_quaternions<T> output,
-                                        std::size_t count) noexcept {
-    T* const outputs[] = {output.w, output.x, output.y, output.z};
-    return soa_same_or_disjoint(inputs, outputs, count);
 }
 
 }  // namespace detail
@@ -4853,59 +4842,6 @@ void compose_each_loop(const quaternion<T>* a, const quaternion<T>* b, quaternio
     }
 }
 
-// compose_each_loop over struct-of-arrays views, in rotate_each_soa's two parts; the lanes
-// multiply as operator* does, term by term in its order, so the two round alike (bit for bit
-// where the compiler fuses no multiply-adds).
-template <class T>
-void compose_each_soa(soa_quaternions<const T> a, soa_quaternions<const T> b,
-                      soa_quaternions<T> output) noexcept {
-    std::size_t done = 0;
-    // Each step loads the next vector of every input before it stores, as in rotate_each_soa.
-    if constexpr (has_wide_lanes<T>) {
-        using V = wide_t<T>;
-        constexpr std::size_t lanes = wide_count<T>;
-        struct element {
-            V aw, ax, ay, az, bw, bx, by, bz;
-        };
-        auto load = [&](std::size_t at) noexcept {
-            return element{load_wide(a.w + at), load_wide(a.x + at), load_wide(a.y + at),
-                           load_wide(a.z + at), load_wide(b.w + at), load_wide(b.x + at),
-                           load_wide(b.y + at), load_wide(b.z + at)};
-        };
-        auto multiply = [&](const element& e, std::size_t at) noexcept {
-            store_wide(output.w + at, e.aw * e.bw - e.ax * e.bx - e.ay * e.by - e.az * e.bz);
-            store_wide(output.x + at, e.aw * e.bx + e.ax * e.bw + e.ay * e.bz - e.az * e.by);
-            store_wide(output.y + at, e.aw * e.by - e.ax * e.bz + e.ay * e.bw + e.az * e.bx);
-            store_wide(output.z + at, e.aw * e.bz + e.ax * e.by - e.ay * e.bx + e.az * e.bw);
-        };
-        const std::size_t whole = a.count - a.count % lanes;
-        if (whole != 0) {
-            element current = load(0);
-            for (; done + lanes < whole; done += lanes) {
-                const element next = load(done + lanes);
-                multiply(current, done);
-                current = next;
-            }
-            multiply(current, done);
-            done = whole;
-        }
-    }
-    // As in rotate_each_soa; each output array may be any one of the input arrays.
-#if defined(__clang__)
-#pragma clang loop vectorize(assume_safety)
-#elif defined(__GNUC__)
-#pragma GCC ivdep
-#endif
-    for (std::size_t i = done; i < a.count; ++i) {
-        const quaternion<T> r = quaternion<T>{a.w[i], a.x[i], a.y[i], a.z[i]} *
-                                quaternion<T>{b.w[i], b.x[i], b.y[i], b.z[i]};
-        output.w[i] = r.w;
-        output.x[i] = r.x;
-        output.y[i] = r.y;
-        output.z[i] = r.z;
-    }
-}
-
 #if defined(__clang__)
 #pragma clang diagnostic pop
 #endif
@@ -5057,23 +4993,6 @@ void compose_each(const quaternion<T>* a, const quaternion<T>* b, quaternion<T>*
                 "quat::compose_each: output partially overlaps an input");
     const std::size_t done = detail::compose_each_kernels(a, b, output, count);
     detail::compose_each_loop(a, b, output, count, done);
-}
-
-/// Struct-of-arrays compose_each: quaternion i of output is (a.w[i], ...) * (b.w[i], ...), so b's
-/// rotation applies first (Hamilton product), with operator*'s results up to how the compiler fuses
-/// multiply-adds, any unit or non-unit input. Each output array may be one of the input arrays or
-/// overlap none. Preconditions: a.count == b.count <= output.count (QUAT_ASSERT); unchecked,
-/// a.count elements of every array are read or written.
-template <class T>
-void compose_each(soa_quaternions<const detail::type_identity_t<T>> a,
-                  soa_quaternions<const detail::type_identity_t<T>> b,
-                  soa_quaternions<T> output) noexcept {
-    QUAT_ASSERT(a.count == b.count, "quat::compose_each: a and b differ in size");
-    QUAT_ASSERT(output.count >= a.count, "quat::compose_each: output shorter than the input");
-    QUAT_ASSERT(
-        detail::soa_same_or_disjoint({a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z}, output, a.count),
-        "quat::compose_each: an output array partially overlaps an input array");
-    detail::compose_each_soa(a, b, output);
 }
 
 /// Container form of compose_each. Preconditions: size(a) == size(b) <= size(output) (QUAT_ASSERT);

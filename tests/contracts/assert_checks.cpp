@@ -93,9 +93,6 @@ int valid() {
         quat::soa_quaternions<const double>{w.data(), zero.data(), zero.data(), zero.data(), 64},
         quat::soa_points<const double>{x.data(), y.data(), z.data(), 64},
         quat::soa_points<double>{x.data(), y.data(), z.data(), 64});
-    std::vector<double> qw(64, 0.5), qx(64, -0.5), qy(64, 0.5), qz(64, 0.5);
-    const quat::soa_quaternions<double> wxyz{qw.data(), qx.data(), qy.data(), qz.data(), 64};
-    quat::compose_each(wxyz, wxyz, wxyz);
     std::vector<quat::rotation_matrix<double>> matrices(300);
     quat::to_matrix_each(products, matrices);
     quat::to_quaternion_each(matrices, products);
@@ -338,11 +335,6 @@ int run(const char* name) {
             quat::soa_quaternions<const double>{x.data(), y.data(), z.data(), x.data(), 60},
             quat::soa_points<const double>{x.data(), y.data(), z.data(), 60},
             quat::soa_points<double>{x.data(), y.data(), z.data() + 3, 60});
-    if (std::strcmp(name, "compose_each_soa_overlap") == 0)
-        quat::compose_each(
-            quat::soa_quaternions<const double>{x.data(), y.data(), z.data(), x.data(), 60},
-            quat::soa_quaternions<const double>{x.data(), y.data(), z.data(), x.data(), 60},
-            quat::soa_quaternions<double>{x.data(), y.data(), z.data() + 3, x.data(), 60});
     if (std::strcmp(name, "compose_each_overlap") == 0)
         quat::compose_each(rotations.data(), products.data(), products.data() + 1, 63);
     if (std::strcmp(name, "compose_each_short_output") == 0) {

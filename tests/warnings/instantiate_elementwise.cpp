@@ -32,8 +32,6 @@ T elementwise() {
     compose_each(products, rotations, products);
     quaternion<T> pair_products[2];
     compose_each(pair, pair, pair_products);
-    const soa_quaternions<T> wxyz{w.data(), x.data(), y.data(), z.data(), 5};
-    compose_each(soa_quaternions<const T>{w.data(), x.data(), y.data(), z.data(), 5}, wxyz, wxyz);
     std::vector<rotation_matrix<T>> matrices(5);
     to_matrix_each(rotations.data(), matrices.data(), rotations.size());
     to_matrix_each(rotations, matrices);

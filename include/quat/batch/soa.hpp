@@ -1,7 +1,7 @@
 // Struct-of-arrays views: points as three coordinate arrays (soa_points) and rotations as four
 // component arrays (soa_quaternions), the layout whose loops need no shuffles. The functions taking
 // them are in batch/rotations.hpp (rotate), batch/rigid_motions.hpp (transform) and
-// batch/elementwise.hpp (rotate_each, compose_each).
+// batch/elementwise.hpp (rotate_each).
 //
 // The view types are the same under every instruction set, so they stay outside the instruction-set
 // namespace (detail/math.hpp); the aliasing check beside them is a function and lives inside it.
@@ -55,29 +55,18 @@ struct soa_quaternions {
 namespace detail {
 
 // The aliasing rule of the struct-of-arrays forms: each output array is one of the input arrays or
-// overlaps none of them; every array holds `count` elements. The arrays come as plain arrays, not
-// braced lists: std::initializer_list's members are the standard library's inline functions, not
+// overlaps none of them; every array holds `count` elements. The inputs come as a plain array, not
+// a braced list: std::initializer_list's members are the standard library's inline functions, not
 // keyed by instruction set.
-template <class T, std::size_t N, std::size_t M>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], T* const (&outputs)[M],
+template <class T, std::size_t N>
+[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
                                         std::size_t count) noexcept {
     const std::size_t bytes = count * sizeof(T);
+    const T* const outputs[] = {output.x, output.y, output.z};
     for (const T* out : outputs)
         for (const T* in : inputs)
             if (!same_or_disjoint(in, bytes, out, bytes)) return false;
     return true;
-}
-template <class T, std::size_t N>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_points<T> output,
-                                        std::size_t count) noexcept {
-    T* const outputs[] = {output.x, output.y, output.z};
-    return soa_same_or_disjoint(inputs, outputs, count);
-}
-template <class T, std::size_t N>
-[[nodiscard]] bool soa_same_or_disjoint(const T* const (&inputs)[N], soa_quaternions<T> output,
-                                        std::size_t count) noexcept {
-    T* const outputs[] = {output.w, output.x, output.y, output.z};
-    return soa_same_or_disjoint(inputs, outputs, count);
 }
 
 }  // namespace detail
