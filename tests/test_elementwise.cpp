@@ -168,9 +168,15 @@ TEST_CASE(
               rotate_each_vs_rotate<float> / eps<float>))
             ++mismatches;
     CHECK(mismatches == 0);
+    // In place (the plain prefix may differ in length, as above): rotate's results again.
     std::vector<vec3<float>> same = p;
     quat::rotate_each(q, same, same);
-    CHECK(same == out);
+    mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(relative_error(same[i], quat::rotate(q[i], p[i]), p[i]) <=
+              rotate_each_vs_rotate<float> / eps<float>))
+            ++mismatches;
+    CHECK(mismatches == 0);
 
     const component_arrays<float> rotations(q);
     std::vector<float> px(n), py(n), pz(n), ox(n), oy(n), oz(n);
@@ -185,8 +191,59 @@ TEST_CASE(
     CHECK(mismatches == 0);
     quat::rotate_each(rotations.view(), soa_points<const float>{px.data(), py.data(), pz.data(), n},
                       soa_points<float>{px.data(), py.data(), pz.data(), n});
-    CHECK((px == ox && py == oy && pz == oz));
+    mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(relative_error(vec3<float>{px[i], py[i], pz[i]}, out[i], p[i]) <=
+              soa_vs_aos<float> / eps<float>))
+            ++mismatches;
+    CHECK(mismatches == 0);
 }
+
+TEST_CASE("compose_each beyond the streaming threshold gives operator*'s products, also in place",
+          "[elementwise]") {
+    quat::test::random_rotations random;
+    const std::size_t n =
+        quat::detail::streaming_threshold_bytes() / sizeof(quaternion<float>) + 77;
+    const std::vector<quaternion<float>> a = random_rotations<float>(random, n);
+    const std::vector<quaternion<float>> b = random_rotations<float>(random, n);
+    std::vector<quaternion<float>> out(n);
+    quat::compose_each(a, b, out);
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(max_difference(out[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
+    CHECK(mismatches == 0);
+    // In place (its prefix before a cache line may differ, and with it which elements the plain
+    // loop does): operator*'s products again.
+    std::vector<quaternion<float>> same = a;
+    quat::compose_each(same, b, same);
+    mismatches = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(max_difference(same[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
+    CHECK(mismatches == 0);
+}
+
+#if defined(__AVX__)
+TEST_CASE("streamed compose_each: every offset of the output from a cache line, every short tail",
+          "[elementwise]") {
+    quat::test::random_rotations random;
+    const std::vector<quaternion<float>> a = random_rotations<float>(random, 3000);
+    const std::vector<quaternion<float>> b = random_rotations<float>(random, 3000);
+    const quaternion<float> sentinel{9, 9, 9, 9};
+    for (std::size_t offset = 0; offset < 4; ++offset) {
+        for (const std::size_t count : {0u, 1u, 3u, 7u, 8u, 15u, 16u, 17u, 31u, 33u, 257u, 2999u}) {
+            INFO("offset " << offset << ", " << count << " products");
+            std::vector<quaternion<float>> buffer(3010, sentinel);
+            quaternion<float>* out = buffer.data() + offset;
+            quat::detail::compose_each_streaming(a.data(), b.data(), out, count);
+            std::size_t mismatches = 0;
+            for (std::size_t i = 0; i < count; ++i)
+                if (!(max_difference(out[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
+            CHECK(mismatches == 0);
+            CHECK(out[count] == sentinel);  // nothing written past the end
+        }
+    }
+}
+#endif
 
 #if defined(__AVX__)
 TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, every short tail",

@@ -188,14 +188,19 @@ template <class V>
     transpose_in_lanes(r.w, r.x, r.y, r.z);
     return r;
 }
-template <class V>
+// With Stream (out aligned to V's size) the four stores are non-temporal.
+template <bool Stream = false, class V>
 inline void store_quaternions(float* out, quaternion<V> r) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(float);
     transpose_in_lanes(r.w, r.x, r.y, r.z);
-    std::memcpy(out, &r.w, sizeof r.w);
-    std::memcpy(out + lanes, &r.x, sizeof r.x);
-    std::memcpy(out + 2 * lanes, &r.y, sizeof r.y);
-    std::memcpy(out + 3 * lanes, &r.z, sizeof r.z);
+    const V* rows[] = {&r.w, &r.x, &r.y, &r.z};
+    for (std::size_t k = 0; k < 4; ++k) {
+        if constexpr (Stream) {
+            stream_vector<lanes>(out + k * lanes, reinterpret_cast<const float*>(rows[k]));
+        } else {
+            std::memcpy(out + k * lanes, rows[k], sizeof(V));
+        }
+    }
 }
 
 // compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
@@ -204,11 +209,13 @@ inline void store_quaternions(float* out, quaternion<V> r) noexcept {
 // multiplies per 8 products. The plain loop, as g++ 12 compiles it at -march=x86-64-v3, took as
 // long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time).
 // Output may be a or b: each group is read whole before it is written.
+// With Stream (out aligned to 32 bytes) the stores are non-temporal.
+template <bool Stream = false>
 [[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
                                                           float* out, std::size_t n) noexcept {
     std::size_t i = 0;
     for (; i + 8 <= n; i += 8)
-        store_quaternions(
+        store_quaternions<Stream>(
             out + 4 * i, load_quaternions<float8>(a + 4 * i) * load_quaternions<float8>(b + 4 * i));
     return i;
 }
@@ -421,12 +428,14 @@ template <int R, int... L>
 // itself on 16 lanes, between two transposes in and one out (24 in-lane unpacks and 16 multiplies
 // per 16 products, where g++ 12 compiles the plain loop with lane-crossing permutes). Output may be
 // a or b: each group is read whole before it is written.
+// With Stream (out aligned to 64 bytes) each register is one non-temporal store of a cache line.
+template <bool Stream = false>
 [[nodiscard]] inline std::size_t compose_each_interleaved_16(const float* a, const float* b,
                                                              float* out, std::size_t n) noexcept {
     std::size_t i = 0;
     for (; i + 16 <= n; i += 16)
-        store_quaternions(out + 4 * i, load_quaternions<float16>(a + 4 * i) *
-                                           load_quaternions<float16>(b + 4 * i));
+        store_quaternions<Stream>(out + 4 * i, load_quaternions<float16>(a + 4 * i) *
+                                                   load_quaternions<float16>(b + 4 * i));
     return i;
 }
 
@@ -450,10 +459,9 @@ template <bool Stream = false>
         const float16 rc = join_coordinates<2>(rx, ry, rz, lanes);
         float* o = out + 3 * i;
         if constexpr (Stream) {
-            static_assert(stream_width == 16, "one non-temporal store per register");
-            stream_vector(o, reinterpret_cast<const float*>(&ra));
-            stream_vector(o + 16, reinterpret_cast<const float*>(&rb));
-            stream_vector(o + 32, reinterpret_cast<const float*>(&rc));
+            stream_vector<16>(o, reinterpret_cast<const float*>(&ra));
+            stream_vector<16>(o + 16, reinterpret_cast<const float*>(&rb));
+            stream_vector<16>(o + 32, reinterpret_cast<const float*>(&rc));
         } else {
             std::memcpy(o, &ra, sizeof ra);
             std::memcpy(o + 16, &rb, sizeof rb);
@@ -519,7 +527,8 @@ static_assert(sizeof(quaternion<float>) == 4 * sizeof(float) &&
                   sizeof(rotation_matrix<float>) == 9 * sizeof(float),
               "packed quaternions, points and matrices");
 
-template <class T>
+// With Stream (output aligned to 64 bytes) the stores are non-temporal.
+template <bool Stream = false, class T>
 [[nodiscard]] inline std::size_t compose_each_kernels([[maybe_unused]] const quaternion<T>* a,
                                                       [[maybe_unused]] const quaternion<T>* b,
                                                       [[maybe_unused]] quaternion<T>* output,
@@ -529,10 +538,14 @@ template <class T>
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
 #if defined(__AVX512F__)
-        if (n >= 16) done = compose_each_interleaved_16(&a[0].w, &b[0].w, &output[0].w, n);
+        if constexpr (!Stream || stream_width == 16)
+            if (n >= 16)
+                done = compose_each_interleaved_16<Stream>(&a[0].w, &b[0].w, &output[0].w, n);
 #endif
-        if (n - done >= 8)
-            done += compose_each_interleaved(&a[done].w, &b[done].w, &output[done].w, n - done);
+        if constexpr (!Stream || stream_width >= 8)
+            if (n - done >= 8)
+                done += compose_each_interleaved<Stream>(&a[done].w, &b[done].w, &output[done].w,
+                                                         n - done);
     }
 #endif
 #endif
@@ -549,9 +562,10 @@ template <bool Stream = false, class T>
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float>) {
 #if defined(__AVX512F__)
-        if (n >= 16 && (!Stream || stream_width == 16))
-            done =
-                rotate_each_interleaved_16<Stream>(&rotations[0].w, &points[0].x, &output[0].x, n);
+        if constexpr (!Stream || stream_width == 16)
+            if (n >= 16)
+                done = rotate_each_interleaved_16<Stream>(&rotations[0].w, &points[0].x,
+                                                          &output[0].x, n);
 #endif
         if (n - done >= 8)
             done += rotate_each_interleaved<Stream>(&rotations[done].w, &points[done].x,

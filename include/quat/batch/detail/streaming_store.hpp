@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #if defined(__SSE__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -50,22 +51,35 @@ inline constexpr std::size_t stream_width = 4;
 #endif
 
 #if defined(__SSE__) || defined(_M_X64)
-// One non-temporal store of stream_width floats from `from` (any alignment) to `to` (aligned to
-// the store's width). clang spells every width with one builtin, g++ has one per width.
+// One non-temporal store of Width floats (4, or up to stream_width) from `from` (any alignment) to
+// `to` (aligned to the store's width). clang spells every width with one builtin, g++ has one per
+// width.
+template <std::size_t Width = stream_width>
 inline void stream_vector(float* to, const float* from) noexcept {
-    if constexpr (stream_width == 4) {
+    static_assert(Width == 4 || ((Width == 8 || Width == 16) && Width <= stream_width),
+                  "a non-temporal store the build has");
+    if constexpr (Width == 4) {
         _mm_stream_ps(to, _mm_loadu_ps(from));
     } else {
 #if defined(__has_builtin)
-        using vector = float __attribute__((vector_size(4 * stream_width)));
+        // Spelled out per width: g++ 12 drops a vector_size that depends on a template parameter.
+        using vector8 = float __attribute__((vector_size(32)));
+        using vector16 = float __attribute__((vector_size(64)));
+        using vector = std::conditional_t<Width == 16, vector16, vector8>;
         vector v;
         std::memcpy(&v, from, sizeof v);
 #if __has_builtin(__builtin_nontemporal_store)
         __builtin_nontemporal_store(v, reinterpret_cast<vector*>(to));
-#elif defined(__AVX512F__) && __has_builtin(__builtin_ia32_movntps512)
-        __builtin_ia32_movntps512(to, v);
-#elif defined(__AVX__) && __has_builtin(__builtin_ia32_movntps256)
-        __builtin_ia32_movntps256(to, v);
+#else
+        if constexpr (Width == 16) {
+#if defined(__AVX512F__) && __has_builtin(__builtin_ia32_movntps512)
+            __builtin_ia32_movntps512(to, v);
+#endif
+        } else {
+#if defined(__AVX__) && __has_builtin(__builtin_ia32_movntps256)
+            __builtin_ia32_movntps256(to, v);
+#endif
+        }
 #endif
 #endif
     }
