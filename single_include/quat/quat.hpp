@@ -4005,13 +4005,18 @@ template <bool Stream = false, class V>
 inline void store_quaternions(float* out, quaternion<V> r) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(float);
     transpose_in_lanes(r.w, r.x, r.y, r.z);
-    const V* rows[] = {&r.w, &r.x, &r.y, &r.z};
-    for (std::size_t k = 0; k < 4; ++k) {
-        if constexpr (Stream) {
-            stream_vector<lanes>(out + k * lanes, reinterpret_cast<const float*>(rows[k]));
-        } else {
-            std::memcpy(out + k * lanes, rows[k], sizeof(V));
-        }
+    // Spelled out, not a loop over pointers to the four: with that loop g++ 12 kept them in memory
+    // in x86-64-v3 builds (compose_each 1024: 0.80x GLM's loop against 1.41x).
+    if constexpr (Stream) {
+        stream_vector<lanes>(out, reinterpret_cast<const float*>(&r.w));
+        stream_vector<lanes>(out + lanes, reinterpret_cast<const float*>(&r.x));
+        stream_vector<lanes>(out + 2 * lanes, reinterpret_cast<const float*>(&r.y));
+        stream_vector<lanes>(out + 3 * lanes, reinterpret_cast<const float*>(&r.z));
+    } else {
+        std::memcpy(out, &r.w, sizeof r.w);
+        std::memcpy(out + lanes, &r.x, sizeof r.x);
+        std::memcpy(out + 2 * lanes, &r.y, sizeof r.y);
+        std::memcpy(out + 3 * lanes, &r.z, sizeof r.z);
     }
 }
 
