@@ -156,6 +156,19 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     }
 }
 
+// How many of the count elements at `at` lie before its first 64-byte boundary (at most 16; 16
+// or count where no element starts one): the streaming paths store those plainly, so that no
+// cache line is written partly by plain and partly by non-temporal stores.
+template <class Element>
+[[nodiscard]] inline std::size_t elements_before_line(const Element* at,
+                                                      std::size_t count) noexcept {
+    std::size_t n = 0;
+    while (n < 64 / sizeof(float) && n < count &&
+           reinterpret_cast<std::uintptr_t>(at + n) % 64 != 0)
+        ++n;
+    return n;
+}
+
 // rotate_each_soa out of cache (float, AVX builds): from the first element where output.x starts
 // a cache line on (the first at most 15 plainly), the three output arrays are written with
 // non-temporal stores straight from the registers when each of them is on a line there (large
@@ -167,10 +180,7 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
 [[gnu::noinline]] inline void rotate_each_soa_streaming(soa_quaternions<const float> q,
                                                         soa_points<const float> p,
                                                         soa_points<float> output) noexcept {
-    std::size_t head = 0;
-    while (head < 16 && head < p.count &&
-           reinterpret_cast<std::uintptr_t>(output.x + head) % 64 != 0)
-        ++head;
+    const std::size_t head = elements_before_line(output.x, p.count);
     rotate_each_soa(soa_quaternions<const float>{q.w, q.x, q.y, q.z, head},
                     soa_points<const float>{p.x, p.y, p.z, head}, output);
     const std::size_t rest = p.count - head;
@@ -257,9 +267,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
 [[gnu::noinline]] inline void rotate_each_streaming(const quaternion<float>* rotations,
                                                     const vec3<float>* points, vec3<float>* output,
                                                     std::size_t count) noexcept {
-    std::size_t done = 0;
-    while (done < 16 && done < count && reinterpret_cast<std::uintptr_t>(output + done) % 64 != 0)
-        ++done;
+    std::size_t done = elements_before_line(output, count);
     rotate_each_loop(rotations, points, output, done);
     if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
         done +=
@@ -279,9 +287,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
                                                      const quaternion<float>* b,
                                                      quaternion<float>* output,
                                                      std::size_t count) noexcept {
-    std::size_t done = 0;
-    while (done < 4 && done < count && reinterpret_cast<std::uintptr_t>(output + done) % 64 != 0)
-        ++done;
+    std::size_t done = elements_before_line(output, count);
     compose_each_loop(a, b, output, done);
     if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
         done += compose_each_kernels<true>(a + done, b + done, output + done, count - done);

@@ -368,13 +368,7 @@ template <bool Stream = false>
         const float8 ra = blend_2_6(blend_1_5(px, py), pz);
         const float8 rb = blend_2_6(blend_1_5(py, pz), px);
         const float8 rc = blend_2_6(blend_1_5(pz, px), py);
-        float* o = out + 3 * i;
-        put4<Stream>(o, __builtin_ia32_vextractf128_ps256(ra, 0));
-        put4<Stream>(o + 4, __builtin_ia32_vextractf128_ps256(rb, 0));
-        put4<Stream>(o + 8, __builtin_ia32_vextractf128_ps256(rc, 0));
-        put4<Stream>(o + 12, __builtin_ia32_vextractf128_ps256(ra, 1));
-        put4<Stream>(o + 16, __builtin_ia32_vextractf128_ps256(rb, 1));
-        put4<Stream>(o + 20, __builtin_ia32_vextractf128_ps256(rc, 1));
+        put_points8<Stream>(out + 3 * i, ra, rb, rc);
     }
     return i;
 }
