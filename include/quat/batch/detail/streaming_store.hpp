@@ -50,14 +50,14 @@ inline constexpr std::size_t stream_width = 4;
 inline constexpr std::size_t stream_width = 4;
 #endif
 
-#if defined(__SSE__) || defined(_M_X64)
 // One non-temporal store of Width floats (4, or up to stream_width) from `from` (any alignment) to
-// `to` (aligned to the store's width). clang spells every width with one builtin, g++ has one per
-// width.
+// `to` (aligned to the store's width) where the target has them (x86 SSE), a plain copy elsewhere.
+// clang spells every width with one builtin, g++ has one per width.
 template <std::size_t Width = stream_width>
 inline void stream_vector(float* to, const float* from) noexcept {
     static_assert(Width == 4 || ((Width == 8 || Width == 16) && Width <= stream_width),
                   "a non-temporal store the build has");
+#if defined(__SSE__) || defined(_M_X64)
     if constexpr (Width == 4) {
         _mm_stream_ps(to, _mm_loadu_ps(from));
     } else {
@@ -83,8 +83,10 @@ inline void stream_vector(float* to, const float* from) noexcept {
 #endif
 #endif
     }
-}
+#else
+    std::memcpy(to, from, Width * sizeof(float));
 #endif
+}
 
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
 // stores elsewhere: plain stores up to the first address aligned to the store's width, then the
