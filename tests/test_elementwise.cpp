@@ -249,8 +249,9 @@ TEST_CASE("streamed compose_each: every offset of the output from a cache line, 
 TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, every short tail",
           "[elementwise]") {
     // The streaming paths (called directly here, whatever this machine's threshold) store plainly
-    // up to a 64-byte boundary of the output, then stream; the struct-of-arrays one streams only
-    // where all three output arrays are on a line there, and stores plainly otherwise.
+    // up to a 64-byte boundary of the output, then stream; the struct-of-arrays one streams whole
+    // vectors where all three output arrays are aligned to them there, 16-byte pieces where they
+    // are aligned to 16 bytes, and stores plainly otherwise.
     quat::test::random_rotations random;
     const std::vector<quaternion<float>> q = random_rotations<float>(random, 3000);
     const std::vector<vec3<float>> p = random_points<float>(random, 3000);
@@ -271,12 +272,16 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
                     ++mismatches;
             CHECK(mismatches == 0);
             CHECK(out[count].x == sentinel);  // nothing written past the end
-            // y and z one float further from a line than x, or as far: both branches.
-            for (const std::size_t skew : {0u, 1u}) {
-                std::vector<float> ox(3100, sentinel), oy(3100, sentinel), oz(3100, sentinel);
-                const soa_points<float> soa_out{ox.data() + 3 * offset,
-                                                oy.data() + 3 * offset + skew,
-                                                oz.data() + 3 * offset + skew, count};
+            // y and z as far from a line as x, 4 floats further (16-byte pieces) or 1 (plain):
+            // the three output arrays carved from one buffer at 64-byte boundaries.
+            for (const std::size_t skew : {0u, 4u, 1u}) {
+                constexpr std::size_t stride = 3200;  // floats: 200 cache lines
+                std::vector<float> buffer_soa(3 * stride + 16, sentinel);
+                float* const base =
+                    buffer_soa.data() + quat::detail::elements_before_line(buffer_soa.data(), 16);
+                const soa_points<float> soa_out{base + 3 * offset,
+                                                base + stride + 3 * offset + skew,
+                                                base + 2 * stride + 3 * offset + skew, count};
                 quat::detail::rotate_each_soa_streaming(
                     soa_quaternions<const float>{rotations.w.data(), rotations.x.data(),
                                                  rotations.y.data(), rotations.z.data(), count},

@@ -95,9 +95,9 @@ void rotate_each_loop(const quaternion<T>* rotations, const vec3<T>* points, vec
     }
 }
 
-// With Stream (each output array aligned to the vector's width) the whole vectors are stored
-// non-temporally.
-template <bool Stream = false, class T>
+// With Stream, the floats per non-temporal store (the vector's width, or 4; each output array
+// aligned to that many floats), the whole vectors are stored non-temporally; 0 stores plainly.
+template <std::size_t Stream = 0, class T>
 void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
                      soa_points<T> output) noexcept {
     std::size_t done = 0;
@@ -119,10 +119,15 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
         auto turn = [&](const element& e, std::size_t at) noexcept {
             V rx, ry, rz;
             rotate_factored_lanes(e.w, e.x, e.y, e.z, e.px, e.py, e.pz, rx, ry, rz);
-            if constexpr (Stream) {
-                stream_vector<lanes>(output.x + at, reinterpret_cast<const T*>(&rx));
-                stream_vector<lanes>(output.y + at, reinterpret_cast<const T*>(&ry));
-                stream_vector<lanes>(output.z + at, reinterpret_cast<const T*>(&rz));
+            if constexpr (Stream != 0) {
+                for (std::size_t piece = 0; piece < lanes; piece += Stream) {
+                    stream_vector<Stream>(output.x + at + piece,
+                                          reinterpret_cast<const T*>(&rx) + piece);
+                    stream_vector<Stream>(output.y + at + piece,
+                                          reinterpret_cast<const T*>(&ry) + piece);
+                    stream_vector<Stream>(output.z + at + piece,
+                                          reinterpret_cast<const T*>(&rz) + piece);
+                }
             } else {
                 store_wide(output.x + at, rx);
                 store_wide(output.y + at, ry);
@@ -156,26 +161,15 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     }
 }
 
-// How many of the count elements at `at` lie before its first 64-byte boundary (at most 16; 16
-// or count where no element starts one): the streaming paths store those plainly, so that no
-// cache line is written partly by plain and partly by non-temporal stores.
-template <class Element>
-[[nodiscard]] inline std::size_t elements_before_line(const Element* at,
-                                                      std::size_t count) noexcept {
-    std::size_t n = 0;
-    while (n < 64 / sizeof(float) && n < count &&
-           reinterpret_cast<std::uintptr_t>(at + n) % 64 != 0)
-        ++n;
-    return n;
-}
-
 // rotate_each_soa out of cache (float, AVX builds): from the first element where output.x starts
 // a cache line on (the first at most 15 plainly), the three output arrays are written with
-// non-temporal stores straight from the registers when each of them is on a line there (large
-// arrays usually start at the same offset into a page), plainly otherwise. 40 bytes of memory
-// traffic an element instead of 52, as for the array-of-structs form. Zen 4, 4M elements
-// (harness, medians of 21): 4.9-5.1 ms against 6.6 plain, GLM's array-of-structs loop 6.2-6.4
-// (AVX-512); 5.3-5.6 against 7.0-7.8, GLM 6.6-7.0 (x86-64-v3).
+// non-temporal stores straight from the registers: whole vectors where each array is aligned to
+// them there, 16-byte pieces where each is aligned to 16 bytes (every malloc'd float array, at
+// whatever offset into a line the heap put it), plainly otherwise. 40 bytes of memory traffic an
+// element instead of 52, as for the array-of-structs form. Zen 4, 4M elements (harness, medians
+// of 30, three runs): whole vectors 1.20-1.23 ns an element against 1.52-2.03 plain (AVX-512),
+// 1.12-1.26 against 1.68-1.84 (x86-64-v3); y and z 16 bytes off x's line, 16-byte pieces
+// 1.04-1.24 against 1.54-1.75 (AVX-512), 1.27-1.33 against 1.58-1.70 (x86-64-v3).
 #if defined(__AVX__)
 [[gnu::noinline]] inline void rotate_each_soa_streaming(soa_quaternions<const float> q,
                                                         soa_points<const float> p,
@@ -187,17 +181,21 @@ template <class Element>
     const soa_quaternions<const float> q_rest{q.w + head, q.x + head, q.y + head, q.z + head, rest};
     const soa_points<const float> p_rest{p.x + head, p.y + head, p.z + head, rest};
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
-    auto on_line = [](const float* a) noexcept {
-        return reinterpret_cast<std::uintptr_t>(a) % 64 == 0;
+    auto aligned = [&](std::size_t bytes) noexcept {
+        return (reinterpret_cast<std::uintptr_t>(output_rest.x) |
+                reinterpret_cast<std::uintptr_t>(output_rest.y) |
+                reinterpret_cast<std::uintptr_t>(output_rest.z)) %
+                   bytes ==
+               0;
     };
-    if constexpr (stream_width == wide_count<float>) {
-        if (on_line(output_rest.x) && on_line(output_rest.y) && on_line(output_rest.z)) {
-            rotate_each_soa<true>(q_rest, p_rest, output_rest);
-            stream_fence();
-            return;
-        }
+    if (aligned(sizeof(float) * stream_width)) {
+        rotate_each_soa<stream_width>(q_rest, p_rest, output_rest);
+    } else if (aligned(4 * sizeof(float))) {
+        rotate_each_soa<4>(q_rest, p_rest, output_rest);
+    } else {
+        rotate_each_soa(q_rest, p_rest, output_rest);
     }
-    rotate_each_soa(q_rest, p_rest, output_rest);
+    stream_fence();
 }
 #endif
 

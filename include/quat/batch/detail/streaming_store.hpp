@@ -101,6 +101,19 @@ inline void stream_floats(float* to, const float* from, std::size_t n) noexcept 
     for (; i < n; ++i) to[i] = from[i];
 }
 
+// How many of the count elements at `at` lie before its first 64-byte boundary (at most 16; 16
+// or count where no element starts one): the streaming paths store those plainly, so that no
+// cache line is written partly by plain and partly by non-temporal stores.
+template <class Element>
+[[nodiscard]] inline std::size_t elements_before_line(const Element* at,
+                                                      std::size_t count) noexcept {
+    std::size_t n = 0;
+    while (n < 64 / sizeof(float) && n < count &&
+           reinterpret_cast<std::uintptr_t>(at + n) % 64 != 0)
+        ++n;
+    return n;
+}
+
 // Makes the streamed stores visible before returning, like ordinary stores.
 inline void stream_fence() noexcept {
 #if defined(__SSE__) || defined(_M_X64)

@@ -95,10 +95,7 @@ void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
     static_assert(sizeof(vec3<float>) == 3 * sizeof(float),
                   "vec3<float> must be three packed floats");
     static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
-    std::size_t start = 0;
-    while (start < 16 && start < count &&
-           reinterpret_cast<std::uintptr_t>(output + start) % 64 != 0)
-        ++start;
+    std::size_t start = elements_before_line(output, count);
     transform_block<Translate>(m, t, input, output, start);
     if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
         start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
@@ -238,10 +235,7 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<
             // Out of cache: move a block into local arrays, then stream them (as for AoS), from a
             // 64-byte boundary of output.x on (usually that of y and z too: large arrays start at
             // the same offset into a page), so that the blocks cover whole cache lines.
-            std::size_t head = 0;
-            while (head < 16 && head < input.count &&
-                   reinterpret_cast<std::uintptr_t>(output.x + head) % 64 != 0)
-                ++head;
+            const std::size_t head = elements_before_line(output.x, input.count);
             transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y,
                                        output.z, head);
             alignas(64) float rx[batch_block];
