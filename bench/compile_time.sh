@@ -2,7 +2,15 @@
 # Compile time of one translation unit using the common rotation operations, written once with quat
 # and once with GLM (glm/glm.hpp + glm/gtc/quaternion.hpp); prints both and the ratio quat / GLM.
 # Usage: bench/compile_time.sh [compiler] [runs]   (defaults: g++, 7 runs; the median counts)
+#        bench/compile_time.sh --instructions [compiler]
+# The second form counts the instructions the compiler proper executes (valgrind's callgrind,
+# one run each): deterministic where wall times on a shared machine swing by a fifth.
 set -euo pipefail
+instructions=false
+if [ "${1:-}" = --instructions ]; then
+    instructions=true
+    shift
+fi
 cxx=${1:-g++}
 runs=${2:-7}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -57,7 +65,27 @@ measure() {  # measure FLAGS: prints "quat_median glm_median"
     median() { printf '%s\n' "$@" | sort -g | awk '{a[NR] = $1} END {print (NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2)}'; }
     echo "$(median "${quat_times[@]}") $(median "${glm_times[@]}")"
 }
+count() {  # count FLAGS UNIT: millions of instructions of the compiler proper (cc1plus, clang -cc1)
+    # shellcheck disable=SC2054  # the commas belong to -wrapper's one argument
+    local run=("$cxx" -wrapper valgrind,--tool=callgrind,--callgrind-out-file=/dev/null)
+    # clang compiles in its driver's process (-fintegrated-cc1), which takes no -wrapper.
+    if "$cxx" --version | grep -q clang; then
+        run=(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$cxx")
+    fi
+    # shellcheck disable=SC2086
+    "${run[@]}" -std=c++17 $1 -I"$root/include" -S "$work/with_$2.cpp" -o "$work/out.s" 2>&1 |
+        awk '/Collected :/ {printf "%.0f\n", $NF / 1e6; exit}'
+}
 echo "compiler: $("$cxx" --version | head -1)"
+if $instructions; then
+    for flags in "-O2" "-fsyntax-only"; do
+        quat_count=$(count "$flags" quat)
+        glm_count=$(count "$flags" glm)
+        echo "$flags: quat TU ${quat_count}M instructions, GLM TU ${glm_count}M (callgrind," \
+            "-std=c++17), ratio quat / GLM $(echo "$quat_count $glm_count" | awk '{printf "%.2f", $1 / $2}')"
+    done
+    exit 0
+fi
 for flags in "-O2" "-fsyntax-only"; do
     read -r quat_time glm_time <<<"$(measure "$flags")"
     echo "$flags: quat TU ${quat_time} s, GLM TU ${glm_time} s (median of $runs, alternated, -std=c++17)," \

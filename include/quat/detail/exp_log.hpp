@@ -4,7 +4,6 @@
 #ifndef QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
 #define QUAT_DETAIL_EXP_LOG_HPP_INCLUDED
 
-#include <cmath>
 #include <type_traits>
 
 #include "math.hpp"
@@ -97,7 +96,7 @@ template <class T>
             return __builtin_expl(x);
         }
     } else {
-        using std::exp;
+        using adl_only::exp;
         return exp(x);
     }
 }
@@ -117,7 +116,7 @@ template <class T>
             return __builtin_logl(x);
         }
     } else {
-        using std::log;
+        using adl_only::log;
         return log(x);
     }
 }

@@ -49,7 +49,7 @@ using float8 = float __attribute__((vector_size(32)));
 template <bool Stream>
 inline void put4(float* p, float4 v) noexcept {
     if constexpr (Stream) {
-        _mm_stream_ps(p, v);
+        stream_vector<4>(p, reinterpret_cast<const float*>(&v));
     } else {
         store4(p, v);
     }

@@ -1,5 +1,5 @@
 // Non-temporal stores for the batch functions, and the last-level cache size that decides when they
-// pay: the one place quat uses x86 intrinsics and cpuid.
+// pay: the one place quat uses x86 non-temporal stores and cpuid.
 #ifndef QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_STREAMING_STORE_HPP_INCLUDED
 
@@ -8,9 +8,6 @@
 #include <cstring>
 #include <type_traits>
 
-#if defined(__SSE__) || defined(_M_X64)
-#include <xmmintrin.h>
-#endif
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
 #include <cpuid.h>
 #elif defined(_MSC_VER) && (defined(_M_X64) || defined(_M_IX86))
@@ -24,8 +21,14 @@ namespace quat {
 namespace detail {
 
 // True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
-#if defined(__SSE__) || defined(_M_X64)
+// The stores are the compilers' builtins, not <xmmintrin.h>'s functions, whose header took g++ 12
+// a third as long to parse as the rest of quat.hpp.
+#if defined(__SSE__) && defined(__has_builtin)
+#if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps)
 inline constexpr bool has_streaming_stores = true;
+#else
+inline constexpr bool has_streaming_stores = false;
+#endif
 #else
 inline constexpr bool has_streaming_stores = false;
 #endif
@@ -51,41 +54,41 @@ inline constexpr std::size_t stream_width = 4;
 #endif
 
 // One non-temporal store of Width floats (4, or up to stream_width) from `from` (any alignment) to
-// `to` (aligned to the store's width) where the target has them (x86 SSE), a plain copy elsewhere.
-// clang spells every width with one builtin, g++ has one per width.
+// `to` (aligned to the store's width) where the target has them (has_streaming_stores), a plain
+// copy elsewhere. clang spells every width with one builtin, g++ has one per width.
 template <std::size_t Width = stream_width>
 inline void stream_vector(float* to, const float* from) noexcept {
     static_assert(Width == 4 || ((Width == 8 || Width == 16) && Width <= stream_width),
                   "a non-temporal store the build has");
-#if defined(__SSE__) || defined(_M_X64)
-    if constexpr (Width == 4) {
-        _mm_stream_ps(to, _mm_loadu_ps(from));
-    } else {
-#if defined(__has_builtin)
+    if constexpr (has_streaming_stores) {
         // Spelled out per width: g++ 12 drops a vector_size that depends on a template parameter.
+        using vector4 = float __attribute__((vector_size(16)));
         using vector8 = float __attribute__((vector_size(32)));
         using vector16 = float __attribute__((vector_size(64)));
-        using vector = std::conditional_t<Width == 16, vector16, vector8>;
+        using vector = std::conditional_t<Width == 16, vector16,
+                                          std::conditional_t<Width == 8, vector8, vector4>>;
         vector v;
         std::memcpy(&v, from, sizeof v);
+#if defined(__has_builtin)
 #if __has_builtin(__builtin_nontemporal_store)
         __builtin_nontemporal_store(v, reinterpret_cast<vector*>(to));
-#else
+#elif __has_builtin(__builtin_ia32_movntps)
         if constexpr (Width == 16) {
 #if defined(__AVX512F__) && __has_builtin(__builtin_ia32_movntps512)
             __builtin_ia32_movntps512(to, v);
 #endif
-        } else {
+        } else if constexpr (Width == 8) {
 #if defined(__AVX__) && __has_builtin(__builtin_ia32_movntps256)
             __builtin_ia32_movntps256(to, v);
 #endif
+        } else {
+            __builtin_ia32_movntps(to, v);
         }
 #endif
 #endif
+    } else {
+        std::memcpy(to, from, Width * sizeof(float));
     }
-#else
-    std::memcpy(to, from, Width * sizeof(float));
-#endif
 }
 
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
@@ -93,11 +96,11 @@ inline void stream_vector(float* to, const float* from) noexcept {
 // widest non-temporal stores of the build.
 inline void stream_floats(float* to, const float* from, std::size_t n) noexcept {
     std::size_t i = 0;
-#if defined(__SSE__) || defined(_M_X64)
-    constexpr std::size_t bytes = sizeof(float) * stream_width;
-    for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
-    for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
-#endif
+    if constexpr (has_streaming_stores) {
+        constexpr std::size_t bytes = sizeof(float) * stream_width;
+        for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
+        for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
+    }
     for (; i < n; ++i) to[i] = from[i];
 }
 
@@ -116,8 +119,10 @@ template <class Element>
 
 // Makes the streamed stores visible before returning, like ordinary stores.
 inline void stream_fence() noexcept {
-#if defined(__SSE__) || defined(_M_X64)
-    _mm_sfence();
+#if defined(__SSE__) && defined(__has_builtin)
+#if __has_builtin(__builtin_ia32_sfence)
+    __builtin_ia32_sfence();
+#endif
 #endif
 }
 
