@@ -250,8 +250,8 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
           "[elementwise]") {
     // The streaming paths (called directly here, whatever this machine's threshold) store plainly
     // up to a 64-byte boundary of the output, then stream; the struct-of-arrays one streams whole
-    // vectors where all three output arrays are aligned to them there, 16-byte pieces where they
-    // are aligned to 16 bytes, and stores plainly otherwise.
+    // vectors where all three output arrays start a line there, in AVX-512 builds 16-byte pieces
+    // where they are aligned to 16 bytes, and stores plainly otherwise.
     quat::test::random_rotations random;
     const std::vector<quaternion<float>> q = random_rotations<float>(random, 3000);
     const std::vector<vec3<float>> p = random_points<float>(random, 3000);
@@ -272,7 +272,8 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
                     ++mismatches;
             CHECK(mismatches == 0);
             CHECK(out[count].x == sentinel);  // nothing written past the end
-            // y and z as far from a line as x, 4 floats further (16-byte pieces) or 1 (plain):
+            // y and z as far from a line as x, 4 floats further (16-byte pieces with AVX-512) or
+            // 1 (plain):
             // the three output arrays carved from one buffer at 64-byte boundaries.
             for (const std::size_t skew : {0u, 4u, 1u}) {
                 constexpr std::size_t stride = 3200;  // floats: 200 cache lines

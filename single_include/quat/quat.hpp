@@ -3354,8 +3354,8 @@ inline namespace isa_generic {
 namespace detail {
 
 // True where stream_floats writes past the caches (x86 with SSE); elsewhere it is a plain copy.
-// The stores are the compilers' builtins, not <xmmintrin.h>'s functions, whose header took g++ 12
-// a third as long to parse as the rest of quat.hpp.
+// The stores are the compilers' builtins, not <xmmintrin.h>'s functions: that header added 102
+// million instructions (12 %) to g++ 12's parse of bench/compile_time.sh's unit.
 #if defined(__SSE__) && defined(__has_builtin)
 #if __has_builtin(__builtin_nontemporal_store) || __has_builtin(__builtin_ia32_movntps)
 inline constexpr bool has_streaming_stores = true;
@@ -4867,13 +4867,17 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
 
 // rotate_each_soa out of cache (float, AVX builds): from the first element where output.x starts
 // a cache line on (the first at most 15 plainly), the three output arrays are written with
-// non-temporal stores straight from the registers: whole vectors where each array is aligned to
-// them there, 16-byte pieces where each is aligned to 16 bytes (every malloc'd float array, at
-// whatever offset into a line the heap put it), plainly otherwise. 40 bytes of memory traffic an
-// element instead of 52, as for the array-of-structs form. Zen 4, 4M elements (harness, medians
-// of 30, three runs): whole vectors 1.20-1.23 ns an element against 1.52-2.03 plain (AVX-512),
-// 1.12-1.26 against 1.68-1.84 (x86-64-v3); y and z 16 bytes off x's line, 16-byte pieces
-// 1.04-1.24 against 1.54-1.75 (AVX-512), 1.27-1.33 against 1.58-1.70 (x86-64-v3).
+// non-temporal stores straight from the registers where each of them starts a line there; in
+// AVX-512 builds also where each is only 16-byte aligned (every malloc'd float array, at whatever
+// offset into a line the heap put it), in 16-byte pieces; plainly otherwise. 40 bytes of memory
+// traffic an element instead of 52, as for the array-of-structs form. Zen 4, 4M elements
+// (harness, medians of 30, three runs): whole vectors 1.20-1.23 ns an element against 1.52-2.03
+// plain (AVX-512), 1.12-1.26 against 1.68-1.84 (x86-64-v3); y and z 16 bytes off x's line,
+// 16-byte pieces 1.04-1.24 against 1.54-1.75 (AVX-512). Not in AVX2 builds: there the pieces ran
+// slower than plain stores where an output array lies a few dozen bytes past an input array
+// modulo 4096 (y 48 and z 96 bytes past: 2.07 ns against 1.58), since a later load that 4K-aliases
+// a pending non-temporal store waits for it, and quat_bench's heap arrays took 3.97 ns against
+// 1.37 for the array of structs.
 #if defined(__AVX__)
 [[gnu::noinline]] inline void rotate_each_soa_streaming(soa_quaternions<const float> q,
                                                         soa_points<const float> p,
@@ -4892,9 +4896,9 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
                    bytes ==
                0;
     };
-    if (aligned(sizeof(float) * stream_width)) {
+    if (aligned(64)) {
         rotate_each_soa<stream_width>(q_rest, p_rest, output_rest);
-    } else if (aligned(4 * sizeof(float))) {
+    } else if (stream_width == 16 && aligned(4 * sizeof(float))) {
         rotate_each_soa<4>(q_rest, p_rest, output_rest);
     } else {
         rotate_each_soa(q_rest, p_rest, output_rest);
