@@ -272,9 +272,8 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
                     ++mismatches;
             CHECK(mismatches == 0);
             CHECK(out[count].x == sentinel);  // nothing written past the end
-            // y and z as far from a line as x, 4 floats further (16-byte pieces with AVX-512) or
-            // 1 (plain):
-            // the three output arrays carved from one buffer at 64-byte boundaries.
+            // y and z as far from a line as x, 4 floats further (16-byte pieces with AVX-512) or 1
+            // (plain): the three output arrays carved from one buffer at 64-byte boundaries.
             for (const std::size_t skew : {0u, 4u, 1u}) {
                 constexpr std::size_t stride = 3200;  // floats: 200 cache lines
                 std::vector<float> buffer_soa(3 * stride + 16, sentinel);

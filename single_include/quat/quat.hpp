@@ -3012,7 +3012,6 @@ template <class T>
 #define QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
-#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <utility>
@@ -3424,6 +3423,11 @@ inline void stream_vector(float* to, const float* from) noexcept {
     }
 }
 
+// Whether p is a multiple of `bytes` (a power of two): the alignment every streaming path checks.
+[[nodiscard]] inline bool is_aligned(const void* p, std::size_t bytes) noexcept {
+    return reinterpret_cast<std::uintptr_t>(p) % bytes == 0;
+}
+
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
 // stores elsewhere: plain stores up to the first address aligned to the store's width, then the
 // widest non-temporal stores of the build.
@@ -3431,7 +3435,7 @@ inline void stream_floats(float* to, const float* from, std::size_t n) noexcept 
     std::size_t i = 0;
     if constexpr (has_streaming_stores) {
         constexpr std::size_t bytes = sizeof(float) * stream_width;
-        for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
+        for (; i < n && !is_aligned(to + i, bytes); ++i) to[i] = from[i];
         for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
     }
     for (; i < n; ++i) to[i] = from[i];
@@ -3444,9 +3448,7 @@ template <class Element>
 [[nodiscard]] inline std::size_t elements_before_line(const Element* at,
                                                       std::size_t count) noexcept {
     std::size_t n = 0;
-    while (n < 64 / sizeof(float) && n < count &&
-           reinterpret_cast<std::uintptr_t>(at + n) % 64 != 0)
-        ++n;
+    while (n < 64 / sizeof(float) && n < count && !is_aligned(at + n, 64)) ++n;
     return n;
 }
 
@@ -4890,11 +4892,8 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     const soa_points<const float> p_rest{p.x + head, p.y + head, p.z + head, rest};
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
     auto aligned = [&](std::size_t bytes) noexcept {
-        return (reinterpret_cast<std::uintptr_t>(output_rest.x) |
-                reinterpret_cast<std::uintptr_t>(output_rest.y) |
-                reinterpret_cast<std::uintptr_t>(output_rest.z)) %
-                   bytes ==
-               0;
+        return is_aligned(output_rest.x, bytes) && is_aligned(output_rest.y, bytes) &&
+               is_aligned(output_rest.z, bytes);
     };
     if (aligned(64)) {
         rotate_each_soa<stream_width>(q_rest, p_rest, output_rest);
@@ -4975,7 +4974,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
                                                     std::size_t count) noexcept {
     std::size_t done = elements_before_line(output, count);
     rotate_each_loop(rotations, points, output, done);
-    if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
+    if (is_aligned(output + done, 64))
         done +=
             rotate_each_kernels<true>(rotations + done, points + done, output + done, count - done);
     rotate_each_loop(rotations + done, points + done, output + done, count - done);
@@ -4995,7 +4994,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
                                                      std::size_t count) noexcept {
     std::size_t done = elements_before_line(output, count);
     compose_each_loop(a, b, output, done);
-    if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
+    if (is_aligned(output + done, 64))
         done += compose_each_kernels<true>(a + done, b + done, output + done, count - done);
     compose_each_loop(a, b, output, count, done);
     stream_fence();
@@ -5836,7 +5835,6 @@ template <class Value, class Chains = chain_values<Value>>
 #define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 
 // ---- begin quat/batch/detail/interleaved_points_neon.hpp ----
@@ -6027,7 +6025,7 @@ void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
     static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
     std::size_t start = elements_before_line(output, count);
     transform_block<Translate>(m, t, input, output, start);
-    if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
+    if (is_aligned(output + start, 16))
         start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
                                                                &output[start].x, count - start);
     alignas(64) vec3<float> buffer[batch_block];

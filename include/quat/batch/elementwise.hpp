@@ -34,7 +34,6 @@
 #define QUAT_BATCH_ELEMENTWISE_HPP_INCLUDED
 
 #include <cstddef>
-#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <utility>
@@ -186,11 +185,8 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     const soa_points<const float> p_rest{p.x + head, p.y + head, p.z + head, rest};
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
     auto aligned = [&](std::size_t bytes) noexcept {
-        return (reinterpret_cast<std::uintptr_t>(output_rest.x) |
-                reinterpret_cast<std::uintptr_t>(output_rest.y) |
-                reinterpret_cast<std::uintptr_t>(output_rest.z)) %
-                   bytes ==
-               0;
+        return is_aligned(output_rest.x, bytes) && is_aligned(output_rest.y, bytes) &&
+               is_aligned(output_rest.z, bytes);
     };
     if (aligned(64)) {
         rotate_each_soa<stream_width>(q_rest, p_rest, output_rest);
@@ -271,7 +267,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
                                                     std::size_t count) noexcept {
     std::size_t done = elements_before_line(output, count);
     rotate_each_loop(rotations, points, output, done);
-    if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
+    if (is_aligned(output + done, 64))
         done +=
             rotate_each_kernels<true>(rotations + done, points + done, output + done, count - done);
     rotate_each_loop(rotations + done, points + done, output + done, count - done);
@@ -291,7 +287,7 @@ void rotate_each_blocks(const quaternion<T>* rotations, const vec3<T>* points, v
                                                      std::size_t count) noexcept {
     std::size_t done = elements_before_line(output, count);
     compose_each_loop(a, b, output, done);
-    if (reinterpret_cast<std::uintptr_t>(output + done) % 64 == 0)
+    if (is_aligned(output + done, 64))
         done += compose_each_kernels<true>(a + done, b + done, output + done, count - done);
     compose_each_loop(a, b, output, count, done);
     stream_fence();

@@ -91,6 +91,11 @@ inline void stream_vector(float* to, const float* from) noexcept {
     }
 }
 
+// Whether p is a multiple of `bytes` (a power of two): the alignment every streaming path checks.
+[[nodiscard]] inline bool is_aligned(const void* p, std::size_t bytes) noexcept {
+    return reinterpret_cast<std::uintptr_t>(p) % bytes == 0;
+}
+
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
 // stores elsewhere: plain stores up to the first address aligned to the store's width, then the
 // widest non-temporal stores of the build.
@@ -98,7 +103,7 @@ inline void stream_floats(float* to, const float* from, std::size_t n) noexcept 
     std::size_t i = 0;
     if constexpr (has_streaming_stores) {
         constexpr std::size_t bytes = sizeof(float) * stream_width;
-        for (; i < n && reinterpret_cast<std::uintptr_t>(to + i) % bytes != 0; ++i) to[i] = from[i];
+        for (; i < n && !is_aligned(to + i, bytes); ++i) to[i] = from[i];
         for (; i + stream_width <= n; i += stream_width) stream_vector(to + i, from + i);
     }
     for (; i < n; ++i) to[i] = from[i];
@@ -111,9 +116,7 @@ template <class Element>
 [[nodiscard]] inline std::size_t elements_before_line(const Element* at,
                                                       std::size_t count) noexcept {
     std::size_t n = 0;
-    while (n < 64 / sizeof(float) && n < count &&
-           reinterpret_cast<std::uintptr_t>(at + n) % 64 != 0)
-        ++n;
+    while (n < 64 / sizeof(float) && n < count && !is_aligned(at + n, 64)) ++n;
     return n;
 }
 

@@ -8,7 +8,6 @@
 #define QUAT_BATCH_DETAIL_TRANSFORM_POINTS_HPP_INCLUDED
 
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 
 #include "../../rotation_matrix.hpp"
@@ -97,7 +96,7 @@ void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
     static_assert(batch_block % 16 == 0, "blocks of whole cache lines");
     std::size_t start = elements_before_line(output, count);
     transform_block<Translate>(m, t, input, output, start);
-    if (reinterpret_cast<std::uintptr_t>(output + start) % 16 == 0)
+    if (is_aligned(output + start, 16))
         start += transform_interleaved_floats<Translate, true>(m, t, &input[start].x,
                                                                &output[start].x, count - start);
     alignas(64) vec3<float> buffer[batch_block];
