@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -250,8 +251,8 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
           "[elementwise]") {
     // The streaming paths (called directly here, whatever this machine's threshold) store plainly
     // up to a 64-byte boundary of the output, then stream; the struct-of-arrays one streams whole
-    // vectors where all three output arrays start a line there, in AVX-512 builds 16-byte pieces
-    // where they are aligned to 16 bytes, and stores plainly otherwise.
+    // vectors where all three output arrays are aligned to one, 16-byte pieces where they are
+    // aligned to 16 bytes, and stores plainly otherwise (the test below sets which way it sweeps).
     quat::test::random_rotations random;
     const std::vector<quaternion<float>> q = random_rotations<float>(random, 3000);
     const std::vector<vec3<float>> p = random_points<float>(random, 3000);
@@ -296,6 +297,90 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
                 CHECK((soa_out.x[count] == sentinel && soa_out.y[count] == sentinel &&
                        soa_out.z[count] == sentinel));
             }
+        }
+    }
+}
+#endif
+
+#if defined(__AVX__)
+// The ten arrays of a struct-of-arrays rotate_each (w, x, y, z, px, py, pz, then the outputs), each
+// at a byte offset from a 4096-byte boundary, 16 KiB apart in one buffer; an output given as -1 - k
+// is input array k (in place).
+struct page_layout {
+    const char* name;
+    std::ptrdiff_t offsets[10];
+    quat::detail::sweep way;
+};
+
+TEST_CASE("streamed struct-of-arrays rotate_each sweeps upward, downward or neither, as the "
+          "arrays' offsets modulo 4096 allow, with the same results",
+          "[elementwise]") {
+    using quat::detail::sweep;
+    // Each layout gives the same answer at both builds' reach: 256 bytes (AVX2), 512 (AVX-512).
+    const page_layout layouts[] = {
+        {"outputs 16 to 144 bytes past the inputs: downward",
+         {0, 16, 32, 48, 64, 80, 96, 112, 128, 144},
+         sweep::downward},
+        {"outputs 16 to 144 bytes before the inputs: upward",
+         {48, 64, 80, 96, 112, 128, 144, 0, 16, 32},
+         sweep::upward},
+        {"outputs line-aligned, 64 bytes past the inputs: downward, whole vectors",
+         {0, 0, 0, 0, 0, 0, 0, 64, 64, 64},
+         sweep::downward},
+        {"outputs line-aligned, 1 KiB or more from the inputs: upward, whole vectors",
+         {0, 0, 0, 0, 0, 0, 0, 1024, 2048, 3072},
+         sweep::upward},
+        {"an output 128 bytes past one input and 128 before another: neither, plain stores",
+         {0, 0, 0, 0, 256, 256, 256, 128, 128, 128},
+         sweep::neither},
+        {"in place, the arrays 512 bytes or more apart: upward",
+         {512, 1536, 2560, 3584, 0, 1024, 2048, -5, -6, -7},
+         sweep::upward},
+        {"in place, w 64 bytes before output x: downward",
+         {4032, 1536, 2560, 3584, 0, 1024, 2048, -5, -6, -7},
+         sweep::downward},
+    };
+    quat::test::random_rotations random;
+    constexpr std::size_t n = 2999, region = 4096;  // floats: 16 KiB
+    const std::vector<quaternion<float>> q = random_rotations<float>(random, n);
+    const std::vector<vec3<float>> p = random_points<float>(random, n);
+    const float sentinel = 9;
+    for (const page_layout& layout : layouts) {
+        for (const std::size_t count : {0u, 1u, 15u, 16u, 17u, 33u, 257u, 2999u}) {
+            INFO(layout.name << ", " << count << " elements");
+            std::vector<float> buffer(11 * region, sentinel);
+            const auto address = reinterpret_cast<std::uintptr_t>(buffer.data());
+            float* const base = buffer.data() + (4096 - address % 4096) % 4096 / sizeof(float);
+            REQUIRE(quat::detail::is_aligned(base, 4096));
+            float* arrays[10];
+            for (std::size_t k = 0; k < 10; ++k) {
+                const std::ptrdiff_t at = layout.offsets[k];
+                arrays[k] = at < 0 ? arrays[-1 - at]
+                                   : base + k * region + static_cast<std::size_t>(at) / 4;
+            }
+            for (std::size_t i = 0; i < count; ++i) {
+                arrays[0][i] = q[i].w, arrays[1][i] = q[i].x;
+                arrays[2][i] = q[i].y, arrays[3][i] = q[i].z;
+                arrays[4][i] = p[i].x, arrays[5][i] = p[i].y, arrays[6][i] = p[i].z;
+            }
+            const float* const inputs[] = {arrays[0], arrays[1], arrays[2], arrays[3],
+                                           arrays[4], arrays[5], arrays[6]};
+            const float* const outputs[] = {arrays[7], arrays[8], arrays[9]};
+            CHECK(quat::detail::sweep_clear_of_aliasing(inputs, outputs, 256) == layout.way);
+            CHECK(quat::detail::sweep_clear_of_aliasing(inputs, outputs, 512) == layout.way);
+            const soa_points<float> out{arrays[7], arrays[8], arrays[9], count};
+            quat::detail::rotate_each_soa_streaming(
+                soa_quaternions<const float>{arrays[0], arrays[1], arrays[2], arrays[3], count},
+                soa_points<const float>{arrays[4], arrays[5], arrays[6], count}, out);
+            std::size_t mismatches = 0;
+            for (std::size_t i = 0; i < count; ++i)
+                if (!(relative_error(vec3<float>{out.x[i], out.y[i], out.z[i]},
+                                     quat::rotate(q[i], p[i]),
+                                     p[i]) <= rotate_each_vs_rotate<float> / eps<float>))
+                    ++mismatches;
+            CHECK(mismatches == 0);
+            CHECK((out.x[count] == sentinel && out.y[count] == sentinel &&
+                   out.z[count] == sentinel));  // nothing written past the end
         }
     }
 }

@@ -3428,6 +3428,34 @@ inline void stream_vector(float* to, const float* from) noexcept {
     return reinterpret_cast<std::uintptr_t>(p) % bytes == 0;
 }
 
+// Which way a loop that streams its outputs keeps its loads off the 4K aliases of its pending
+// non-temporal stores: a load whose address matches such a store's in the low 12 bits waits for
+// it. Going upward, the loads run ahead of the stores, so an output array that lies less than
+// `reach` bytes past an input array, modulo 4096, keeps putting loads there; going downward, one
+// that lies as far before it. An output array that is an input array (distance 0) is safe.
+// Zen 4, struct-of-arrays rotate_each, 4M elements, 16-byte pieces, all outputs the same distance
+// past all inputs (harness, medians of 15 interleaved calls): x86-64-v3, 64 to 192 bytes past
+// 2.9-7.1 ns an element upward against 1.3-1.5 downward and 1.6-2.0 plainly, and the mirror image
+// for distances before; AVX-512, 128 to 384 bytes past 1.8-6.9 against 1.1-1.3 and 1.6-2.3.
+enum class sweep { upward, downward, neither };
+
+template <std::size_t Inputs, std::size_t Outputs>
+[[nodiscard]] sweep sweep_clear_of_aliasing(const float* const (&inputs)[Inputs],
+                                            const float* const (&outputs)[Outputs],
+                                            std::uintptr_t reach) noexcept {
+    constexpr std::uintptr_t page = 4096;
+    bool upward = true, downward = true;
+    for (const float* input : inputs) {
+        for (const float* output : outputs) {
+            const std::uintptr_t past = (reinterpret_cast<std::uintptr_t>(output) -
+                                         reinterpret_cast<std::uintptr_t>(input)) % page;
+            upward = upward && (past == 0 || past >= reach);
+            downward = downward && (past == 0 || page - past >= reach);
+        }
+    }
+    return upward ? sweep::upward : downward ? sweep::downward : sweep::neither;
+}
+
 // Copies n floats to `to` with non-temporal stores where the target has them (x86 SSE), plain
 // stores elsewhere: plain stores up to the first address aligned to the store's width, then the
 // widest non-temporal stores of the build.
@@ -4803,7 +4831,9 @@ void rotate_each_loop(const quaternion<T>* rotations, const vec3<T>* points, vec
 
 // With Stream, the floats per non-temporal store (the vector's width, or 4; each output array
 // aligned to that many floats), the whole vectors are stored non-temporally; 0 stores plainly.
-template <std::size_t Stream = 0, class T>
+// Downward runs the whole vectors from the last to the first (streaming_store.hpp's sweep says
+// why).
+template <std::size_t Stream = 0, bool Downward = false, class T>
 void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
                      soa_points<T> output) noexcept {
     std::size_t done = 0;
@@ -4826,7 +4856,11 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
             V rx, ry, rz;
             rotate_factored_lanes(e.w, e.x, e.y, e.z, e.px, e.py, e.pz, rx, ry, rz);
             if constexpr (Stream != 0) {
-                for (std::size_t piece = 0; piece < lanes; piece += Stream) {
+                // Each line is filled in the sweep's direction: a downward sweep that wrote its
+                // pieces upward ran 4.0-4.2 ns an element instead of 1.0-1.1 (AVX-512, outputs
+                // 16 bytes off the inputs modulo 4096, which the line then straddles).
+                for (std::size_t step = 0; step < lanes; step += Stream) {
+                    const std::size_t piece = Downward ? lanes - Stream - step : step;
                     stream_vector<Stream>(output.x + at + piece,
                                           reinterpret_cast<const T*>(&rx) + piece);
                     stream_vector<Stream>(output.y + at + piece,
@@ -4842,13 +4876,24 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
         };
         const std::size_t whole = p.count - p.count % lanes;  // as in detail::transform_block
         if (whole != 0) {
-            element current = load(0);
-            for (; done + lanes < whole; done += lanes) {
-                const element next = load(done + lanes);
+            if constexpr (Downward) {
+                std::size_t at = whole - lanes;
+                element current = load(at);
+                for (; at != 0; at -= lanes) {
+                    const element next = load(at - lanes);
+                    turn(current, at);
+                    current = next;
+                }
+                turn(current, 0);
+            } else {
+                element current = load(0);
+                for (; done + lanes < whole; done += lanes) {
+                    const element next = load(done + lanes);
+                    turn(current, done);
+                    current = next;
+                }
                 turn(current, done);
-                current = next;
             }
-            turn(current, done);
             done = whole;
         }
     }
@@ -4869,18 +4914,27 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
 
 // rotate_each_soa out of cache (float, AVX builds): from the first element where output.x starts
 // a cache line on (the first at most 15 plainly), the three output arrays are written with
-// non-temporal stores straight from the registers where each of them starts a line there; in
-// AVX-512 builds also where each is only 16-byte aligned (every malloc'd float array, at whatever
-// offset into a line the heap put it), in 16-byte pieces; plainly otherwise. 40 bytes of memory
-// traffic an element instead of 52, as for the array-of-structs form. Zen 4, 4M elements
-// (harness, medians of 30, three runs): whole vectors 1.20-1.23 ns an element against 1.52-2.03
-// plain (AVX-512), 1.12-1.26 against 1.68-1.84 (x86-64-v3); y and z 16 bytes off x's line,
-// 16-byte pieces 1.04-1.24 against 1.54-1.75 (AVX-512). Not in AVX2 builds: there the pieces ran
-// slower than plain stores where an output array lies a few dozen bytes past an input array
-// modulo 4096 (y 48 and z 96 bytes past: 2.07 ns against 1.58), since a later load that 4K-aliases
-// a pending non-temporal store waits for it, and quat_bench's heap arrays took 3.97 ns against
-// 1.37 for the array of structs.
+// non-temporal stores straight from the registers, whole vectors where each array is aligned to
+// one, else 16-byte pieces where each is 16-byte aligned (every malloc'd float array, at whatever
+// offset into a line the heap put it): 40 bytes of memory traffic an element instead of 52, as
+// for the array-of-structs form. The sweep runs upward or downward, whichever keeps its loads off
+// the stores' 4K aliases (streaming_store.hpp), and stores plainly where neither does; the reach
+// is eight steps of the loop, past which no offset measured slower. Zen 4, 4M elements (harness,
+// medians of 15 interleaved calls): arrays as consecutive heap blocks put them (inputs 16 bytes
+// apart modulo 4096, outputs after them) 1.36-1.56 ns an element downward against 2.08-2.21 plain
+// and 4.49-4.51 upward (x86-64-v3), 1.18-1.56 against 1.75-2.08 and 1.87-2.12 (AVX-512).
 #if defined(__AVX__)
+template <bool Downward>
+void rotate_each_soa_streamed(soa_quaternions<const float> q, soa_points<const float> p,
+                              soa_points<float> output) noexcept {
+    if (is_aligned(output.x, 4 * stream_width) && is_aligned(output.y, 4 * stream_width) &&
+        is_aligned(output.z, 4 * stream_width)) {
+        rotate_each_soa<stream_width, Downward>(q, p, output);
+    } else {
+        rotate_each_soa<4, Downward>(q, p, output);
+    }
+}
+
 [[gnu::noinline]] inline void rotate_each_soa_streaming(soa_quaternions<const float> q,
                                                         soa_points<const float> p,
                                                         soa_points<float> output) noexcept {
@@ -4891,14 +4945,16 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     const soa_quaternions<const float> q_rest{q.w + head, q.x + head, q.y + head, q.z + head, rest};
     const soa_points<const float> p_rest{p.x + head, p.y + head, p.z + head, rest};
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
-    auto aligned = [&](std::size_t bytes) noexcept {
-        return is_aligned(output_rest.x, bytes) && is_aligned(output_rest.y, bytes) &&
-               is_aligned(output_rest.z, bytes);
-    };
-    if (aligned(64)) {
-        rotate_each_soa<stream_width>(q_rest, p_rest, output_rest);
-    } else if (stream_width == 16 && aligned(4 * sizeof(float))) {
-        rotate_each_soa<4>(q_rest, p_rest, output_rest);
+    const float* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
+    const float* const outputs[] = {output.x, output.y, output.z};
+    const bool pieces_fit = is_aligned(output.x, 16) && is_aligned(output.y, 16) &&
+                            is_aligned(output.z, 16);
+    const sweep way = pieces_fit ? sweep_clear_of_aliasing(inputs, outputs, 8 * 4 * wide_count<float>)
+                                 : sweep::neither;
+    if (way == sweep::upward) {
+        rotate_each_soa_streamed<false>(q_rest, p_rest, output_rest);
+    } else if (way == sweep::downward) {
+        rotate_each_soa_streamed<true>(q_rest, p_rest, output_rest);
     } else {
         rotate_each_soa(q_rest, p_rest, output_rest);
     }
