@@ -300,9 +300,7 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
         }
     }
 }
-#endif
 
-#if defined(__AVX__)
 // The ten arrays of a struct-of-arrays rotate_each (w, x, y, z, px, py, pz, then the outputs), each
 // at a byte offset from a 4096-byte boundary, 16 KiB apart in one buffer; an output given as -1 - k
 // is input array k (in place).
@@ -312,8 +310,7 @@ struct page_layout {
     quat::detail::sweep way;
 };
 
-TEST_CASE("streamed struct-of-arrays rotate_each sweeps upward, downward or neither, as the "
-          "arrays' offsets modulo 4096 allow, with the same results",
+TEST_CASE("streamed struct-of-arrays rotate_each sweeps as its arrays' page offsets allow",
           "[elementwise]") {
     using quat::detail::sweep;
     // Each layout gives the same answer at both builds' reach: 256 bytes (AVX2), 512 (AVX-512).
@@ -355,8 +352,8 @@ TEST_CASE("streamed struct-of-arrays rotate_each sweeps upward, downward or neit
             float* arrays[10];
             for (std::size_t k = 0; k < 10; ++k) {
                 const std::ptrdiff_t at = layout.offsets[k];
-                arrays[k] = at < 0 ? arrays[-1 - at]
-                                   : base + k * region + static_cast<std::size_t>(at) / 4;
+                arrays[k] =
+                    at < 0 ? arrays[-1 - at] : base + k * region + static_cast<std::size_t>(at) / 4;
             }
             for (std::size_t i = 0; i < count; ++i) {
                 arrays[0][i] = q[i].w, arrays[1][i] = q[i].x;

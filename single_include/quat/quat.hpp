@@ -3446,9 +3446,9 @@ template <std::size_t Inputs, std::size_t Outputs>
     constexpr std::uintptr_t page = 4096;
     bool upward = true, downward = true;
     for (const float* input : inputs) {
+        const auto from = reinterpret_cast<std::uintptr_t>(input);
         for (const float* output : outputs) {
-            const std::uintptr_t past = (reinterpret_cast<std::uintptr_t>(output) -
-                                         reinterpret_cast<std::uintptr_t>(input)) % page;
+            const std::uintptr_t past = (reinterpret_cast<std::uintptr_t>(output) - from) % page;
             upward = upward && (past == 0 || past >= reach);
             downward = downward && (past == 0 || page - past >= reach);
         }
@@ -4947,10 +4947,11 @@ void rotate_each_soa_streamed(soa_quaternions<const float> q, soa_points<const f
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
     const float* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
     const float* const outputs[] = {output.x, output.y, output.z};
-    const bool pieces_fit = is_aligned(output.x, 16) && is_aligned(output.y, 16) &&
-                            is_aligned(output.z, 16);
-    const sweep way = pieces_fit ? sweep_clear_of_aliasing(inputs, outputs, 8 * 4 * wide_count<float>)
-                                 : sweep::neither;
+    const bool pieces_fit =
+        is_aligned(output.x, 16) && is_aligned(output.y, 16) && is_aligned(output.z, 16);
+    const sweep way = pieces_fit
+                          ? sweep_clear_of_aliasing(inputs, outputs, 8 * 4 * wide_count<float>)
+                          : sweep::neither;
     if (way == sweep::upward) {
         rotate_each_soa_streamed<false>(q_rest, p_rest, output_rest);
     } else if (way == sweep::downward) {

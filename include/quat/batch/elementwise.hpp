@@ -212,10 +212,11 @@ void rotate_each_soa_streamed(soa_quaternions<const float> q, soa_points<const f
     const soa_points<float> output_rest{output.x + head, output.y + head, output.z + head, rest};
     const float* const inputs[] = {q.w, q.x, q.y, q.z, p.x, p.y, p.z};
     const float* const outputs[] = {output.x, output.y, output.z};
-    const bool pieces_fit = is_aligned(output.x, 16) && is_aligned(output.y, 16) &&
-                            is_aligned(output.z, 16);
-    const sweep way = pieces_fit ? sweep_clear_of_aliasing(inputs, outputs, 8 * 4 * wide_count<float>)
-                                 : sweep::neither;
+    const bool pieces_fit =
+        is_aligned(output.x, 16) && is_aligned(output.y, 16) && is_aligned(output.z, 16);
+    const sweep way = pieces_fit
+                          ? sweep_clear_of_aliasing(inputs, outputs, 8 * 4 * wide_count<float>)
+                          : sweep::neither;
     if (way == sweep::upward) {
         rotate_each_soa_streamed<false>(q_rest, p_rest, output_rest);
     } else if (way == sweep::downward) {

@@ -114,9 +114,9 @@ template <std::size_t Inputs, std::size_t Outputs>
     constexpr std::uintptr_t page = 4096;
     bool upward = true, downward = true;
     for (const float* input : inputs) {
+        const auto from = reinterpret_cast<std::uintptr_t>(input);
         for (const float* output : outputs) {
-            const std::uintptr_t past = (reinterpret_cast<std::uintptr_t>(output) -
-                                         reinterpret_cast<std::uintptr_t>(input)) % page;
+            const std::uintptr_t past = (reinterpret_cast<std::uintptr_t>(output) - from) % page;
             upward = upward && (past == 0 || past >= reach);
             downward = downward && (past == 0 || page - past >= reach);
         }
