@@ -91,10 +91,25 @@ struct component_arrays {
     }
 };
 
+/// How many i < n fail `holds(i)`: the out-of-cache tests check millions of elements, one CHECK
+/// for all of them.
+template <class Predicate>
+std::size_t failures(std::size_t n, Predicate holds) {
+    std::size_t failed = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!holds(i)) ++failed;
+    return failed;
+}
+
 /// Largest component difference of a and b in units of eps |v| (|v| at least 1).
 template <class T>
 T relative_error(const vec3<T>& a, const vec3<T>& b, const vec3<T>& v) {
     return max_difference(a, b) / (std::max(T(1), length(v)) * eps<T>);
+}
+
+/// Whether v is rotate(q, p) within rotate_each's tolerance.
+bool is_rotate(const vec3<float>& v, const quaternion<float>& q, const vec3<float>& p) {
+    return relative_error(v, quat::rotate(q, p), p) <= rotate_each_vs_rotate<float> / eps<float>;
 }
 
 }  // namespace
@@ -163,41 +178,27 @@ TEST_CASE(
     const std::vector<vec3<float>> p = random_points<float>(random, n);
     std::vector<vec3<float>> out(n);
     quat::rotate_each(q, p, out);
-    std::size_t mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(relative_error(out[i], quat::rotate(q[i], p[i]), p[i]) <=
-              rotate_each_vs_rotate<float> / eps<float>))
-            ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) { return is_rotate(out[i], q[i], p[i]); }) == 0);
     // In place (the plain prefix may differ in length, as above): rotate's results again.
     std::vector<vec3<float>> same = p;
     quat::rotate_each(q, same, same);
-    mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(relative_error(same[i], quat::rotate(q[i], p[i]), p[i]) <=
-              rotate_each_vs_rotate<float> / eps<float>))
-            ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) { return is_rotate(same[i], q[i], p[i]); }) == 0);
 
     const component_arrays<float> rotations(q);
     std::vector<float> px(n), py(n), pz(n), ox(n), oy(n), oz(n);
     for (std::size_t i = 0; i < n; ++i) px[i] = p[i].x, py[i] = p[i].y, pz[i] = p[i].z;
     quat::rotate_each(rotations.view(), soa_points<const float>{px.data(), py.data(), pz.data(), n},
                       soa_points<float>{ox.data(), oy.data(), oz.data(), n});
-    mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(relative_error(vec3<float>{ox[i], oy[i], oz[i]}, out[i], p[i]) <=
-              soa_vs_aos<float> / eps<float>))
-            ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) {
+              return relative_error(vec3<float>{ox[i], oy[i], oz[i]}, out[i], p[i]) <=
+                     soa_vs_aos<float> / eps<float>;
+          }) == 0);
     quat::rotate_each(rotations.view(), soa_points<const float>{px.data(), py.data(), pz.data(), n},
                       soa_points<float>{px.data(), py.data(), pz.data(), n});
-    mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(relative_error(vec3<float>{px[i], py[i], pz[i]}, out[i], p[i]) <=
-              soa_vs_aos<float> / eps<float>))
-            ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) {
+              return relative_error(vec3<float>{px[i], py[i], pz[i]}, out[i], p[i]) <=
+                     soa_vs_aos<float> / eps<float>;
+          }) == 0);
 }
 
 TEST_CASE("compose_each beyond the streaming threshold gives operator*'s products, also in place",
@@ -209,18 +210,16 @@ TEST_CASE("compose_each beyond the streaming threshold gives operator*'s product
     const std::vector<quaternion<float>> b = random_rotations<float>(random, n);
     std::vector<quaternion<float>> out(n);
     quat::compose_each(a, b, out);
-    std::size_t mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(max_difference(out[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) {
+              return max_difference(out[i], a[i] * b[i]) <= contraction<float>;
+          }) == 0);
     // In place (its prefix before a cache line may differ, and with it which elements the plain
     // loop does): operator*'s products again.
     std::vector<quaternion<float>> same = a;
     quat::compose_each(same, b, same);
-    mismatches = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(max_difference(same[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
-    CHECK(mismatches == 0);
+    CHECK(failures(n, [&](std::size_t i) {
+              return max_difference(same[i], a[i] * b[i]) <= contraction<float>;
+          }) == 0);
 }
 
 #if defined(__AVX__)
@@ -236,10 +235,9 @@ TEST_CASE("streamed compose_each: every offset of the output from a cache line, 
             std::vector<quaternion<float>> buffer(3010, sentinel);
             quaternion<float>* out = buffer.data() + offset;
             quat::detail::compose_each_streaming(a.data(), b.data(), out, count);
-            std::size_t mismatches = 0;
-            for (std::size_t i = 0; i < count; ++i)
-                if (!(max_difference(out[i], a[i] * b[i]) <= contraction<float>)) ++mismatches;
-            CHECK(mismatches == 0);
+            CHECK(failures(count, [&](std::size_t i) {
+                      return max_difference(out[i], a[i] * b[i]) <= contraction<float>;
+                  }) == 0);
             CHECK(out[count] == sentinel);  // nothing written past the end
         }
     }
@@ -266,12 +264,8 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
             std::vector<vec3<float>> buffer(3100, vec3<float>{sentinel, sentinel, sentinel});
             vec3<float>* out = buffer.data() + offset;
             quat::detail::rotate_each_streaming(q.data(), p.data(), out, count);
-            std::size_t mismatches = 0;
-            for (std::size_t i = 0; i < count; ++i)
-                if (!(relative_error(out[i], quat::rotate(q[i], p[i]), p[i]) <=
-                      rotate_each_vs_rotate<float> / eps<float>))
-                    ++mismatches;
-            CHECK(mismatches == 0);
+            CHECK(failures(count, [&](std::size_t i) { return is_rotate(out[i], q[i], p[i]); }) ==
+                  0);
             CHECK(out[count].x == sentinel);  // nothing written past the end
             // y and z as far from a line as x, 4 floats further (16-byte pieces with AVX-512) or 1
             // (plain): the three output arrays carved from one buffer at 64-byte boundaries.
@@ -287,13 +281,10 @@ TEST_CASE("streamed rotate_each: every offset of the outputs from a cache line, 
                     soa_quaternions<const float>{rotations.w.data(), rotations.x.data(),
                                                  rotations.y.data(), rotations.z.data(), count},
                     soa_points<const float>{px.data(), py.data(), pz.data(), count}, soa_out);
-                mismatches = 0;
-                for (std::size_t i = 0; i < count; ++i)
-                    if (!(relative_error(vec3<float>{soa_out.x[i], soa_out.y[i], soa_out.z[i]},
-                                         quat::rotate(q[i], p[i]),
-                                         p[i]) <= rotate_each_vs_rotate<float> / eps<float>))
-                        ++mismatches;
-                CHECK(mismatches == 0);
+                CHECK(failures(count, [&](std::size_t i) {
+                          return is_rotate(vec3<float>{soa_out.x[i], soa_out.y[i], soa_out.z[i]},
+                                           q[i], p[i]);
+                      }) == 0);
                 CHECK((soa_out.x[count] == sentinel && soa_out.y[count] == sentinel &&
                        soa_out.z[count] == sentinel));
             }
@@ -369,13 +360,9 @@ TEST_CASE("streamed struct-of-arrays rotate_each sweeps as its arrays' page offs
             quat::detail::rotate_each_soa_streaming(
                 soa_quaternions<const float>{arrays[0], arrays[1], arrays[2], arrays[3], count},
                 soa_points<const float>{arrays[4], arrays[5], arrays[6], count}, out);
-            std::size_t mismatches = 0;
-            for (std::size_t i = 0; i < count; ++i)
-                if (!(relative_error(vec3<float>{out.x[i], out.y[i], out.z[i]},
-                                     quat::rotate(q[i], p[i]),
-                                     p[i]) <= rotate_each_vs_rotate<float> / eps<float>))
-                    ++mismatches;
-            CHECK(mismatches == 0);
+            CHECK(failures(count, [&](std::size_t i) {
+                      return is_rotate(vec3<float>{out.x[i], out.y[i], out.z[i]}, q[i], p[i]);
+                  }) == 0);
             CHECK((out.x[count] == sentinel && out.y[count] == sentinel &&
                    out.z[count] == sentinel));  // nothing written past the end
         }
