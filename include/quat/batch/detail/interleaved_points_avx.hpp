@@ -163,20 +163,70 @@ using float16 = float __attribute__((vector_size(64)));
     return column == 3 ? 17 + row : row == 2 && column == 2 ? 16 : 3 * row + column;
 }
 
-// Register R's lanes of column J of m (J = 3: of t): lane l holds row (R + l) % 3.
-template <int R, int J, int... L>
-[[nodiscard]] inline float16 row_cycle(float16 low, float16 high,
+// The two gathers of transform_interleaved_16 bring each lane the other two coordinates of its
+// point: an x lane gets y, then z; a y lane z, then x; a z lane y, then x. So gather 0 never reads
+// an x and gather 1 never a y, and the lanes holding those are free for a neighbour's floats.
+[[nodiscard]] constexpr int gathered_coordinate(int gather, int k) noexcept {
+    return gather == 0 ? (k == 1 ? 2 : 1) : (k == 0 ? 2 : 0);
+}
+
+// Register R's lanes (lane l: coordinate k = (R + l) % 3) of the coefficient of term Term:
+// m(k, k) for the lane's own coordinate (Term 0), m(k, c) for the coordinate c that gather
+// Term - 1 brings (Term 1, 2), and t_k (Term 3).
+template <int R, int Term, int... L>
+[[nodiscard]] inline float16 coefficient_lanes(float16 low, float16 high,
+                                               std::integer_sequence<int, L...>) noexcept {
+    return __builtin_shufflevector(
+        low, high,
+        entry_lane((R + L) % 3, Term == 0   ? (R + L) % 3
+                                : Term == 3 ? 3
+                                            : gathered_coordinate(Term - 1, (R + L) % 3))...);
+}
+
+// x with lane Lane replaced by lane From of y.
+template <int Lane, int From, int... L>
+[[nodiscard]] inline float16 with_lane(float16 x, float16 y,
                                        std::integer_sequence<int, L...>) noexcept {
-    return __builtin_shufflevector(low, high, entry_lane((R + L) % 3, J)...);
+    return __builtin_shufflevector(x, y, (L == Lane ? 16 + From : L)...);
+}
+
+// Where gather G of register R finds float g (0-47) of the group in the register it permutes: its
+// own floats (16 R to 16 R + 15) in their lanes, and the neighbours' floats where the kernel put
+// them (register 0: y5 and z5 in lanes 0 and 1; register 1: x5 in lane 15, z10 in lane 2 for
+// gather 0 and lane 0 for gather 1; register 2: y10 in lane 13 and x10 in lane 14).
+template <int R, int G>
+[[nodiscard]] constexpr int source_lane(int g) noexcept {
+    if (g / 16 == R) return g % 16;
+    if (R == 0) return g - 16;
+    if (R == 1) return g == 15 ? 15 : G == 0 ? 2 : 0;
+    return g == 31 ? 13 : 14;
+}
+
+// Gather G of register R: each lane's coordinate gathered_coordinate(G, k) of its own point.
+template <int R, int G, int... L>
+[[nodiscard]] inline float16 gather(float16 source, std::integer_sequence<int, L...>) noexcept {
+    return __builtin_shufflevector(
+        source, source,
+        source_lane<R, G>(3 * ((16 * R + L) / 3) + gathered_coordinate(G, (R + L) % 3))...);
 }
 
 // 16 points (48 floats, registers a, b, c) a step, without separating the coordinates: float g of
-// a group is coordinate k = g % 3 of point g / 3, and its result is m(k, 0) x + m(k, 1) y + m(k, 2)
-// z (+ t_k) of that point. So each register of results is three multiply-adds of that register's
-// own x, y and z gathered lane by lane (one permute each, of one or two input registers) by
-// coefficient registers that repeat the rows of m with period 3: 9 permutes and 9 multiply-adds
-// per 16 points, where separating x, y and z and joining the results again takes 12 permutes (as
-// GLM's mat3 loop compiles). g++ 12 finds this form in a plain loop over nine scalar entries.
+// a group is coordinate k = g % 3 of point g / 3, and its result is m(k, k) times that float, plus
+// m(k, c) times each other coordinate c of its point (+ t_k, added first). So each register of
+// results is the register itself times a coefficient register, plus two gathers of the other
+// coordinates, lane by lane, times theirs: the coefficients repeat m's entries with period 3. A
+// gather permutes one register: the floats a register's points keep in a neighbour (points 5 and
+// 10 straddle two registers) are first blended into lanes that the gather does not read, after a
+// move within their 128-bit lane where their own lane is read. Per 16 points: 6 one-source
+// permutes, 5 blends, 2 masked in-lane moves and 9 multiply-adds.
+//
+// Why: a Zen 4 core runs a 512-bit two-source permute (vpermt2ps) at about 1.5 times the cost of a
+// one-source one, and both on the pipes of the multiply-adds, while blends and in-lane moves run
+// beside them (instruction loops: 9 multiply-adds take 9.0 cycles, 15.3 with 6 two-source and 3
+// one-source permutes, 12.0 with 9 one-source ones, 9.0-9.1 with 6 blends or 6 in-lane shuffles).
+// Gathering x, y and z for each register (9 permutes, 6 of them two-source, then 9 multiply-adds
+// and 3 additions, as g++ 12 compiles GLM's mat4 loop) took 0.270 ns a point at 1024 points
+// against 0.246 for this form (input on a line, output 16 bytes past the input modulo 4096).
 //
 // A 64-byte access that straddles two cache lines costs a Zen 4 core two, and with arrays only
 // 16-byte aligned three accesses in four straddle; straddling loads cost more than straddling
@@ -184,12 +234,13 @@ template <int R, int J, int... L>
 // puts them. Shifting each group's results into line-aligned stores (3 more permutes) measured
 // slower than the straddling stores: 1024 points 170 ns against 157 with `out` off its line.
 //
-// Out of place, groups may overlap: the first 16 points as they lie, the groups from the input's
-// first 64-byte boundary on (from 1024 points; below, every 16 points), and the last 16, which may
-// write some points again (the same values); so no point is left to a slower loop. In place each
-// group starts 16 points after the last. The coefficients are formed once for all of them: 64
-// points took 0.44 ns a point with the three runs of groups each forming its own, twice the plain
-// loop. Returns how many points it did.
+// Every point goes through this kernel, so its results do not depend on where a point falls or on
+// whether the call is in place: out of place, the first 16 points as they lie, the groups from the
+// input's first 64-byte boundary on (from 1024 points; below, every 16 points), and the last 16,
+// which may write some points again (the same values). In place, groups every 16 points, and the
+// last 16 from a copy of their input taken before any is overwritten. The coefficients are formed
+// once for all of them: 64 points took 0.44 ns a point with the runs of groups each forming its
+// own, twice the plain loop. Returns how many points it did: n from 16 points on, else 0.
 template <bool Translate>
 [[nodiscard]] inline std::size_t transform_interleaved_16(const rotation_matrix<float>& m,
                                                           const vec3<float>& t, const float* in,
@@ -205,66 +256,74 @@ template <bool Translate>
         __builtin_shufflevector(head, head, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
     const float16 high = {m(2, 2), t.x, t.y, t.z, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
-    const float16 coefficient[3][3] = {
-        {row_cycle<0, 0>(low, high, lanes), row_cycle<0, 1>(low, high, lanes),
-         row_cycle<0, 2>(low, high, lanes)},
-        {row_cycle<1, 0>(low, high, lanes), row_cycle<1, 1>(low, high, lanes),
-         row_cycle<1, 2>(low, high, lanes)},
-        {row_cycle<2, 0>(low, high, lanes), row_cycle<2, 1>(low, high, lanes),
-         row_cycle<2, 2>(low, high, lanes)}};
-    const float16 offset[3] = {row_cycle<0, 3>(low, high, lanes), row_cycle<1, 3>(low, high, lanes),
-                               row_cycle<2, 3>(low, high, lanes)};
-    // The groups start at 0, then every 16 points, out of place from the input's first line on
-    // when there are 1024 points or more (below, the extra group costs more than the straddling
-    // loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024
-    // points 148 against 149, 4096 points 654 against 641), and last at n - 16. One loop body, not
-    // a lambda called per group: in a large translation unit g++ 12 left such a lambda out of line,
+    const float16 own[3] = {coefficient_lanes<0, 0>(low, high, lanes),
+                            coefficient_lanes<1, 0>(low, high, lanes),
+                            coefficient_lanes<2, 0>(low, high, lanes)};
+    const float16 first[3] = {coefficient_lanes<0, 1>(low, high, lanes),
+                              coefficient_lanes<1, 1>(low, high, lanes),
+                              coefficient_lanes<2, 1>(low, high, lanes)};
+    const float16 second[3] = {coefficient_lanes<0, 2>(low, high, lanes),
+                               coefficient_lanes<1, 2>(low, high, lanes),
+                               coefficient_lanes<2, 2>(low, high, lanes)};
+    const float16 offset[3] = {coefficient_lanes<0, 3>(low, high, lanes),
+                               coefficient_lanes<1, 3>(low, high, lanes),
+                               coefficient_lanes<2, 3>(low, high, lanes)};
+    // Runs of consecutive groups: (input, output, groups). Out of place from the input's first
+    // line on when there are 1024 points or more (below, the extra group costs more than the
+    // straddling loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3
+    // aligned, 1024 points 148 against 149, 4096 points 654 against 641). One loop body, not a
+    // lambda called per run: in a large translation unit g++ 12 left such a lambda out of line,
     // reloading the coefficients at every call (64 points in quat_bench took 0.67 ns a point
     // against 0.25 for a plain loop).
     const bool in_place = in == out;
     const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in);
-    for (std::size_t first = 0;;) {
-        const float* p = in + 3 * first;
-        const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
-        // x, y, z of each lane's point: floats 3 (g / 3) + 0, 1, 2 of the group (0-15 in a, 16-31
-        // in b, 32-47 in c; a shuffle's second source is numbered from 16).
-        const float16 x0 =
-            __builtin_shufflevector(a, a, 0, 0, 0, 3, 3, 3, 6, 6, 6, 9, 9, 9, 12, 12, 12, 15);
-        const float16 y0 =
-            __builtin_shufflevector(a, b, 1, 1, 1, 4, 4, 4, 7, 7, 7, 10, 10, 10, 13, 13, 13, 16);
-        const float16 z0 =
-            __builtin_shufflevector(a, b, 2, 2, 2, 5, 5, 5, 8, 8, 8, 11, 11, 11, 14, 14, 14, 17);
-        const float16 x1 = __builtin_shufflevector(a, b, 15, 15, 18, 18, 18, 21, 21, 21, 24, 24, 24,
-                                                   27, 27, 27, 30, 30);
-        const float16 y1 =
-            __builtin_shufflevector(b, b, 0, 0, 3, 3, 3, 6, 6, 6, 9, 9, 9, 12, 12, 12, 15, 15);
-        const float16 z1 =
-            __builtin_shufflevector(b, c, 1, 1, 4, 4, 4, 7, 7, 7, 10, 10, 10, 13, 13, 13, 16, 16);
-        const float16 x2 = __builtin_shufflevector(b, c, 14, 17, 17, 17, 20, 20, 20, 23, 23, 23, 26,
-                                                   26, 26, 29, 29, 29);
-        const float16 y2 = __builtin_shufflevector(b, c, 15, 18, 18, 18, 21, 21, 21, 24, 24, 24, 27,
-                                                   27, 27, 30, 30, 30);
-        const float16 z2 =
-            __builtin_shufflevector(c, c, 0, 3, 3, 3, 6, 6, 6, 9, 9, 9, 12, 12, 12, 15, 15, 15);
-        // The sums in the scalar loop's order (and contracted alike), so the results are equal.
-        float16 oa = coefficient[0][0] * x0 + coefficient[0][1] * y0 + coefficient[0][2] * z0;
-        float16 ob = coefficient[1][0] * x1 + coefficient[1][1] * y1 + coefficient[1][2] * z1;
-        float16 oc = coefficient[2][0] * x2 + coefficient[2][1] * y2 + coefficient[2][2] * z2;
-        if constexpr (Translate) {
-            oa += offset[0];
-            ob += offset[1];
-            oc += offset[2];
+    const std::size_t whole = (n - line) / 16, rest = n - line - 16 * whole;
+    float last[48];
+    if (in_place && rest != 0) std::memcpy(last, in + 3 * (n - 16), sizeof last);
+    struct run {
+        const float* in;
+        float* out;
+        std::size_t groups;
+    };
+    const run runs[3] = {{in, out, line != 0 ? 1u : 0u},
+                         {in + 3 * line, out + 3 * line, whole},
+                         {in_place ? last : in + 3 * (n - 16), out + 3 * (n - 16), rest != 0}};
+    for (const run& r : runs) {
+        for (std::size_t group = 0; group < r.groups; ++group) {
+            const float* p = r.in + 48 * group;
+            const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
+            // What each gather permutes: register 0 with y5 and z5 (b's lanes 0 and 1) in its x0
+            // and y0 lanes; register 1 with z10 (c's lane 0) moved to its x6 lane, or with x5 and
+            // z10 in its y10 and y5 lanes; register 2 with y10 moved to its x15 lane, or with x10
+            // in its y15 lane.
+            const float16 b_from_c =
+                __builtin_shufflevector(c, c, 0, 0, 0, 0, 4, 4, 4, 4, 8, 8, 8, 8, 12, 12, 12, 12);
+            const float16 c_from_b = __builtin_shufflevector(b, b, 3, 3, 3, 3, 7, 7, 7, 7, 11, 11,
+                                                             11, 11, 15, 15, 15, 15);
+            const float16 a0 = with_lane<0, 0>(a, b, lanes), a1 = with_lane<1, 1>(a, b, lanes);
+            const float16 b0 = with_lane<2, 2>(b, b_from_c, lanes);
+            const float16 b1 = with_lane<0, 0>(with_lane<15, 15>(b, a, lanes), c, lanes);
+            const float16 c0 = with_lane<13, 13>(c, c_from_b, lanes);
+            const float16 c1 = with_lane<14, 14>(c, b, lanes);
+            float16 ra = own[0] * a, rb = own[1] * b, rc = own[2] * c;
+            if constexpr (Translate) {
+                ra = offset[0] + own[0] * a;
+                rb = offset[1] + own[1] * b;
+                rc = offset[2] + own[2] * c;
+            }
+            ra += first[0] * gather<0, 0>(a0, lanes);
+            rb += first[1] * gather<1, 0>(b0, lanes);
+            rc += first[2] * gather<2, 0>(c0, lanes);
+            ra += second[0] * gather<0, 1>(a1, lanes);
+            rb += second[1] * gather<1, 1>(b1, lanes);
+            rc += second[2] * gather<2, 1>(c1, lanes);
+            float* q = r.out + 48 * group;
+            std::memcpy(q, &ra, sizeof ra);
+            std::memcpy(q + 16, &rb, sizeof rb);
+            std::memcpy(q + 32, &rc, sizeof rc);
         }
-        std::memcpy(out + 3 * first, &oa, sizeof oa);
-        std::memcpy(out + 3 * first + 16, &ob, sizeof ob);
-        std::memcpy(out + 3 * first + 32, &oc, sizeof oc);
-        std::size_t next = first < line ? line : first + 16;
-        if (next + 16 > n) {
-            if (in_place || first + 16 == n) return first + 16;
-            next = n - 16;
-        }
-        first = next;
     }
+    return n;
 }
 
 #endif  // __AVX512F__
