@@ -3831,62 +3831,59 @@ template <bool Translate>
     const float16 offset[3] = {coefficient_lanes<0, 3>(low, high, lanes),
                                coefficient_lanes<1, 3>(low, high, lanes),
                                coefficient_lanes<2, 3>(low, high, lanes)};
-    // Runs of consecutive groups: (input, output, groups). Out of place from the input's first
-    // line on when there are 1024 points or more (below, the extra group costs more than the
-    // straddling loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3
-    // aligned, 1024 points 148 against 149, 4096 points 654 against 641). One loop body, not a
-    // lambda called per run: in a large translation unit g++ 12 left such a lambda out of line,
+    // The groups start at 0, then every 16 points, out of place from the input's first line on
+    // when there are 1024 points or more (below, the extra group costs more than the straddling
+    // loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024
+    // points 148 against 149, 4096 points 654 against 641), and last at n - 16. One loop body, not
+    // a lambda called per group: in a large translation unit g++ 12 left such a lambda out of line,
     // reloading the coefficients at every call (64 points in quat_bench took 0.67 ns a point
-    // against 0.25 for a plain loop).
+    // against 0.25 for a plain loop). So are the runs of groups kept in an array of (input,
+    // output, count) and looped over: 16 points took 16.8 ns against 12.4 (harness, Zen 4).
     const bool in_place = in == out;
     const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in);
-    const std::size_t whole = (n - line) / 16, rest = n - line - 16 * whole;
+    // In place, the last 16 points overlap the group before them, which overwrites their input,
+    // so they are moved from a copy taken first.
     float last[48];
-    if (in_place && rest != 0) std::memcpy(last, in + 3 * (n - 16), sizeof last);
-    struct run {
-        const float* in;
-        float* out;
-        std::size_t groups;
-    };
-    const run runs[3] = {{in, out, line != 0 ? 1u : 0u},
-                         {in + 3 * line, out + 3 * line, whole},
-                         {in_place ? last : in + 3 * (n - 16), out + 3 * (n - 16), rest != 0}};
-    for (const run& r : runs) {
-        for (std::size_t group = 0; group < r.groups; ++group) {
-            const float* p = r.in + 48 * group;
-            const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
-            // What each gather permutes: register 0 with y5 and z5 (b's lanes 0 and 1) in its x0
-            // and y0 lanes; register 1 with z10 (c's lane 0) moved to its x6 lane, or with x5 and
-            // z10 in its y10 and y5 lanes; register 2 with y10 moved to its x15 lane, or with x10
-            // in its y15 lane.
-            const float16 b_from_c =
-                __builtin_shufflevector(c, c, 0, 0, 0, 0, 4, 4, 4, 4, 8, 8, 8, 8, 12, 12, 12, 12);
-            const float16 c_from_b = __builtin_shufflevector(b, b, 3, 3, 3, 3, 7, 7, 7, 7, 11, 11,
-                                                             11, 11, 15, 15, 15, 15);
-            const float16 a0 = with_lane<0, 0>(a, b, lanes), a1 = with_lane<1, 1>(a, b, lanes);
-            const float16 b0 = with_lane<2, 2>(b, b_from_c, lanes);
-            const float16 b1 = with_lane<0, 0>(with_lane<15, 15>(b, a, lanes), c, lanes);
-            const float16 c0 = with_lane<13, 13>(c, c_from_b, lanes);
-            const float16 c1 = with_lane<14, 14>(c, b, lanes);
-            float16 ra = own[0] * a, rb = own[1] * b, rc = own[2] * c;
-            if constexpr (Translate) {
-                ra = offset[0] + own[0] * a;
-                rb = offset[1] + own[1] * b;
-                rc = offset[2] + own[2] * c;
-            }
-            ra += first[0] * gather<0, 0>(a0, lanes);
-            rb += first[1] * gather<1, 0>(b0, lanes);
-            rc += first[2] * gather<2, 0>(c0, lanes);
-            ra += second[0] * gather<0, 1>(a1, lanes);
-            rb += second[1] * gather<1, 1>(b1, lanes);
-            rc += second[2] * gather<2, 1>(c1, lanes);
-            float* q = r.out + 48 * group;
-            std::memcpy(q, &ra, sizeof ra);
-            std::memcpy(q + 16, &rb, sizeof rb);
-            std::memcpy(q + 32, &rc, sizeof rc);
+    const bool from_copy = in_place && n % 16 != 0;
+    if (from_copy) std::memcpy(last, in + 3 * (n - 16), sizeof last);
+    for (std::size_t start = 0;;) {
+        const float* p = from_copy && start + 16 == n ? last : in + 3 * start;
+        const float16 a = load16(p), b = load16(p + 16), c = load16(p + 32);
+        // What each gather permutes: register 0 with y5 and z5 (b's lanes 0 and 1) in its x0 and
+        // y0 lanes; register 1 with z10 (c's lane 0) moved to its x6 lane, or with x5 and z10 in
+        // its y10 and y5 lanes; register 2 with y10 moved to its x15 lane, or with x10 in its y15
+        // lane.
+        const float16 b_from_c =
+            __builtin_shufflevector(c, c, 0, 0, 0, 0, 4, 4, 4, 4, 8, 8, 8, 8, 12, 12, 12, 12);
+        const float16 c_from_b =
+            __builtin_shufflevector(b, b, 3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15);
+        const float16 a0 = with_lane<0, 0>(a, b, lanes), a1 = with_lane<1, 1>(a, b, lanes);
+        const float16 b0 = with_lane<2, 2>(b, b_from_c, lanes);
+        const float16 b1 = with_lane<0, 0>(with_lane<15, 15>(b, a, lanes), c, lanes);
+        const float16 c0 = with_lane<13, 13>(c, c_from_b, lanes);
+        const float16 c1 = with_lane<14, 14>(c, b, lanes);
+        float16 ra = own[0] * a, rb = own[1] * b, rc = own[2] * c;
+        if constexpr (Translate) {
+            ra = offset[0] + own[0] * a;
+            rb = offset[1] + own[1] * b;
+            rc = offset[2] + own[2] * c;
         }
+        ra += first[0] * gather<0, 0>(a0, lanes);
+        rb += first[1] * gather<1, 0>(b0, lanes);
+        rc += first[2] * gather<2, 0>(c0, lanes);
+        ra += second[0] * gather<0, 1>(a1, lanes);
+        rb += second[1] * gather<1, 1>(b1, lanes);
+        rc += second[2] * gather<2, 1>(c1, lanes);
+        std::memcpy(out + 3 * start, &ra, sizeof ra);
+        std::memcpy(out + 3 * start + 16, &rb, sizeof rb);
+        std::memcpy(out + 3 * start + 32, &rc, sizeof rc);
+        std::size_t next = start < line ? line : start + 16;
+        if (next + 16 > n) {
+            if (start + 16 == n) return n;
+            next = n - 16;
+        }
+        start = next;
     }
-    return n;
 }
 
 #endif  // __AVX512F__
