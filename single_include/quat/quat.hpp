@@ -3746,6 +3746,18 @@ template <int R, int Term, int... L>
                                             : gathered_coordinate(Term - 1, (R + L) % 3))...);
 }
 
+// A register's coefficients of its own coordinate, of the two gathers and of t.
+struct register_coefficients {
+    float16 own, first, second, offset;
+};
+
+template <int R>
+[[nodiscard]] inline register_coefficients coefficients_of(float16 low, float16 high) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
+    return {coefficient_lanes<R, 0>(low, high, lanes), coefficient_lanes<R, 1>(low, high, lanes),
+            coefficient_lanes<R, 2>(low, high, lanes), coefficient_lanes<R, 3>(low, high, lanes)};
+}
+
 // x with lane Lane replaced by lane From of y.
 template <int Lane, int From, int... L>
 [[nodiscard]] inline float16 with_lane(float16 x, float16 y,
@@ -3788,8 +3800,9 @@ template <int R, int G, int... L>
 // beside them (instruction loops: 9 multiply-adds take 9.0 cycles, 15.3 with 6 two-source and 3
 // one-source permutes, 12.0 with 9 one-source ones, 9.0-9.1 with 6 blends or 6 in-lane shuffles).
 // Gathering x, y and z for each register (9 permutes, 6 of them two-source, then 9 multiply-adds
-// and 3 additions, as g++ 12 compiles GLM's mat4 loop) took 0.270 ns a point at 1024 points
-// against 0.246 for this form (input on a line, output 16 bytes past the input modulo 4096).
+// and 3 additions, as g++ 12 compiles GLM's mat4 loop) took 0.265-0.285 ns a point to transform
+// 1024 points against 0.214-0.254 for this form, and 0.233-0.298 to rotate them against
+// 0.224-0.271 (six layouts of input and output, medians of 21 interleaved calls).
 //
 // A 64-byte access that straddles two cache lines costs a Zen 4 core two, and with arrays only
 // 16-byte aligned three accesses in four straddle; straddling loads cost more than straddling
@@ -3819,26 +3832,17 @@ template <bool Translate>
         __builtin_shufflevector(head, head, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
     const float16 high = {m(2, 2), t.x, t.y, t.z, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     constexpr auto lanes = std::make_integer_sequence<int, 16>{};
-    const float16 own[3] = {coefficient_lanes<0, 0>(low, high, lanes),
-                            coefficient_lanes<1, 0>(low, high, lanes),
-                            coefficient_lanes<2, 0>(low, high, lanes)};
-    const float16 first[3] = {coefficient_lanes<0, 1>(low, high, lanes),
-                              coefficient_lanes<1, 1>(low, high, lanes),
-                              coefficient_lanes<2, 1>(low, high, lanes)};
-    const float16 second[3] = {coefficient_lanes<0, 2>(low, high, lanes),
-                               coefficient_lanes<1, 2>(low, high, lanes),
-                               coefficient_lanes<2, 2>(low, high, lanes)};
-    const float16 offset[3] = {coefficient_lanes<0, 3>(low, high, lanes),
-                               coefficient_lanes<1, 3>(low, high, lanes),
-                               coefficient_lanes<2, 3>(low, high, lanes)};
+    const register_coefficients coefficient[3] = {coefficients_of<0>(low, high),
+                                                  coefficients_of<1>(low, high),
+                                                  coefficients_of<2>(low, high)};
     // The groups start at 0, then every 16 points, out of place from the input's first line on
     // when there are 1024 points or more (below, the extra group costs more than the straddling
     // loads save; Zen 5, input 16 bytes past a line: 64 points 12.4 ns against 14.3 aligned, 1024
     // points 148 against 149, 4096 points 654 against 641), and last at n - 16. One loop body, not
     // a lambda called per group: in a large translation unit g++ 12 left such a lambda out of line,
     // reloading the coefficients at every call (64 points in quat_bench took 0.67 ns a point
-    // against 0.25 for a plain loop). So are the runs of groups kept in an array of (input,
-    // output, count) and looped over: 16 points took 16.8 ns against 12.4 (harness, Zen 4).
+    // against 0.25 for a plain loop). Nor a loop over runs of groups kept as (input, output,
+    // count): g++ 12 then left the kernel out of line (16 points 16.8 ns against 12.4, Zen 4).
     const bool in_place = in == out;
     const std::size_t line = in_place || n < 1024 ? 0 : points_before_line(in);
     // In place, the last 16 points overlap the group before them, which overwrites their input,
@@ -3862,18 +3866,19 @@ template <bool Translate>
         const float16 b1 = with_lane<0, 0>(with_lane<15, 15>(b, a, lanes), c, lanes);
         const float16 c0 = with_lane<13, 13>(c, c_from_b, lanes);
         const float16 c1 = with_lane<14, 14>(c, b, lanes);
-        float16 ra = own[0] * a, rb = own[1] * b, rc = own[2] * c;
+        float16 ra = coefficient[0].own * a, rb = coefficient[1].own * b,
+                rc = coefficient[2].own * c;
         if constexpr (Translate) {
-            ra = offset[0] + own[0] * a;
-            rb = offset[1] + own[1] * b;
-            rc = offset[2] + own[2] * c;
+            ra = coefficient[0].offset + coefficient[0].own * a;
+            rb = coefficient[1].offset + coefficient[1].own * b;
+            rc = coefficient[2].offset + coefficient[2].own * c;
         }
-        ra += first[0] * gather<0, 0>(a0, lanes);
-        rb += first[1] * gather<1, 0>(b0, lanes);
-        rc += first[2] * gather<2, 0>(c0, lanes);
-        ra += second[0] * gather<0, 1>(a1, lanes);
-        rb += second[1] * gather<1, 1>(b1, lanes);
-        rc += second[2] * gather<2, 1>(c1, lanes);
+        ra += coefficient[0].first * gather<0, 0>(a0, lanes);
+        rb += coefficient[1].first * gather<1, 0>(b0, lanes);
+        rc += coefficient[2].first * gather<2, 0>(c0, lanes);
+        ra += coefficient[0].second * gather<0, 1>(a1, lanes);
+        rb += coefficient[1].second * gather<1, 1>(b1, lanes);
+        rc += coefficient[2].second * gather<2, 1>(c1, lanes);
         std::memcpy(out + 3 * start, &ra, sizeof ra);
         std::memcpy(out + 3 * start + 16, &rb, sizeof rb);
         std::memcpy(out + 3 * start + 32, &rc, sizeof rc);
