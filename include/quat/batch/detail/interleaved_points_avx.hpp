@@ -222,6 +222,19 @@ template <int R, int G, int... L>
         source_lane<R, G>(3 * ((16 * R + L) / 3) + gathered_coordinate(G, (R + L) % 3))...);
 }
 
+// Register R of a group's results: x times m's diagonal (t added first when Translate), plus the
+// two gathers of the other coordinates from their sources times their coefficients.
+template <int R, bool Translate>
+[[nodiscard]] inline float16 moved_register(const register_coefficients& k, float16 x,
+                                            float16 source0, float16 source1) noexcept {
+    constexpr auto lanes = std::make_integer_sequence<int, 16>{};
+    float16 r;
+    if constexpr (Translate) r = k.offset + k.own * x;
+    else r = k.own * x;
+    r += k.first * gather<R, 0>(source0, lanes);
+    return r + k.second * gather<R, 1>(source1, lanes);
+}
+
 // 16 points (48 floats, registers a, b, c) a step, without separating the coordinates: float g of
 // a group is coordinate k = g % 3 of point g / 3, and its result is m(k, k) times that float, plus
 // m(k, c) times each other coordinate c of its point (+ t_k, added first). So each register of
@@ -303,19 +316,9 @@ template <bool Translate>
         const float16 b1 = with_lane<0, 0>(with_lane<15, 15>(b, a, lanes), c, lanes);
         const float16 c0 = with_lane<13, 13>(c, c_from_b, lanes);
         const float16 c1 = with_lane<14, 14>(c, b, lanes);
-        float16 ra = coefficient[0].own * a, rb = coefficient[1].own * b,
-                rc = coefficient[2].own * c;
-        if constexpr (Translate) {
-            ra = coefficient[0].offset + coefficient[0].own * a;
-            rb = coefficient[1].offset + coefficient[1].own * b;
-            rc = coefficient[2].offset + coefficient[2].own * c;
-        }
-        ra += coefficient[0].first * gather<0, 0>(a0, lanes);
-        rb += coefficient[1].first * gather<1, 0>(b0, lanes);
-        rc += coefficient[2].first * gather<2, 0>(c0, lanes);
-        ra += coefficient[0].second * gather<0, 1>(a1, lanes);
-        rb += coefficient[1].second * gather<1, 1>(b1, lanes);
-        rc += coefficient[2].second * gather<2, 1>(c1, lanes);
+        const float16 ra = moved_register<0, Translate>(coefficient[0], a, a0, a1);
+        const float16 rb = moved_register<1, Translate>(coefficient[1], b, b0, b1);
+        const float16 rc = moved_register<2, Translate>(coefficient[2], c, c0, c1);
         std::memcpy(out + 3 * start, &ra, sizeof ra);
         std::memcpy(out + 3 * start + 16, &rb, sizeof rb);
         std::memcpy(out + 3 * start + 32, &rc, sizeof rc);
