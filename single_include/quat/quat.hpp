@@ -3526,8 +3526,15 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
     return largest;
 }
 
-// The last resort where no cache size can be read: 16 MiB of output.
-inline constexpr std::size_t default_streaming_bytes = std::size_t(16) << 20;
+// The threshold where no cache size can be read, and the largest any cache size sets: 16 MiB of
+// output, which a Zen 4's 32 MiB L3 sets itself. A last-level cache of hundreds of MiB, a server
+// part's shared by its many cores, keeps far less of one core's data than its size says: on an
+// Intel Xeon whose cpuid reports 480 MiB (2 vCPUs), 4M points by quat_bench (medians of three
+// runs of 7) took 1.56-1.66 ns a point streamed against 2.69-2.74 plainly (struct of arrays),
+// rotate_each 2.63-2.70 against 3.18-3.20, compose_each 2.85-2.88 against 3.66-3.71; from 256K
+// points streaming was ahead there too (a harness: 1.2-1.5 against 1.5-2.9), at 64K behind (2.3-2.6
+// against 1.3-1.4). Not lower than 16 MiB: the Zen 4 was not measured streaming smaller outputs.
+inline constexpr std::size_t largest_streaming_threshold = std::size_t(16) << 20;
 
 // No output smaller than this is streamed, whatever the cache size says: it stays in any
 // x86 core's L2.
@@ -3546,11 +3553,13 @@ inline std::size_t last_level_cache_bytes() noexcept {
 // data one call touches, input and output (twice the output), exceeds the last-level cache, so
 // the output cannot stay cached for a next pass anyway and a plain store's read for ownership of
 // each line only adds a third to the memory traffic; below that plain stores, which leave the
-// result in cache. Without a cache size, the fixed default_streaming_bytes.
-// Never below minimum_streaming_bytes.
+// result in cache. Never above largest_streaming_threshold (also the threshold without a cache
+// size), never below minimum_streaming_bytes.
 inline std::size_t streaming_threshold_bytes() noexcept {
     const std::size_t cache = last_level_cache_bytes();
-    const std::size_t half = cache == 0 ? default_streaming_bytes : cache / 2;
+    const std::size_t half = cache == 0 || cache / 2 > largest_streaming_threshold
+                                 ? largest_streaming_threshold
+                                 : cache / 2;
     return half < minimum_streaming_bytes ? minimum_streaming_bytes : half;
 }
 
@@ -6456,7 +6465,7 @@ template <class Range, class T = detail::element_scalar_t<dual_quaternion, Range
 // objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
 // structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
 // 1.6x the compiled loop at -march=x86-64-v3), and float arrays that with their input exceed the
-// last-level cache (read once at run time by cpuid, else 16 MiB of output) are
+// last-level cache (read once at run time by cpuid), or whose output exceeds 16 MiB, are
 // written on x86 with non-temporal stores (both layouts; plain stores elsewhere), the one use of
 // intrinsics (detail/streaming_store.hpp).
 //

@@ -3,7 +3,7 @@
 // objdump), no allocation, the same results for any scalar type. Two exceptions: the array-of-
 // structs float loop of AVX builds spells its shuffles out (detail/interleaved_points_avx.hpp,
 // 1.6x the compiled loop at -march=x86-64-v3), and float arrays that with their input exceed the
-// last-level cache (read once at run time by cpuid, else 16 MiB of output) are
+// last-level cache (read once at run time by cpuid), or whose output exceeds 16 MiB, are
 // written on x86 with non-temporal stores (both layouts; plain stores elsewhere), the one use of
 // intrinsics (detail/streaming_store.hpp).
 //
