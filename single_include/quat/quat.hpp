@@ -3529,10 +3529,10 @@ inline std::size_t cpuid_largest_cache_bytes() noexcept {
 // The threshold where no cache size can be read, and the largest any cache size sets: 16 MiB of
 // output, which a Zen 4's 32 MiB L3 sets itself. A last-level cache of hundreds of MiB, a server
 // part's shared by its many cores, keeps far less of one core's data than its size says: on an
-// Intel Xeon whose cpuid reports 480 MiB (2 vCPUs), 4M points by quat_bench (medians of three
-// runs of 7) took 1.56-1.66 ns a point streamed against 2.69-2.74 plainly (struct of arrays),
+// Intel Xeon whose cpuid reports 480 MiB (2 vCPUs), 4M points in quat_bench (three runs of
+// 7 repetitions) took 1.56-1.66 ns a point streamed against 2.69-2.74 plainly (struct of arrays),
 // rotate_each 2.63-2.70 against 3.18-3.20, compose_each 2.85-2.88 against 3.66-3.71; from 256K
-// points streaming was ahead there too (a harness: 1.2-1.5 against 1.5-2.9), at 64K behind (2.3-2.6
+// points streaming was ahead there too (a harness: 1.1-1.6 against 1.5-2.9), at 64K behind (2.3-2.6
 // against 1.3-1.4). Not lower than 16 MiB: the Zen 4 was not measured streaming smaller outputs.
 inline constexpr std::size_t largest_streaming_threshold = std::size_t(16) << 20;
 
