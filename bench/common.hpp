@@ -321,14 +321,14 @@ void copy_floor(benchmark::State& state, long long count, std::size_t floats,
 /// what the operation's own benchmark counts per element.
 inline void register_copy_floors(const std::string& operation, std::size_t floats,
                                  std::size_t bytes_per_item, const std::vector<long long>& sizes) {
-    // The streaming copy only where quat's own rule streams the output (half the bytes moved).
     for (const long long n : sizes) {
-        const std::size_t moved = 2 * floats * sizeof(float) * static_cast<std::size_t>(n);
+        const std::size_t written = floats * sizeof(float) * static_cast<std::size_t>(n);
         benchmark::RegisterBenchmark(name(operation, "memcpy", "bytes", "float", n).c_str(),
                                      copy_floor<copy_kind::memcpy>, n, floats, bytes_per_item);
         benchmark::RegisterBenchmark(name(operation, "copy_loop", "bytes", "float", n).c_str(),
                                      copy_floor<copy_kind::loop>, n, floats, bytes_per_item);
-        if (quat::detail::streams_output(moved / 2))
+        // The streaming copy only where quat's own rule streams the output.
+        if (quat::detail::streams_output(written))
             benchmark::RegisterBenchmark(name(operation, "stream", "bytes", "float", n).c_str(),
                                          copy_floor<copy_kind::stream>, n, floats, bytes_per_item);
     }
