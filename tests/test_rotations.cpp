@@ -59,8 +59,9 @@ TEMPLATE_TEST_CASE("batch rotate, struct of arrays, matches array of structs", "
                    double) {
     using T = TestType;
     quat::test::random_rotations random;
-    // Every size to 40 (whole vectors of lanes and each tail), and longer ones.
-    std::vector<std::size_t> sizes = {256u, 777u};
+    // Every size to 40 (whole vectors of lanes and each tail), and longer ones; from 2053 float
+    // points on, past detail::prefetch_bytes, the loop prefetches its outputs.
+    std::vector<std::size_t> sizes = {256u, 777u, 2053u};
     for (std::size_t n = 0; n <= 40; ++n) sizes.push_back(n);
     for (const std::size_t n : sizes) {
         const quat::quaternion<T> q = random.unit_quaternion<T>();

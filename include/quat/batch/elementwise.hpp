@@ -97,10 +97,12 @@ void rotate_each_loop(const quaternion<T>* rotations, const vec3<T>* points, vec
 // With Stream, the floats per non-temporal store (the vector's width, or 4; each output array
 // aligned to that many floats), the whole vectors are stored non-temporally; 0 stores plainly.
 // Downward runs the whole vectors from the last to the first (streaming_store.hpp's sweep says
-// why).
-template <std::size_t Stream = 0, bool Downward = false, class T>
+// why). With Prefetch (plain stores only), the vector loop asks for its output lines ahead of its
+// stores (prefetch_outputs).
+template <std::size_t Stream = 0, bool Downward = false, bool Prefetch = false, class T>
 void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
                      soa_points<T> output) noexcept {
+    static_assert(!Prefetch || Stream == 0, "non-temporal stores read no lines to prefetch");
     std::size_t done = 0;
     // Whole vectors of lanes written out (detail/wide_lanes.hpp says why), the rest below. Each
     // step loads the next vector of every input before it stores its own results, which keeps
@@ -147,6 +149,7 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
             element current = load(at);
             for (std::size_t left = whole / lanes - 1; left != 0; --left, at += step) {
                 const element next = load(at + step);
+                if constexpr (Prefetch) prefetch_outputs(output.x, output.y, output.z, at, p.count);
                 turn(current, at);
                 current = next;
             }
@@ -211,7 +214,7 @@ void rotate_each_soa(soa_quaternions<const T> q, soa_points<const T> p,
     } else if (way == sweep::downward) {
         rotate_each_soa<4, true>(q_rest, p_rest, output_rest);
     } else {
-        rotate_each_soa(q_rest, p_rest, output_rest);
+        rotate_each_soa<0, false, true>(q_rest, p_rest, output_rest);
     }
     stream_fence();
 }
@@ -372,6 +375,10 @@ void rotate_each(soa_quaternions<const detail::type_identity_t<T>> rotations,
         }
     }
 #endif
+    if (detail::has_wide_lanes<T> && 10 * points.count * sizeof(T) > detail::prefetch_bytes) {
+        detail::rotate_each_soa<0, false, true>(rotations, points, output);
+        return;
+    }
     detail::rotate_each_soa(rotations, points, output);
 }
 

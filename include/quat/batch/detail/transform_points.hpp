@@ -108,7 +108,8 @@ void transform_streaming(const rotation_matrix<float>& m, const vec3<float>& t,
     stream_fence();
 }
 
-template <bool Translate, class T>
+// With Prefetch, the vector loop asks for its output lines ahead of its stores (prefetch_outputs).
+template <bool Translate, class T, bool Prefetch = false>
 void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, const T* y,
                      const T* z, T* ox, T* oy, T* oz, std::size_t n) noexcept {
     const T m00 = m(0, 0), m01 = m(0, 1), m02 = m(0, 2), m10 = m(1, 0), m11 = m(1, 1),
@@ -149,6 +150,7 @@ void transform_block(const rotation_matrix<T>& m, const vec3<T>& t, const T* x, 
             for (; done + lanes < whole; done += lanes) {
                 const V nx = load_wide(x + done + lanes), ny = load_wide(y + done + lanes),
                         nz = load_wide(z + done + lanes);
+                if constexpr (Prefetch) prefetch_outputs(ox, oy, oz, done, n);
                 move(px, py, pz, done);
                 px = nx, py = ny, pz = nz;
             }
@@ -252,6 +254,11 @@ void transform_points(const rotation_matrix<T>& m, const vec3<T>& t, soa_points<
             stream_fence();
             return;
         }
+    }
+    if (has_wide_lanes<T> && 6 * input.count * sizeof(T) > prefetch_bytes) {
+        transform_block<Translate, T, true>(m, t, input.x, input.y, input.z, output.x, output.y,
+                                            output.z, input.count);
+        return;
     }
     transform_block<Translate>(m, t, input.x, input.y, input.z, output.x, output.y, output.z,
                                input.count);
