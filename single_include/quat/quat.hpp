@@ -4741,8 +4741,8 @@ inline constexpr std::size_t prefetch_bytes = std::size_t(48) << 10;
 // streams outrun the hardware's own prefetching of lines to be written: on an Intel Xeon (family
 // 6 model 167, AVX-512) the struct-of-arrays rotate over 16K points took 0.44 ns a point and
 // 1.36-1.39 over 1M, against 0.28 and 1.11-1.13 for the array of structs; with the requests 0.28
-// and 0.88. rotate_each over 2048 elements: 0.87-0.89, against 0.54-0.56 for the array of structs
-// and 0.52-0.54 with the requests. x86 only, where they were measured. A request never faults and
+// and 0.88. rotate_each over 2048 elements: 0.80-0.89, against 0.49-0.65 for the array of structs
+// and 0.46-0.54 with the requests. x86 only, where they were measured. A request never faults and
 // changes no result.
 template <class T>
 inline void prefetch_outputs(T* x, T* y, T* z, std::size_t at, std::size_t count) noexcept {
