@@ -328,7 +328,8 @@ void rotate_each_aos(const quaternion<T>* rotations, const vec3<T>* points, vec3
     const std::size_t done = rotate_each_kernels(rotations, points, output, count);
     rotate_each_loop(rotations + done, points + done, output + done, count - done);
 #else
-    rotate_each_blocks(rotations, points, output, count);
+    const std::size_t done = rotate_each_kernels(rotations, points, output, count);
+    rotate_each_blocks(rotations + done, points + done, output + done, count - done);
 #endif
 }
 

@@ -1,10 +1,10 @@
 // The element-wise batches of float arrays of structs in AVX and AVX-512 builds
-// (batch/elementwise.hpp's rotate_each, compose_each and to_quaternion_each), and
-// to_quaternion_each in SSE2 builds without AVX, with the shuffles spelled out in GCC/clang vector
-// extensions, as in interleaved_points_avx.hpp (whose helpers they use), because no compiler finds
-// these arrangements from a plain loop. Each kernel does the elements [0, n - n % 4),
-// [0, n - n % 8) or [0, n - n % 16) and returns how many it did; the caller's plain loop does the
-// rest.
+// (batch/elementwise.hpp's rotate_each, compose_each and to_quaternion_each), to_quaternion_each
+// in SSE2 builds without AVX, and rotate_each and compose_each in SSE4.1 builds without AVX, with
+// the shuffles spelled out in GCC/clang vector extensions, as in interleaved_points_avx.hpp (whose
+// helpers they use), because no compiler finds these arrangements from a plain loop. Each kernel
+// does the elements [0, n - n % 4), [0, n - n % 8) or [0, n - n % 16) and returns how many it did;
+// the caller's plain loop does the rest.
 #ifndef QUAT_BATCH_DETAIL_INTERLEAVED_ELEMENTS_HPP_INCLUDED
 #define QUAT_BATCH_DETAIL_INTERLEAVED_ELEMENTS_HPP_INCLUDED
 
@@ -75,6 +75,20 @@ template <class V>
     return true;
 }
 
+// Rows a, b, c, d of a 4x4 matrix, transposed in place: 8 unpacks (the overloads below do the same
+// in each 128-bit lane of wider registers). Its own inverse. On 4 quaternions (one a row), it
+// separates w, x, y and z.
+inline void transpose_in_lanes(float4& a, float4& b, float4& c, float4& d) noexcept {
+    const float4 t0 = __builtin_shufflevector(a, b, 0, 4, 1, 5);
+    const float4 t1 = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+    const float4 t2 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+    const float4 t3 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    b = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    c = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
+
 #if !defined(__AVX__)
 // Entry C (row-major) of 4 matrices whose 36 floats lie in 9 registers: matrix k's entry (float
 // 9 k + C) lies at position (k + C) % 4 of register (9 k + C) / 4, so two shuffles pair matrices
@@ -86,19 +100,6 @@ template <int C>
     const float4 second =
         __builtin_shufflevector(r[(18 + C) / 4], r[(27 + C) / 4], p2, p2, 4 + p3, 4 + p3);
     return __builtin_shufflevector(first, second, 0, 2, 4, 6);
-}
-
-// Rows a, b, c, d of a 4x4 matrix, transposed in place: 8 unpacks (transpose_in_lanes below does
-// the same in each 128-bit lane of wider registers).
-inline void transpose_4x4(float4& a, float4& b, float4& c, float4& d) noexcept {
-    const float4 t0 = __builtin_shufflevector(a, b, 0, 4, 1, 5);
-    const float4 t1 = __builtin_shufflevector(a, b, 2, 6, 3, 7);
-    const float4 t2 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
-    const float4 t3 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
-    a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
-    b = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
-    c = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
 // to_quaternion_each of float matrices [0, n - n % 4) in SSE2 builds without AVX, 4 a step, and how
@@ -123,7 +124,7 @@ inline void transpose_4x4(float4& a, float4& b, float4& c, float4& d) noexcept {
             for (std::size_t j = i; j < i + 4; ++j) out[j] = to_quaternion(m[j]);
             continue;
         }
-        transpose_4x4(q.w, q.x, q.y, q.z);  // q.w: quaternion 0, q.x: quaternion 1, ...
+        transpose_in_lanes(q.w, q.x, q.y, q.z);  // q.w: quaternion 0, q.x: quaternion 1, ...
         float* o = &out[i].w;
         store4(o, q.w);
         store4(o + 4, q.x);
@@ -174,57 +175,6 @@ inline void transpose_in_lanes(float16& a, float16& b, float16& c, float16& d) n
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-// As many quaternions as V has lanes (8 or 16), as w, x, y and z of V each, element
-// each_element(l) in lane l (16 lanes; with 8, whatever order), and back: a quaternion is one
-// 128-bit lane, so this is a 4x4 transpose in each.
-template <class V>
-[[nodiscard]] inline quaternion<V> load_quaternions(const float* q) noexcept {
-    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
-    quaternion<V> r;
-    std::memcpy(&r.w, q, sizeof r.w);
-    std::memcpy(&r.x, q + lanes, sizeof r.x);
-    std::memcpy(&r.y, q + 2 * lanes, sizeof r.y);
-    std::memcpy(&r.z, q + 3 * lanes, sizeof r.z);
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    return r;
-}
-// With Stream (out aligned to V's size) the four stores are non-temporal.
-template <bool Stream = false, class V>
-inline void store_quaternions(float* out, quaternion<V> r) noexcept {
-    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
-    transpose_in_lanes(r.w, r.x, r.y, r.z);
-    // Spelled out, not a loop over pointers to the four: with that loop g++ 12 kept them in memory
-    // in x86-64-v3 builds (compose_each 1024: 0.80x GLM's loop against 1.41x).
-    if constexpr (Stream) {
-        stream_vector<lanes>(out, reinterpret_cast<const float*>(&r.w));
-        stream_vector<lanes>(out + lanes, reinterpret_cast<const float*>(&r.x));
-        stream_vector<lanes>(out + 2 * lanes, reinterpret_cast<const float*>(&r.y));
-        stream_vector<lanes>(out + 3 * lanes, reinterpret_cast<const float*>(&r.z));
-    } else {
-        std::memcpy(out, &r.w, sizeof r.w);
-        std::memcpy(out + lanes, &r.x, sizeof r.x);
-        std::memcpy(out + 2 * lanes, &r.y, sizeof r.y);
-        std::memcpy(out + 3 * lanes, &r.z, sizeof r.z);
-    }
-}
-
-// compose_each of float elements [0, n - n % 8) in AVX builds, and how many it did: operator*
-// itself on 8 lanes, between in-lane transposes of 8 quaternions (4 registers, 2 quaternions each,
-// in whatever lane order: a and b alike, and the transpose back restores it): 24 unpacks and 16
-// multiplies per 8 products. The plain loop, as g++ 12 compiles it at -march=x86-64-v3, took as
-// long as GLM's (0.89 us per 1024 against 0.91); this kernel 0.60 (Zen 4, a harness, CPU time).
-// Output may be a or b: each group is read whole before it is written.
-// With Stream (out aligned to 32 bytes) the stores are non-temporal.
-template <bool Stream = false>
-[[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
-                                                          float* out, std::size_t n) noexcept {
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8)
-        store_quaternions<Stream>(
-            out + 4 * i, load_quaternions<float8>(a + 4 * i) * load_quaternions<float8>(b + 4 * i));
-    return i;
-}
-
 // Entry C (row-major) of 8 matrices, two groups of 4 whose 36 floats each lie in 9 registers, the
 // first group in the low 128-bit lanes and the second in the high ones: matrix k's entry (float
 // 9 k + C of its group) lies at position (k + C) % 4 of register (9 k + C) / 4, four registers with
@@ -372,6 +322,116 @@ template <bool Stream = false>
     }
     return i;
 }
+#endif
+#endif
+
+// The quaternion loads and stores and the compose_each kernel of every x86 build with kernels
+// (the transposes above: 4 lanes in SSE2 builds, 8 and 16 with AVX and AVX-512).
+#if defined(__SSE2__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+// As many quaternions as V has lanes (4, 8 or 16), as w, x, y and z of V each, element
+// each_element(l) in lane l (16 lanes; with 4 in order, with 8 in whatever order), and back: a
+// quaternion is one 128-bit lane, so this is a 4x4 transpose in each.
+template <class V>
+[[nodiscard]] inline quaternion<V> load_quaternions(const float* q) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
+    quaternion<V> r;
+    std::memcpy(&r.w, q, sizeof r.w);
+    std::memcpy(&r.x, q + lanes, sizeof r.x);
+    std::memcpy(&r.y, q + 2 * lanes, sizeof r.y);
+    std::memcpy(&r.z, q + 3 * lanes, sizeof r.z);
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    return r;
+}
+// With Stream (out aligned to V's size) the four stores are non-temporal.
+template <bool Stream = false, class V>
+inline void store_quaternions(float* out, quaternion<V> r) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
+    transpose_in_lanes(r.w, r.x, r.y, r.z);
+    // Spelled out, not a loop over pointers to the four: with that loop g++ 12 kept them in memory
+    // in x86-64-v3 builds (compose_each 1024: 0.80x GLM's loop against 1.41x).
+    if constexpr (Stream) {
+        stream_vector<lanes>(out, reinterpret_cast<const float*>(&r.w));
+        stream_vector<lanes>(out + lanes, reinterpret_cast<const float*>(&r.x));
+        stream_vector<lanes>(out + 2 * lanes, reinterpret_cast<const float*>(&r.y));
+        stream_vector<lanes>(out + 3 * lanes, reinterpret_cast<const float*>(&r.z));
+    } else {
+        std::memcpy(out, &r.w, sizeof r.w);
+        std::memcpy(out + lanes, &r.x, sizeof r.x);
+        std::memcpy(out + 2 * lanes, &r.y, sizeof r.y);
+        std::memcpy(out + 3 * lanes, &r.z, sizeof r.z);
+    }
+}
+
+// compose_each of float elements [0, n - n % L) for V of L = 8 lanes in AVX builds and 4 in SSE4.1
+// builds without AVX, and how many it did: operator* itself on L lanes, between in-lane
+// transposes of L quaternions (L / 4 in each register, in whatever lane order: a and b alike, and
+// the transpose back restores it): 24 unpacks and 16 multiplies per L products. The plain loop,
+// as g++ 12 compiles it at -march=x86-64-v3, took as long as GLM's (0.89 us per 1024 against
+// 0.91); this kernel 0.60 (Zen 4, a harness, CPU time). At x86-64-v2 g++ 12 vectorizes the plain
+// loop into one slower than its scalar SSE2 code (Xeon: 1.67 ns a product against 1.33; Eigen's
+// loop 1.36). Output may be a or b: each group is read whole before it is written. With Stream (out
+// aligned to V's size) the stores are non-temporal.
+template <class V, bool Stream = false>
+[[nodiscard]] inline std::size_t compose_each_interleaved(const float* a, const float* b,
+                                                          float* out, std::size_t n) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(float);
+    std::size_t i = 0;
+    for (; i + lanes <= n; i += lanes)
+        store_quaternions<Stream>(out + 4 * i,
+                                  load_quaternions<V>(a + 4 * i) * load_quaternions<V>(b + 4 * i));
+    return i;
+}
+
+#if defined(__SSE4_1__) && !defined(__AVX__)
+// interleaved_points_avx.hpp's blends (blendps) and in-lane permutes on one 128-bit lane.
+[[nodiscard]] inline float4 blend_2(float4 a, float4 b) noexcept {
+    return __builtin_shufflevector(a, b, 0, 1, 6, 3);
+}
+[[nodiscard]] inline float4 blend_1(float4 a, float4 b) noexcept {
+    return __builtin_shufflevector(a, b, 0, 5, 2, 3);
+}
+[[nodiscard]] inline float4 blend_0_3(float4 a, float4 b) noexcept {
+    return __builtin_shufflevector(a, b, 4, 1, 2, 7);
+}
+[[nodiscard]] inline float4 swap_1_3(float4 v) noexcept {
+    return __builtin_shufflevector(v, v, 0, 3, 2, 1);
+}
+[[nodiscard]] inline float4 swap_pairs(float4 v) noexcept {
+    return __builtin_shufflevector(v, v, 1, 0, 3, 2);
+}
+[[nodiscard]] inline float4 swap_0_2(float4 v) noexcept {
+    return __builtin_shufflevector(v, v, 2, 1, 0, 3);
+}
+
+// rotate_each of float elements [0, n - n % 4) in SSE4.1 builds without AVX, 4 a step, and how
+// many it did: the AVX kernel (rotate_each_interleaved) on one 128-bit lane, 14 shuffles and 12
+// blends per 4 elements. g++ 12 vectorizes GLM's and Eigen's loops at x86-64-v2, and they ran
+// ahead of the struct-of-arrays blocks that SSE2 builds run (Xeon, 1024 elements: 1.52-1.54 ns an
+// element against 1.73). out == p is safe: each group is read whole before it is written.
+[[nodiscard]] inline std::size_t rotate_each_interleaved_4(const float* q, const float* p,
+                                                           float* out, std::size_t n) noexcept {
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const float* r = q + 4 * i;
+        float4 w = load4(r), x = load4(r + 4), y = load4(r + 8), z = load4(r + 12);
+        transpose_in_lanes(w, x, y, z);
+        const float* s = p + 3 * i;
+        const float4 a = load4(s), b = load4(s + 4), c = load4(s + 8);
+        const float4 vx = swap_1_3(blend_1(blend_2(a, b), c));
+        const float4 vy = swap_pairs(blend_2(blend_0_3(a, b), c));
+        const float4 vz = swap_0_2(blend_0_3(blend_1(a, b), c));
+        float4 rx, ry, rz;
+        rotate_factored_lanes(w, x, y, z, vx, vy, vz, rx, ry, rz);
+        const float4 px = swap_1_3(rx), py = swap_pairs(ry), pz = swap_0_2(rz);
+        store4(out + 3 * i, blend_2(blend_1(px, py), pz));
+        store4(out + 3 * i + 4, blend_2(blend_1(py, pz), px));
+        store4(out + 3 * i + 8, blend_2(blend_1(pz, px), py));
+    }
+    return i;
+}
+#endif
+
 #endif
 #endif
 
@@ -543,9 +603,15 @@ template <bool Stream = false, class T>
 #endif
         if constexpr (!Stream || stream_width >= 8)
             if (n - done >= 8)
-                done += compose_each_interleaved<Stream>(&a[done].w, &b[done].w, &output[done].w,
-                                                         n - done);
+                done += compose_each_interleaved<float8, Stream>(&a[done].w, &b[done].w,
+                                                                 &output[done].w, n - done);
     }
+#endif
+#endif
+#if defined(__SSE4_1__) && !defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float> && !Stream)
+        done = compose_each_interleaved<float4>(&a[0].w, &b[0].w, &output[0].w, n);
 #endif
 #endif
     return done;
@@ -570,6 +636,12 @@ template <bool Stream = false, class T>
             done += rotate_each_interleaved<Stream>(&rotations[done].w, &points[done].x,
                                                     &output[done].x, n - done);
     }
+#endif
+#endif
+#if defined(__SSE4_1__) && !defined(__AVX__) && defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+    if constexpr (std::is_same_v<T, float> && !Stream)
+        done = rotate_each_interleaved_4(&rotations[0].w, &points[0].x, &output[0].x, n);
 #endif
 #endif
     return done;
