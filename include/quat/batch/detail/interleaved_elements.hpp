@@ -611,7 +611,8 @@ template <bool Stream = false, class T>
 #if defined(__SSE4_1__) && !defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float> && !Stream)
-        done = compose_each_interleaved<float4>(&a[0].w, &b[0].w, &output[0].w, n);
+        if (n >= 4)  // an empty batch may come as null pointers, whose members are not formed
+            done = compose_each_interleaved<float4>(&a[0].w, &b[0].w, &output[0].w, n);
 #endif
 #endif
     return done;
@@ -641,7 +642,8 @@ template <bool Stream = false, class T>
 #if defined(__SSE4_1__) && !defined(__AVX__) && defined(__has_builtin)
 #if __has_builtin(__builtin_shufflevector)
     if constexpr (std::is_same_v<T, float> && !Stream)
-        done = rotate_each_interleaved_4(&rotations[0].w, &points[0].x, &output[0].x, n);
+        if (n >= 4)  // as in compose_each_kernels above
+            done = rotate_each_interleaved_4(&rotations[0].w, &points[0].x, &output[0].x, n);
 #endif
 #endif
     return done;
